@@ -1,0 +1,18 @@
+#!/bin/sh
+# Installs the Debian 12 packages raylab needs to build and test, if any are missing.
+# Run as root on a fresh machine (the README's quick start does). Installs nothing else.
+set -eu
+PACKAGES="cmake g++ make pkg-config python3-glad
+  libglm-dev libopenimageio-dev openimageio-tools libosmesa6-dev libegl-dev libegl-mesa0
+  nlohmann-json3-dev libcli11-dev libgtest-dev"
+missing=""
+for p in $PACKAGES; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+  echo "raylab: installing:$missing" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  # shellcheck disable=SC2086
+  apt-get install -y -qq --no-install-recommends $missing >/dev/null
+fi

@@ -1,0 +1,143 @@
+// raylab-bench: throughput of the path tracer (Mpaths/s, Mrays/s) on a scene at a fixed size,
+// for each tracer entry point, median of several runs; appends the figures, the machine and the
+// command to a Markdown results file. A benchmark, not a test: nothing here passes or fails.
+#include "gl/gl_context.h"
+#include "render/path_tracer.h"
+#include "render/progressive_render.h"
+#include "scene/scene_loader.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace {
+
+std::string cpuModel() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    return "unknown CPU";
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+struct Variant {
+    std::string label;
+    raylab::TracerOptions options;
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    using namespace raylab;
+    CLI::App app{"raylab-bench: path tracer throughput (Mpaths/s, Mrays/s) per tracer entry point.\n"
+                 "Renders the scene --repeat times per variant after one warm-up pass, reports the\n"
+                 "median, and appends a table with the machine and the command to --results.",
+                 "raylab-bench"};
+    std::string scenePath = "scenes/default.json";
+    std::string results = "bench/throughput.md";
+    std::string variants = "all";
+    std::string gl = "auto";
+    int width = 640, height = 360, spp = 8, repeat = 5;
+    app.add_option("--scene", scenePath, "Scene file")->capture_default_str();
+    app.add_option("--width", width, "Image width")->check(CLI::Range(1, 16384))->capture_default_str();
+    app.add_option("--height", height, "Image height")->check(CLI::Range(1, 16384))->capture_default_str();
+    app.add_option("--spp", spp, "Samples per pixel per run (rpp from the scene)")
+        ->check(CLI::PositiveNumber)->capture_default_str();
+    app.add_option("--repeat", repeat, "Runs per variant; the median is reported")
+        ->check(CLI::Range(1, 100))->capture_default_str();
+    app.add_option("--variants", variants,
+                   "fragment, compute (8x8, 16x8, 32x4 work groups), or all")
+        ->check(CLI::IsMember({"all", "fragment", "compute"}))->capture_default_str();
+    app.add_option("--results", results, "Markdown file the results are appended to ('' = none)")
+        ->capture_default_str();
+    app.add_option("--gl", gl, "OpenGL context: auto, osmesa or egl")
+        ->check(CLI::IsMember({"auto", "osmesa", "egl"}))->capture_default_str();
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : 2;
+    }
+
+    Scene scene;
+    try {
+        scene = loadScene(scenePath, {"render.width=" + std::to_string(width),
+                                      "render.height=" + std::to_string(height),
+                                      "render.spp=" + std::to_string(spp), "render.time=0"});
+    } catch (const std::exception& e) {
+        std::cerr << e.what() << "\n";
+        return 1;
+    }
+
+    std::vector<Variant> list;
+    if (variants != "compute") list.push_back({"fragment", {TracerEntry::Fragment, 8, 8, {}}});
+    if (variants != "fragment")
+        for (auto [x, y] : {std::pair{8, 8}, {16, 8}, {32, 4}})
+            list.push_back({"compute " + std::to_string(x) + "x" + std::to_string(y),
+                            {TracerEntry::Compute, x, y, {}}});
+
+    std::ostringstream table;
+    std::string glDescription;
+    try {
+        auto context = createHeadlessContext(parseGlBackend(gl));
+        glDescription = context->description();
+        std::cerr << "GL: " << glDescription << "\n";
+        table << "| variant | Mpaths/s | Mrays/s | ms/pass (rpp " << scene.render.rpp
+              << ") | runs |\n|---|---|---|---|---|\n";
+        for (const Variant& v : list) {
+            PathTracer tracer(v.options);
+            tracer.setScene(scene);
+            tracer.renderPass();   // warm-up: first-use costs (JIT, allocation) stay out
+            std::vector<double> paths, rays, msPerPass;
+            for (int r = 0; r < repeat; ++r) {
+                tracer.reset();
+                const RenderOutcome o = renderProgressively(tracer, scene.render);
+                paths.push_back(o.last.mpathsPerSecond);
+                rays.push_back(o.last.mraysPerSecond);
+                msPerPass.push_back(1e3 * o.last.elapsed / double(tracer.passes()));
+            }
+            char row[256];
+            std::snprintf(row, sizeof row, "| %s | %.2f | %.2f | %.1f | %d |\n", v.label.c_str(),
+                          median(paths), median(rays), median(msPerPass), repeat);
+            table << row;
+            std::cerr << row;
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "raylab-bench: error: " << e.what() << "\n";
+        return 3;
+    }
+
+    std::ostringstream command;
+    for (int i = 0; i < argc; ++i) command << (i ? " " : "") << argv[i];
+    const std::time_t now = std::time(nullptr);
+    char date[32];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    std::ostringstream report;
+    report << "\n## " << scenePath << ", " << width << "x" << height << ", " << spp << " spp — "
+           << date << "\n\n"
+           << "- machine: " << cpuModel() << ", " << std::thread::hardware_concurrency()
+           << " hardware threads\n- GL: " << glDescription << "\n- command: `" << command.str()
+           << "`\n\n"
+           << table.str();
+    std::cout << report.str();
+    if (!results.empty()) {
+        std::ofstream out(results, std::ios::app);
+        if (!out) {
+            std::cerr << results << ": error: cannot write results\n";
+            return 1;
+        }
+        out << report.str();
+    }
+    return 0;
+}

@@ -1,0 +1,168 @@
+// raylab-render: renders a scene file headlessly to EXR (linear) or PNG (display-ready).
+// Exit status: 0 done, 1 bad input (scene file, output path), 2 bad command line,
+// 3 no usable OpenGL or a shader failure, 130 interrupted by SIGINT (partial image written).
+#include "gl/gl_context.h"
+#include "io/image_io.h"
+#include "render/path_tracer.h"
+#include "render/progressive_render.h"
+#include "scene/scene_loader.h"
+
+#include <CLI/CLI.hpp>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void onSigint(int) {
+    g_interrupted.store(true);
+    std::signal(SIGINT, SIG_DFL);   // a second Ctrl-C ends the program at once
+}
+
+std::string clock(double seconds) {
+    const int total = int(seconds);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%d:%02d.%d", total / 60, total % 60, int((seconds - total) * 10));
+    return buf;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    using namespace raylab;
+    CLI::App app{"raylab-render: path-trace a raylab scene file without a window.\n"
+                 "Output format by extension: .exr (linear float, with render metadata) or\n"
+                 ".png (exposure, tone map and sRGB applied). Exit status: 0 done, 1 bad input,\n"
+                 "2 bad command line, 3 no OpenGL 4.5 / shader failure, 130 interrupted (Ctrl-C\n"
+                 "writes the samples accumulated so far).",
+                 "raylab-render"};
+    std::string scenePath;
+    std::string output;
+    std::vector<std::string> overrides;
+    int spp = 0, width = 0, height = 0, rpp = 0;
+    double timeBudget = -1.0;
+    long long seed = -1;
+    bool quiet = false;
+    std::string gl = "auto";
+    std::string entry = "fragment";
+    app.add_option("scene", scenePath, "Scene file (JSON); format in scenes/FORMAT.md")->required();
+    app.add_option("-o,--output", output,
+                   "Output image, .exr or .png (default: <scene name>.png in the current directory)");
+    app.add_option("--spp", spp, "Target samples per pixel (overrides render.spp)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--time", timeBudget,
+                   "Time budget in seconds; stops at --spp or --time, whichever comes first "
+                   "(overrides render.time; 0 = no limit)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--width", width, "Image width in pixels (overrides render.width)")
+        ->check(CLI::Range(1, 16384));
+    app.add_option("--height", height, "Image height in pixels (overrides render.height)")
+        ->check(CLI::Range(1, 16384));
+    app.add_option("--rpp", rpp, "Samples per pixel per pass (overrides render.rpp)")
+        ->check(CLI::Range(1, 1024));
+    app.add_option("--seed", seed, "Sampler seed, 0 to 4294967295 (overrides render.seed)")
+        ->check(CLI::Range(0LL, 4294967295LL));
+    app.add_option("--set", overrides,
+                   "Override any scene key, e.g. --set camera.fov=30 --set render.tone_map=reinhard "
+                   "--set materials.red.albedo=[1,0,0] (repeatable)")
+        ->type_name("KEY=VALUE");
+    app.add_option("--gl", gl, "OpenGL context: auto, osmesa or egl")
+        ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+    app.add_option("--tracer", entry, "Tracer entry point: fragment (fastest on llvmpipe) or compute")
+        ->check(CLI::IsMember({"fragment", "compute"}));
+    app.add_flag("-q,--quiet", quiet, "No progress line");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : 2;
+    }
+
+    // Command-line flags are overrides too, applied after --set so they win.
+    if (spp > 0) overrides.push_back("render.spp=" + std::to_string(spp));
+    if (timeBudget >= 0.0) overrides.push_back("render.time=" + std::to_string(timeBudget));
+    if (width > 0) overrides.push_back("render.width=" + std::to_string(width));
+    if (height > 0) overrides.push_back("render.height=" + std::to_string(height));
+    if (rpp > 0) overrides.push_back("render.rpp=" + std::to_string(rpp));
+    if (seed >= 0) overrides.push_back("render.seed=" + std::to_string(seed));
+
+    Scene scene;
+    std::filesystem::path outPath;
+    try {
+        scene = loadScene(scenePath, overrides);
+        outPath = output.empty() ? std::filesystem::path(scene.sourcePath.stem().string() + ".png")
+                                 : std::filesystem::path(output);
+        checkWritable(outPath);
+    } catch (const std::exception& e) {
+        std::cerr << e.what() << "\n";
+        return 1;
+    }
+
+    std::unique_ptr<GlContext> context;
+    std::unique_ptr<PathTracer> tracer;
+    try {
+        context = createHeadlessContext(parseGlBackend(gl));
+        TracerOptions options;
+        options.entry = entry == "compute" ? TracerEntry::Compute : TracerEntry::Fragment;
+        tracer = std::make_unique<PathTracer>(options);
+        tracer->setScene(scene);
+    } catch (const std::exception& e) {
+        std::cerr << "raylab-render: error: " << e.what() << "\n";
+        return 3;
+    }
+
+    std::signal(SIGINT, onSigint);
+    const bool tty = ::isatty(STDERR_FILENO);
+    double lastPrint = -1.0;
+    auto progress = [&](const RenderProgress& p) {
+        if (quiet) return;
+        const bool done = p.spp >= p.targetSpp;
+        if (!tty && !done && p.elapsed - lastPrint < 1.0) return;   // a line a second in logs
+        lastPrint = p.elapsed;
+        std::fprintf(stderr, "%s%6llu/%llu spp %3d%%  elapsed %s  ETA %s  %.2f Mpaths/s  %.2f Mrays/s%s",
+                     tty ? "\r" : "", (unsigned long long)p.spp, (unsigned long long)p.targetSpp,
+                     int(100 * p.spp / std::max<std::uint64_t>(p.targetSpp, 1)),
+                     clock(p.elapsed).c_str(), clock(p.eta).c_str(), p.mpathsPerSecond,
+                     p.mraysPerSecond, tty ? "  " : "\n");
+        std::fflush(stderr);
+    };
+    RenderOutcome outcome;
+    try {
+        outcome = renderProgressively(*tracer, scene.render, &g_interrupted, progress);
+    } catch (const std::exception& e) {
+        std::cerr << "\nraylab-render: error: " << e.what() << "\n";
+        return 3;
+    }
+    if (tty && !quiet) std::fputc('\n', stderr);
+    if (tracer->nonFiniteSamples() > 0)
+        std::cerr << "raylab-render: warning: " << tracer->nonFiniteSamples()
+                  << " NaN/Inf samples were replaced by 0\n";
+
+    try {
+        RenderMetadata meta;
+        meta.spp = tracer->samplesPerPixel();
+        meta.renderSeconds = outcome.last.elapsed;
+        meta.seed = scene.render.seed;
+        meta.sceneFile = scene.sourcePath.string();
+        meta.nonFiniteSamples = tracer->nonFiniteSamples();
+        writeImage(outPath, tracer->readImage(), meta,
+                   DisplayTransform{scene.render.exposure, scene.render.toneMap});
+    } catch (const std::exception& e) {
+        std::cerr << e.what() << "\n";
+        return 1;
+    }
+    std::error_code ec;
+    const auto shown = std::filesystem::absolute(outPath, ec);
+    std::cout << (ec ? outPath : shown).string() << "\n";
+    if (outcome.interrupted) {
+        std::cerr << "raylab-render: interrupted at " << tracer->samplesPerPixel()
+                  << " spp; wrote the partial image\n";
+        return 130;
+    }
+    return 0;
+}

@@ -1,0 +1,129 @@
+#include "gl/shader_source.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace raylab {
+namespace fs = std::filesystem;
+namespace {
+
+struct Assembler {
+    std::vector<fs::path> includeDirs;
+    std::vector<fs::path> files;
+    std::set<fs::path> included;
+    std::vector<fs::path> stack;   // for include cycles
+    std::ostringstream out;
+
+    int fileIndex(const fs::path& p) {
+        for (size_t i = 0; i < files.size(); ++i)
+            if (files[i] == p) return static_cast<int>(i);
+        files.push_back(p);
+        return static_cast<int>(files.size() - 1);
+    }
+
+    static std::string readFile(const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        if (!in) throw ShaderError(p.string() + ": error: cannot read shader file");
+        std::ostringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    }
+
+    fs::path resolve(const std::string& name, const fs::path& from, int line) const {
+        fs::path candidate = from.parent_path() / name;
+        if (fs::exists(candidate)) return fs::weakly_canonical(candidate);
+        for (const auto& dir : includeDirs)
+            if (fs::exists(dir / name)) return fs::weakly_canonical(dir / name);
+        throw ShaderError(from.string() + ":" + std::to_string(line) +
+                          ": error: cannot find included file \"" + name + "\"");
+    }
+
+    // Emits one file. For the entry file, defines are placed after its #version line.
+    void emit(const fs::path& file, const ShaderDefines* defines) {
+        const int index = fileIndex(file);
+        stack.push_back(file);
+        std::istringstream in(readFile(file));
+        static const std::regex includeRe(R"(^\s*#\s*include\s*"([^"]+)\"\s*(//.*)?$)");
+        static const std::regex versionRe(R"(^\s*#\s*version\b.*)");
+        std::string line;
+        int lineNo = 0;
+        bool versionSeen = defines == nullptr;
+        if (defines == nullptr) out << "#line 1 " << index << "\n";
+        while (std::getline(in, line)) {
+            ++lineNo;
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            std::smatch m;
+            if (!versionSeen && std::regex_match(line, versionRe)) {
+                out << line << "\n";
+                for (const auto& [name, value] : *defines) out << "#define " << name << " " << value << "\n";
+                out << "#line " << lineNo + 1 << " " << index << "\n";
+                versionSeen = true;
+                continue;
+            }
+            if (std::regex_match(line, m, includeRe)) {
+                const fs::path target = resolve(m[1].str(), file, lineNo);
+                for (const auto& open : stack)
+                    if (open == target)
+                        throw ShaderError(file.string() + ":" + std::to_string(lineNo) +
+                                          ": error: include cycle through " + target.string());
+                if (included.insert(target).second) emit(target, nullptr);
+                out << "#line " << lineNo + 1 << " " << index << "\n";
+                continue;
+            }
+            out << line << "\n";
+        }
+        if (!versionSeen)
+            throw ShaderError(file.string() + ":1: error: entry point has no #version line");
+        stack.pop_back();
+    }
+};
+
+} // namespace
+
+ShaderSource assembleShader(const fs::path& entryFile, const ShaderDefines& defines,
+                            const std::vector<fs::path>& includeDirs) {
+    Assembler a;
+    a.includeDirs = includeDirs;
+    const fs::path entry = fs::weakly_canonical(entryFile);
+    a.included.insert(entry);
+    a.emit(entry, &defines);
+    return ShaderSource{a.out.str(), a.files};
+}
+
+std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& files) {
+    // Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ...".
+    static const std::regex mesaRe(R"((\d+):(\d+)\((\d+)\))");
+    static const std::regex nvRe(R"((\d+)\((\d+)\))");
+    auto name = [&](const std::string& idx) {
+        const size_t i = std::stoul(idx);
+        return i < files.size() ? files[i].string() : "<source " + idx + ">";
+    };
+    std::ostringstream out;
+    std::istringstream in(log);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::smatch m;
+        if (std::regex_search(line, m, mesaRe) && m.position(0) == 0)
+            line = name(m[1]) + ":" + m[2].str() + ":" + m[3].str() + m.suffix().str();
+        else if (std::regex_search(line, m, nvRe) && m.position(0) == 0)
+            line = name(m[1]) + ":" + m[2].str() + m.suffix().str();
+        out << line << "\n";
+    }
+    return out.str();
+}
+
+fs::path shaderDirectory() {
+    if (const char* env = std::getenv("RAYLAB_SHADER_DIR"); env && *env) return env;
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const fs::path installed = exe.parent_path().parent_path() / "share" / "raylab" / "shaders";
+        if (fs::exists(installed / "entry")) return installed;
+    }
+    return RAYLAB_SOURCE_SHADER_DIR;
+}
+
+} // namespace raylab

@@ -1,0 +1,132 @@
+#include "io/image_io.h"
+
+#include "shaders/include/tone_map.glsl"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <system_error>
+#include <unistd.h>
+
+namespace raylab {
+namespace fs = std::filesystem;
+namespace {
+
+fs::path temporarySibling(const fs::path& path) {
+    // Keep the extension: OpenImageIO picks the writer by it.
+    fs::path tmp = path;
+    tmp.replace_filename("." + path.stem().string() + ".tmp" + std::to_string(::getpid()) +
+                         path.extension().string());
+    return tmp;
+}
+
+int toneMapOp(ToneMap t) {
+    switch (t) {
+    case ToneMap::Clamp: return glsl::TONE_MAP_CLAMP;
+    case ToneMap::Reinhard: return glsl::TONE_MAP_REINHARD;
+    case ToneMap::AcesFit: return glsl::TONE_MAP_ACES_FIT;
+    }
+    return glsl::TONE_MAP_CLAMP;
+}
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+} // namespace
+
+ImageFormat imageFormatFor(const fs::path& path) {
+    const std::string ext = lower(path.extension().string());
+    if (ext == ".exr") return ImageFormat::Exr;
+    if (ext == ".png") return ImageFormat::Png;
+    throw ImageIoError(path.string() + ": error: unsupported output format '" + ext +
+                       "' (use .exr for linear HDR or .png for a tone-mapped image)");
+}
+
+void checkWritable(const fs::path& path) {
+    imageFormatFor(path);
+    const fs::path tmp = temporarySibling(path);
+    {
+        std::ofstream probe(tmp, std::ios::binary);
+        if (!probe)
+            throw ImageIoError(path.string() + ": error: cannot write: " +
+                               std::error_code(errno, std::generic_category()).message());
+    }
+    std::error_code ec;
+    fs::remove(tmp, ec);
+}
+
+std::uint8_t displayByte(float linear, const DisplayTransform& display) {
+    const float v = glsl::displayValue(linear, display.exposure, toneMapOp(display.toneMap));
+    return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
+
+void writeImage(const fs::path& path, const Image& image, const RenderMetadata& meta,
+                const DisplayTransform& display) {
+    using namespace OIIO;
+    const ImageFormat format = imageFormatFor(path);
+    const fs::path tmp = temporarySibling(path);
+    auto out = ImageOutput::create(tmp.string());
+    if (!out) throw ImageIoError(path.string() + ": error: " + OIIO::geterror());
+
+    const int channels = format == ImageFormat::Exr ? 4 : 3;
+    ImageSpec spec(image.width, image.height, channels,
+                   format == ImageFormat::Exr ? TypeDesc::FLOAT : TypeDesc::UINT8);
+    spec.attribute("Software", "raylab " RAYLAB_VERSION);
+    spec.attribute("raylab:version", RAYLAB_VERSION);
+    spec.attribute("raylab:spp", int(std::min<std::uint64_t>(meta.spp, 0x7fffffff)));
+    spec.attribute("raylab:render_seconds", float(meta.renderSeconds));
+    spec.attribute("raylab:seed", unsigned(meta.seed));
+    spec.attribute("raylab:scene", meta.sceneFile);
+    spec.attribute("raylab:nonfinite_samples", int(std::min<std::uint64_t>(meta.nonFiniteSamples, 0x7fffffff)));
+    if (format == ImageFormat::Exr) spec.attribute("compression", "zip");
+
+    bool ok = out->open(tmp.string(), spec);
+    if (ok) {
+        if (format == ImageFormat::Exr) {
+            ok = out->write_image(TypeDesc::FLOAT, image.rgba.data());
+        } else {
+            std::vector<std::uint8_t> bytes(size_t(image.width) * image.height * 3);
+            for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i)
+                for (size_t c = 0; c < 3; ++c) bytes[i * 3 + c] = displayByte(image.rgba[i * 4 + c], display);
+            ok = out->write_image(TypeDesc::UINT8, bytes.data());
+        }
+        ok = out->close() && ok;
+    }
+    if (!ok) {
+        const std::string err = out->geterror();
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw ImageIoError(path.string() + ": error: cannot write: " + err);
+    }
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        throw ImageIoError(path.string() + ": error: cannot write: " + ec.message());
+    }
+}
+
+Image readImage(const fs::path& path) {
+    using namespace OIIO;
+    auto in = ImageInput::open(path.string());
+    if (!in) throw ImageIoError(path.string() + ": error: cannot read: " + OIIO::geterror());
+    const ImageSpec& spec = in->spec();
+    std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, TypeDesc::FLOAT, pixels.data()))
+        throw ImageIoError(path.string() + ": error: cannot read: " + in->geterror());
+    Image image(spec.width, spec.height);
+    for (size_t i = 0, n = size_t(spec.width) * spec.height; i < n; ++i)
+        for (int c = 0; c < 4; ++c) {
+            float v = c == 3 ? 1.0f : 0.0f;
+            if (c < spec.nchannels) v = pixels[i * size_t(spec.nchannels) + size_t(c)];
+            else if (c < 3 && spec.nchannels < 3) v = pixels[i * size_t(spec.nchannels)];
+            image.rgba[i * 4 + size_t(c)] = v;
+        }
+    return image;
+}
+
+} // namespace raylab

@@ -1,0 +1,50 @@
+#pragma once
+// Image files through OpenImageIO. EXR is written linear (float) with render metadata; PNG is
+// exposed, tone mapped and sRGB-encoded to 8 bits. Every write is atomic: a temporary file in the
+// target directory, then a rename, so an interrupted program never leaves a truncated image.
+#include "render/image.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace raylab {
+
+class ImageIoError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct RenderMetadata {
+    std::uint64_t spp = 0;
+    double renderSeconds = 0.0;
+    std::uint32_t seed = 0;
+    std::string sceneFile;
+    std::uint64_t nonFiniteSamples = 0;
+};
+
+struct DisplayTransform {
+    float exposure = 0.0f;   // EV stops
+    ToneMap toneMap = ToneMap::AcesFit;
+};
+
+enum class ImageFormat { Exr, Png };
+
+// From the extension (.exr, .png; case-insensitive); throws ImageIoError naming the path otherwise.
+ImageFormat imageFormatFor(const std::filesystem::path& path);
+
+// Fails early (before a long render) if the file cannot be created in its directory.
+void checkWritable(const std::filesystem::path& path);
+
+void writeImage(const std::filesystem::path& path, const Image& image, const RenderMetadata& meta,
+                const DisplayTransform& display);
+
+// Reads any format OpenImageIO knows as linear float RGBA (for tests and tools).
+Image readImage(const std::filesystem::path& path);
+
+// The 8-bit display value of a linear channel (exposure, tone curve, sRGB).
+std::uint8_t displayByte(float linear, const DisplayTransform& display);
+
+} // namespace raylab

@@ -1,0 +1,168 @@
+#include "render/path_tracer.h"
+
+#include "shaders/include/camera.glsl"
+#include "shaders/include/scene_types.glsl"
+#include "shaders/include/sky.glsl"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+namespace raylab {
+namespace {
+
+template <typename T>
+void uploadBuffer(GLuint buffer, const std::vector<T>& data) {
+    // An empty SSBO binding is not allowed; keep at least one record.
+    const size_t bytes = std::max<size_t>(data.size(), 1) * sizeof(T);
+    std::vector<T> padded = data;
+    padded.resize(std::max<size_t>(data.size(), 1));
+    glNamedBufferData(buffer, static_cast<GLsizeiptr>(bytes), padded.data(), GL_STATIC_DRAW);
+}
+
+int skyType(Sky::Type t) { return t == Sky::Type::Constant ? glsl::SKY_CONSTANT : glsl::SKY_GRADIENT; }
+
+} // namespace
+
+PathTracer::PathTracer(TracerOptions options) : options_(options) {
+    if (options_.entry == TracerEntry::Fragment) {
+        program_ = ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag",
+                                           options_.extraDefines);
+    } else {
+        ShaderDefines defines = options_.extraDefines;
+        defines.emplace_back("LOCAL_SIZE_X", std::to_string(options_.localSizeX));
+        defines.emplace_back("LOCAL_SIZE_Y", std::to_string(options_.localSizeY));
+        program_ = ShaderProgram::compute("entry/trace.comp", defines);
+    }
+    glCreateFramebuffers(1, &framebuffer_);
+    glCreateVertexArrays(1, &vertexArray_);
+    glCreateBuffers(1, &sphereBuffer_);
+    glCreateBuffers(1, &materialBuffer_);
+    glCreateBuffers(1, &counterBuffer_);
+    const GLuint zeros[2] = {0, 0};
+    glNamedBufferStorage(counterBuffer_, sizeof(zeros), zeros,
+                         GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+}
+
+PathTracer::~PathTracer() {
+    glDeleteTextures(1, &accumTexture_);
+    glDeleteFramebuffers(1, &framebuffer_);
+    glDeleteVertexArrays(1, &vertexArray_);
+    glDeleteBuffers(1, &sphereBuffer_);
+    glDeleteBuffers(1, &materialBuffer_);
+    glDeleteBuffers(1, &counterBuffer_);
+}
+
+std::string PathTracer::variantName() const {
+    if (options_.entry == TracerEntry::Fragment) return "fragment";
+    return "compute " + std::to_string(options_.localSizeX) + "x" + std::to_string(options_.localSizeY);
+}
+
+void PathTracer::allocateImage(int width, int height) {
+    if (width == width_ && height == height_ && accumTexture_) return;
+    glDeleteTextures(1, &accumTexture_);
+    glCreateTextures(GL_TEXTURE_2D, 1, &accumTexture_);
+    glTextureStorage2D(accumTexture_, 1, GL_RGBA32F, width, height);
+    // The fragment entry draws into a framebuffer with no attachments, sized here.
+    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
+    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
+    width_ = width;
+    height_ = height;
+}
+
+void PathTracer::setScene(const Scene& scene) {
+    const RenderSettings& r = scene.render;
+    allocateImage(r.width, r.height);
+    defaultRpp_ = r.rpp;
+
+    std::vector<glsl::GpuSphere> spheres;
+    for (const Sphere& s : scene.spheres)
+        spheres.push_back({glm::vec4(s.center, s.radius), glm::uvec4(unsigned(s.material), 0, 0, 0)});
+    std::vector<glsl::GpuMaterial> materials;
+    for (const Material& m : scene.materials)
+        materials.push_back({glm::vec4(m.albedo, 0.0f), glm::vec4(m.radiance(), 0.0f)});
+    uploadBuffer(sphereBuffer_, spheres);
+    uploadBuffer(materialBuffer_, materials);
+
+    const Camera& c = scene.camera;
+    const auto cam = glsl::cameraBasis(c.position, c.lookAt, c.up, c.fovY,
+                                       float(r.width) / float(r.height));
+    const ShaderProgram& p = program_;
+    p.set("uImageSize", glm::ivec2(r.width, r.height));
+    p.set("uSeed", unsigned(r.seed));
+    p.set("uMaxBounces", r.maxBounces);
+    p.set("uRrDepth", r.rrDepth);
+    p.set("uSphereCount", int(spheres.size()));
+    p.set("uCamOrigin", cam.origin);
+    p.set("uCamRight", cam.right);
+    p.set("uCamUp", cam.up);
+    p.set("uCamForward", cam.forward);
+    p.set("uCamTanHalfFovY", cam.tanHalfFovY);
+    p.set("uCamAspect", cam.aspect);
+    const Sky& sky = scene.sky;
+    p.set("uSkyType", skyType(sky.type));
+    p.set("uSkyColor", sky.color * sky.strength);
+    p.set("uSkyTop", sky.top * sky.strength);
+    p.set("uSkyBottom", sky.bottom * sky.strength);
+    reset();
+}
+
+void PathTracer::reset() {
+    const float zero[4] = {0, 0, 0, 0};
+    if (accumTexture_) glClearTexImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, zero);
+    samplesPerPixel_ = 0;
+    passes_ = 0;
+    nonFinite_ = 0;
+    rays_ = 0;
+}
+
+void PathTracer::renderPass(int rpp) {
+    if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
+    if (rpp <= 0) rpp = defaultRpp_;
+    program_.set("uSampleStart", unsigned(samplesPerPixel_));
+    program_.set("uRpp", rpp);
+
+    const GLuint zeros[2] = {0, 0};
+    glNamedBufferSubData(counterBuffer_, 0, sizeof(zeros), zeros);
+    glBindImageTexture(0, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, sphereBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, materialBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, counterBuffer_);
+    glUseProgram(program_.id());
+    if (options_.entry == TracerEntry::Fragment) {
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        glViewport(0, 0, width_, height_);
+        glBindVertexArray(vertexArray_);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    } else {
+        const auto groups = [](int n, int size) { return GLuint((n + size - 1) / size); };
+        glDispatchCompute(groups(width_, options_.localSizeX), groups(height_, options_.localSizeY), 1);
+    }
+    // The next pass reads what this one stored; the counters are read back below.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint counters[2] = {0, 0};
+    glGetNamedBufferSubData(counterBuffer_, 0, sizeof(counters), counters);   // waits for the pass
+    nonFinite_ += counters[0];
+    rays_ += counters[1];
+    samplesPerPixel_ += std::uint64_t(rpp);
+    ++passes_;
+}
+
+Image PathTracer::readImage() const {
+    Image image(width_, height_);
+    std::vector<float> raw(image.rgba.size());
+    glGetTextureImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, GLsizei(raw.size() * sizeof(float)),
+                      raw.data());
+    // GL stores the bottom row first; images are written top row first.
+    const size_t row = size_t(width_) * 4;
+    for (int y = 0; y < height_; ++y)
+        std::copy_n(raw.begin() + std::ptrdiff_t(size_t(height_ - 1 - y) * row), row,
+                    image.rgba.begin() + std::ptrdiff_t(size_t(y) * row));
+    return image;
+}
+
+} // namespace raylab

@@ -1,0 +1,70 @@
+#pragma once
+// The GPU path tracer: owns the accumulation image, the scene buffers and the tracer program.
+// One pass adds rpp samples per pixel to a running mean (float32 RGBA). Needs a current GL 4.5
+// context (see gl/gl_context.h). Both programs, the headless CLI and the viewer, drive this class.
+#include "gl/shader_program.h"
+#include "render/image.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <string>
+
+namespace raylab {
+
+// Which entry point runs the tracer. Fragment measured faster on llvmpipe (README, benchmarks).
+enum class TracerEntry { Fragment, Compute };
+
+struct TracerOptions {
+    TracerEntry entry = TracerEntry::Fragment;
+    int localSizeX = 8;   // compute only
+    int localSizeY = 8;   // compute only
+    ShaderDefines extraDefines;   // e.g. RAYLAB_INJECT_NONFINITE for tests of the NaN guard
+};
+
+class PathTracer {
+public:
+    explicit PathTracer(TracerOptions options = {});
+    ~PathTracer();
+    PathTracer(const PathTracer&) = delete;
+    PathTracer& operator=(const PathTracer&) = delete;
+
+    // Uploads the scene (geometry, materials, camera, sky, settings) and restarts accumulation.
+    void setScene(const Scene& scene);
+    // Drops the accumulated samples; the next pass starts a new mean.
+    void reset();
+    // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them.
+    void renderPass(int rpp = 0);
+
+    std::uint64_t samplesPerPixel() const { return samplesPerPixel_; }
+    std::uint64_t passes() const { return passes_; }
+    std::uint64_t nonFiniteSamples() const { return nonFinite_; }   // replaced by 0, counted
+    std::uint64_t raysTraced() const { return rays_; }
+    std::uint64_t pathsTraced() const { return samplesPerPixel_ * std::uint64_t(width_) * height_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+    Image readImage() const;
+    double compileSeconds() const { return program_.compileSeconds(); }
+    std::string variantName() const;
+
+private:
+    void allocateImage(int width, int height);
+
+    TracerOptions options_;
+    ShaderProgram program_;
+    unsigned accumTexture_ = 0;
+    unsigned framebuffer_ = 0;
+    unsigned vertexArray_ = 0;
+    unsigned sphereBuffer_ = 0;
+    unsigned materialBuffer_ = 0;
+    unsigned counterBuffer_ = 0;
+    int width_ = 0;
+    int height_ = 0;
+    int defaultRpp_ = 1;
+    std::uint64_t samplesPerPixel_ = 0;
+    std::uint64_t passes_ = 0;
+    std::uint64_t nonFinite_ = 0;
+    std::uint64_t rays_ = 0;
+};
+
+} // namespace raylab

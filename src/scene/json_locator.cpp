@@ -1,0 +1,265 @@
+#include "scene/json_locator.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace raylab {
+namespace {
+
+constexpr int kMaxDepth = 512;  // deeper values are not located (complete() turns false)
+
+bool startsWithBom(std::string_view t) {
+    return t.size() >= 3 && static_cast<unsigned char>(t[0]) == 0xEF &&
+           static_cast<unsigned char>(t[1]) == 0xBB && static_cast<unsigned char>(t[2]) == 0xBF;
+}
+
+void appendUtf8(std::string& out, std::uint32_t cp) {
+    if (cp < 0x80) {
+        out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+        out += static_cast<char>(0xC0 | (cp >> 6));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+        out += static_cast<char>(0xE0 | (cp >> 12));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (cp >> 18));
+        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+}
+
+} // namespace
+
+// Recursive-descent scanner over JSON with comments (RFC 8259 grammar). It does not check numbers
+// or literals in detail: the text has normally been accepted by nlohmann already, and all we need is
+// where each value and key starts.
+class JsonLocator::Scanner {
+public:
+    Scanner(JsonLocator& out, std::string_view text) : out_(out), t_(text) {}
+
+    bool run() {
+        if (startsWithBom(t_)) pos_ = 3;
+        if (!skipSpace()) return false;
+        if (!value("", SourcePos{}, 0)) return false;
+        if (!skipSpace()) return false;
+        return pos_ == t_.size();
+    }
+
+private:
+    bool atEnd() const { return pos_ >= t_.size(); }
+    char peek(std::size_t ahead = 0) const { return pos_ + ahead < t_.size() ? t_[pos_ + ahead] : '\0'; }
+
+    // Whitespace and comments.
+    bool skipSpace() {
+        while (!atEnd()) {
+            const char c = peek();
+            if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+                ++pos_;
+            } else if (c == '/' && peek(1) == '/') {
+                while (!atEnd() && peek() != '\n') ++pos_;
+            } else if (c == '/' && peek(1) == '*') {
+                const std::size_t close = t_.find("*/", pos_ + 2);
+                if (close == std::string_view::npos) return false;
+                pos_ = close + 2;
+            } else {
+                break;
+            }
+        }
+        return true;
+    }
+
+    void record(const std::string& pointer, SourcePos key, std::size_t valueOffset) {
+        ValueLocation loc{out_.position(valueOffset), key};
+        auto [it, inserted] = out_.locations_.emplace(pointer, loc);
+        if (!inserted) out_.duplicates_.push_back(Duplicate{pointer, it->second.key, key});
+    }
+
+    bool value(const std::string& pointer, SourcePos key, int depth) {
+        if (atEnd()) return false;
+        if (depth > kMaxDepth) return false;
+        record(pointer, key, pos_);
+        switch (peek()) {
+        case '{': return object(pointer, depth);
+        case '[': return array(pointer, depth);
+        case '"': return string(nullptr);
+        default: return scalar();
+        }
+    }
+
+    bool object(const std::string& pointer, int depth) {
+        ++pos_;  // '{'
+        if (!skipSpace()) return false;
+        if (peek() == '}') {
+            ++pos_;
+            return true;
+        }
+        while (true) {
+            if (!skipSpace() || peek() != '"') return false;
+            const SourcePos keyPos = out_.position(pos_);
+            std::string name;
+            if (!string(&name)) return false;
+            if (!skipSpace() || peek() != ':') return false;
+            ++pos_;
+            if (!skipSpace()) return false;
+            if (!value(pointer + "/" + escapeToken(name), keyPos, depth + 1)) return false;
+            if (!skipSpace()) return false;
+            if (peek() == ',') {
+                ++pos_;
+                continue;
+            }
+            if (peek() == '}') {
+                ++pos_;
+                return true;
+            }
+            return false;
+        }
+    }
+
+    bool array(const std::string& pointer, int depth) {
+        ++pos_;  // '['
+        if (!skipSpace()) return false;
+        if (peek() == ']') {
+            ++pos_;
+            return true;
+        }
+        for (std::size_t index = 0;; ++index) {
+            if (!skipSpace()) return false;
+            if (!value(pointer + "/" + std::to_string(index), SourcePos{}, depth + 1)) return false;
+            if (!skipSpace()) return false;
+            if (peek() == ',') {
+                ++pos_;
+                continue;
+            }
+            if (peek() == ']') {
+                ++pos_;
+                return true;
+            }
+            return false;
+        }
+    }
+
+    // Numbers, true, false, null: everything up to the next delimiter.
+    bool scalar() {
+        const std::size_t start = pos_;
+        while (!atEnd()) {
+            const char c = peek();
+            if (c == ',' || c == ']' || c == '}' || c == ':' || c == ' ' || c == '\t' || c == '\n' ||
+                c == '\r' || c == '/' || c == '"' || c == '[' || c == '{')
+                break;
+            ++pos_;
+        }
+        return pos_ > start;
+    }
+
+    bool hex4(std::uint32_t& out) {
+        out = 0;
+        for (int i = 0; i < 4; ++i) {
+            const char c = peek();
+            std::uint32_t d = 0;
+            if (c >= '0' && c <= '9') d = static_cast<std::uint32_t>(c - '0');
+            else if (c >= 'a' && c <= 'f') d = static_cast<std::uint32_t>(c - 'a' + 10);
+            else if (c >= 'A' && c <= 'F') d = static_cast<std::uint32_t>(c - 'A' + 10);
+            else return false;
+            out = out * 16 + d;
+            ++pos_;
+        }
+        return true;
+    }
+
+    // A string starting at '"'; decodes escapes into *decoded when given (keys must match nlohmann's).
+    bool string(std::string* decoded) {
+        ++pos_;  // opening quote
+        while (!atEnd()) {
+            const char c = peek();
+            if (c == '"') {
+                ++pos_;
+                return true;
+            }
+            if (static_cast<unsigned char>(c) < 0x20) return false;  // raw control character
+            if (c != '\\') {
+                if (decoded) *decoded += c;
+                ++pos_;
+                continue;
+            }
+            ++pos_;  // backslash
+            const char e = peek();
+            ++pos_;
+            char plain = '\0';
+            switch (e) {
+            case '"': plain = '"'; break;
+            case '\\': plain = '\\'; break;
+            case '/': plain = '/'; break;
+            case 'b': plain = '\b'; break;
+            case 'f': plain = '\f'; break;
+            case 'n': plain = '\n'; break;
+            case 'r': plain = '\r'; break;
+            case 't': plain = '\t'; break;
+            case 'u': {
+                std::uint32_t cp = 0;
+                if (!hex4(cp)) return false;
+                // UTF-16 surrogate pair (RFC 8259 section 7): \uD8xx\uDCxx encodes one code point.
+                if (cp >= 0xD800 && cp <= 0xDBFF && peek() == '\\' && peek(1) == 'u') {
+                    const std::size_t save = pos_;
+                    pos_ += 2;
+                    std::uint32_t low = 0;
+                    if (hex4(low) && low >= 0xDC00 && low <= 0xDFFF) {
+                        cp = 0x10000 + ((cp - 0xD800) << 10) + (low - 0xDC00);
+                    } else {
+                        pos_ = save;
+                    }
+                }
+                if (decoded) appendUtf8(*decoded, cp);
+                continue;
+            }
+            default: return false;
+            }
+            if (decoded) *decoded += plain;
+        }
+        return false;  // unterminated
+    }
+
+    JsonLocator& out_;
+    std::string_view t_;
+    std::size_t pos_ = 0;
+};
+
+JsonLocator::JsonLocator(std::string_view text) : text_(text) {
+    lineStarts_.push_back(0);
+    for (std::size_t i = 0; i < text_.size(); ++i)
+        if (text_[i] == '\n') lineStarts_.push_back(i + 1);
+    Scanner scanner(*this, text_);
+    complete_ = scanner.run();
+}
+
+const ValueLocation* JsonLocator::find(std::string_view pointer) const {
+    auto it = locations_.find(std::string(pointer));
+    return it == locations_.end() ? nullptr : &it->second;
+}
+
+SourcePos JsonLocator::position(std::size_t byteOffset) const {
+    byteOffset = std::min(byteOffset, text_.size());
+    const auto next = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), byteOffset);
+    const std::size_t line = static_cast<std::size_t>(next - lineStarts_.begin());  // 1-based
+    std::size_t start = lineStarts_[line - 1];
+    if (start == 0 && startsWithBom(text_) && byteOffset >= 3) start = 3;  // the BOM takes no column
+    int column = 1;
+    for (std::size_t i = start; i < byteOffset; ++i)
+        if ((static_cast<unsigned char>(text_[i]) & 0xC0) != 0x80) ++column;  // skip UTF-8 continuation bytes
+    return SourcePos{static_cast<int>(line), column};
+}
+
+std::string JsonLocator::escapeToken(std::string_view token) {
+    std::string out;
+    out.reserve(token.size());
+    for (char c : token) {
+        if (c == '~') out += "~0";
+        else if (c == '/') out += "~1";
+        else out += c;
+    }
+    return out;
+}
+
+} // namespace raylab

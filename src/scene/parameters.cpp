@@ -1,0 +1,409 @@
+#include "scene/parameters.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+namespace raylab {
+namespace {
+
+constexpr double kIntMin = static_cast<double>(std::numeric_limits<std::int32_t>::min());
+constexpr double kIntMax = static_cast<double>(std::numeric_limits<std::int32_t>::max());
+constexpr double kUIntMax = static_cast<double>(std::numeric_limits<std::uint32_t>::max());
+constexpr double kFloatMax = static_cast<double>(std::numeric_limits<float>::max());
+
+template <class Field>
+ParamValue toParam(const Field& field) {
+    if constexpr (std::is_same_v<Field, glm::vec3>) {
+        return field;
+    } else if constexpr (std::is_enum_v<Field>) {
+        return static_cast<std::int64_t>(static_cast<int>(field));
+    } else if constexpr (std::is_floating_point_v<Field>) {
+        return static_cast<double>(field);
+    } else {
+        static_assert(std::is_integral_v<Field>);
+        return static_cast<std::int64_t>(field);
+    }
+}
+
+template <class Field>
+void fromParam(const ParamValue& value, Field& field) {
+    if constexpr (std::is_same_v<Field, glm::vec3>) {
+        field = std::get<glm::vec3>(value);
+    } else if constexpr (std::is_enum_v<Field>) {
+        field = static_cast<Field>(static_cast<int>(std::get<std::int64_t>(value)));
+    } else if constexpr (std::is_floating_point_v<Field>) {
+        field = static_cast<Field>(std::get<double>(value));
+    } else {
+        field = static_cast<Field>(std::get<std::int64_t>(value));
+    }
+}
+
+// `ref` is a generic lambda returning a reference to the field, used for both get and set.
+template <class Target, class Ref>
+FieldSpec<Target> makeField(ValueSpec spec, Ref ref) {
+    FieldSpec<Target> f;
+    static_cast<ValueSpec&>(f) = std::move(spec);
+    f.get = [ref](const Target& t) -> ParamValue { return toParam(ref(t)); };
+    f.set = [ref](Target& t, const ParamValue& v) { fromParam(v, ref(t)); };
+    return f;
+}
+
+// Positional builder (GCC 12 warns about designated initialisers that leave members out).
+ValueSpec spec(std::string_view key, ParamType type, std::optional<Bound> lo, std::optional<Bound> hi,
+               std::string_view unit, std::string_view help, Trigger trigger,
+               std::vector<EnumName> names = {}) {
+    ValueSpec v;
+    v.key = key;
+    v.type = type;
+    v.min = lo;
+    v.max = hi;
+    v.enumNames = std::move(names);
+    v.unit = unit;
+    v.help = help;
+    v.trigger = trigger;
+    return v;
+}
+constexpr std::nullopt_t kAny = std::nullopt;
+
+Bound atLeast(double v) { return Bound{v, true}; }
+Bound above(double v) { return Bound{v, false}; }
+Bound atMost(double v) { return Bound{v, true}; }
+Bound below(double v) { return Bound{v, false}; }
+
+std::vector<ParamSpec> buildSceneTable() {
+    using T = ParamType;
+    using G = Trigger;
+    std::vector<ParamSpec> t;
+    auto add = [&t](ValueSpec v, auto ref) { t.push_back(makeField<Scene>(std::move(v), ref)); };
+
+    // --- camera ---
+    add(spec("camera.position", T::Vec3, kAny, kAny, "world units", "Eye point.", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.camera.position; });
+    add(spec("camera.look_at", T::Vec3, kAny, kAny, "world units",
+             "Point the centre of the image looks at; must differ from position.", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.camera.lookAt; });
+    add(spec("camera.up", T::Vec3, kAny, kAny, "direction",
+             "Approximate up direction (any length); must not be parallel to look_at - position.",
+             G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.camera.up; });
+    add(spec("camera.fov", T::Float, above(0), below(180), "degrees", "Vertical field of view.",
+             G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.camera.fovY; });
+
+    // --- render ---
+    add(spec("render.width", T::Int, atLeast(1), atMost(16384), "pixels",
+             "Image width (changing it reallocates the image).", G::ReloadScene),
+        [](auto& s) -> auto& { return s.render.width; });
+    add(spec("render.height", T::Int, atLeast(1), atMost(16384), "pixels",
+             "Image height (changing it reallocates the image).", G::ReloadScene),
+        [](auto& s) -> auto& { return s.render.height; });
+    add(spec("render.rpp", T::Int, atLeast(1), atMost(1024), "samples",
+             "Samples per pixel traced in one pass (one GPU dispatch).", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.render.rpp; });
+    add(spec("render.spp", T::Int, atLeast(1), kAny, "samples",
+             "Target samples per pixel; the render stops when reached.", G::Redisplay),
+        [](auto& s) -> auto& { return s.render.spp; });
+    add(spec("render.time", T::Float, atLeast(0), kAny, "seconds",
+             "Time budget, 0 = unlimited; the render stops at spp or time, whichever comes first.",
+             G::Redisplay),
+        [](auto& s) -> auto& { return s.render.timeBudget; });
+    add(spec("render.max_bounces", T::Int, atLeast(0), atMost(1024), "bounces",
+             "Scattering events per path; 0 shows only emitters and sky.", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.render.maxBounces; });
+    add(spec("render.rr_depth", T::Int, atLeast(0), kAny, "bounces",
+             "Russian roulette starts after this many bounces.", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.render.rrDepth; });
+    add(spec("render.seed", T::UInt, atLeast(0), atMost(kUIntMax), "",
+             "Sampler seed: same seed, same image bit for bit.", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.render.seed; });
+    add(spec("render.exposure", T::Float, atLeast(-20), atMost(20), "EV stops",
+             "Display value = linear value x 2^exposure (PNG only).", G::Redisplay),
+        [](auto& s) -> auto& { return s.render.exposure; });
+    add(spec("render.tone_map", T::Enum, kAny, kAny, "",
+             "Curve from linear radiance to display values (PNG only; EXR stays linear).", G::Redisplay,
+             {{"clamp", static_cast<int>(ToneMap::Clamp)},
+              {"reinhard", static_cast<int>(ToneMap::Reinhard)},
+              {"aces", static_cast<int>(ToneMap::AcesFit)},
+              {"none", static_cast<int>(ToneMap::Clamp), true}}),
+        [](auto& s) -> auto& { return s.render.toneMap; });
+
+    // --- sky ---
+    add(spec("sky.type", T::Enum, kAny, kAny, "",
+             "Constant radiance, or a blend from bottom (looking down) to top (looking up).",
+             G::ResetAccumulation,
+             {{"constant", static_cast<int>(Sky::Type::Constant)},
+              {"gradient", static_cast<int>(Sky::Type::Gradient)}}),
+        [](auto& s) -> auto& { return s.sky.type; });
+    add(spec("sky.color", T::Rgb, atLeast(0), kAny, "radiance",
+             "Constant sky: its radiance (ignored by gradient).", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.sky.color; });
+    add(spec("sky.top", T::Rgb, atLeast(0), kAny, "radiance",
+             "Gradient sky: radiance straight up (+y).", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.sky.top; });
+    add(spec("sky.bottom", T::Rgb, atLeast(0), kAny, "radiance",
+             "Gradient sky: radiance straight down (-y).", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.sky.bottom; });
+    add(spec("sky.strength", T::Float, atLeast(0), kAny, "factor", "Multiplies the sky radiance.",
+             G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.sky.strength; });
+    return t;
+}
+
+std::vector<MaterialParamSpec> buildMaterialTable() {
+    using T = ParamType;
+    std::vector<MaterialParamSpec> t;
+    auto add = [&t](ValueSpec v, auto ref) { t.push_back(makeField<Material>(std::move(v), ref)); };
+    add(spec("albedo", T::Rgb, atLeast(0), atMost(1), "reflectance",
+             "Lambertian (diffuse) reflectance per channel.", Trigger::ReloadScene),
+        [](auto& m) -> auto& { return m.albedo; });
+    add(spec("emission", T::Rgb, atLeast(0), kAny, "radiance",
+             "Emitted colour; emitted radiance = emission x strength.", Trigger::ReloadScene),
+        [](auto& m) -> auto& { return m.emission; });
+    add(spec("strength", T::Float, atLeast(0), kAny, "factor", "Multiplies emission (0 = not a light).",
+             Trigger::ReloadScene),
+        [](auto& m) -> auto& { return m.emissionStrength; });
+    return t;
+}
+
+std::vector<SphereParamSpec> buildSphereTable() {
+    using T = ParamType;
+    std::vector<SphereParamSpec> t;
+    auto add = [&t](ValueSpec v, auto ref) { t.push_back(makeField<Sphere>(std::move(v), ref)); };
+    add(spec("center", T::Vec3, kAny, kAny, "world units", "Centre of the sphere.", Trigger::ReloadScene),
+        [](auto& s) -> auto& { return s.center; });
+    add(spec("radius", T::Float, above(0), kAny, "world units", "Radius of the sphere.", Trigger::ReloadScene),
+        [](auto& s) -> auto& { return s.radius; });
+    return t;
+}
+
+std::string lower(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+bool violatesMin(const Bound& b, double v) { return b.inclusive ? v < b.value : v <= b.value; }
+bool violatesMax(const Bound& b, double v) { return b.inclusive ? v > b.value : v >= b.value; }
+
+std::string rangeText(const std::optional<Bound>& lo, const std::optional<Bound>& hi) {
+    if (lo && hi) {
+        return std::string(lo->inclusive ? "[" : "(") + formatNumber(lo->value) + ", " +
+               formatNumber(hi->value) + (hi->inclusive ? "]" : ")");
+    }
+    if (lo) return std::string(lo->inclusive ? ">= " : "> ") + formatNumber(lo->value);
+    if (hi) return std::string(hi->inclusive ? "<= " : "< ") + formatNumber(hi->value);
+    return "any";
+}
+
+} // namespace
+
+std::string_view ValueSpec::section() const {
+    auto dot = key.find('.');
+    return dot == std::string_view::npos ? std::string_view{} : key.substr(0, dot);
+}
+
+std::string_view ValueSpec::name() const {
+    auto dot = key.find('.');
+    return dot == std::string_view::npos ? key : key.substr(dot + 1);
+}
+
+const EnumName* ValueSpec::findEnum(std::string_view n) const {
+    for (const EnumName& e : enumNames)
+        if (e.name == n) return &e;
+    return nullptr;
+}
+
+std::string_view ValueSpec::enumName(std::int64_t value) const {
+    for (const EnumName& e : enumNames)
+        if (!e.alias && e.value == value) return e.name;
+    return {};
+}
+
+const std::vector<ParamSpec>& sceneParameters() {
+    static const std::vector<ParamSpec> table = buildSceneTable();
+    return table;
+}
+
+const ParamSpec* findParameter(std::string_view dottedKey) {
+    for (const ParamSpec& p : sceneParameters())
+        if (p.key == dottedKey) return &p;
+    return nullptr;
+}
+
+const std::vector<MaterialParamSpec>& materialParameters() {
+    static const std::vector<MaterialParamSpec> table = buildMaterialTable();
+    return table;
+}
+
+const std::vector<SphereParamSpec>& sphereParameters() {
+    static const std::vector<SphereParamSpec> table = buildSphereTable();
+    return table;
+}
+
+std::optional<std::string> checkScalar(const ValueSpec& spec, double v) {
+    if (!std::isfinite(v)) return "must be finite, got " + formatNumber(v);
+    const bool integral = spec.type == ParamType::Int || spec.type == ParamType::UInt ||
+                          spec.type == ParamType::Enum;
+    if (integral && v != std::floor(v)) return "must be an integer, got " + formatNumber(v);
+    const bool low = spec.min && violatesMin(*spec.min, v);
+    const bool high = spec.max && violatesMax(*spec.max, v);
+    if (low || high) {
+        if (spec.min && spec.max) return "must be in " + rangeText(spec.min, spec.max) + ", got " + formatNumber(v);
+        return "must be " + rangeText(spec.min, spec.max) + ", got " + formatNumber(v);
+    }
+    // Limits of the storage type, for parameters whose table range leaves them open.
+    switch (spec.type) {
+    case ParamType::Int:
+    case ParamType::Enum:
+        if (v < kIntMin) return "must be >= " + formatNumber(kIntMin) + ", got " + formatNumber(v);
+        if (v > kIntMax) return "must be <= " + formatNumber(kIntMax) + ", got " + formatNumber(v);
+        break;
+    case ParamType::UInt:
+        if (v < 0 || v > kUIntMax) return "must be in [0, " + formatNumber(kUIntMax) + "], got " + formatNumber(v);
+        break;
+    default:
+        if (std::fabs(v) > kFloatMax)
+            return "is too large for a 32-bit float (magnitude must be <= " + formatNumber(kFloatMax) +
+                   "), got " + formatNumber(v);
+        break;
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> checkValue(const ValueSpec& spec, const ParamValue& value) {
+    switch (spec.type) {
+    case ParamType::Vec3:
+    case ParamType::Rgb: {
+        const auto* v = std::get_if<glm::vec3>(&value);
+        if (!v) return std::string("expected a vector value");
+        for (int i = 0; i < 3; ++i)
+            if (auto err = checkScalar(spec, static_cast<double>((*v)[i])))
+                return "component " + std::to_string(i) + " " + *err;
+        return std::nullopt;
+    }
+    case ParamType::Float: {
+        const auto* v = std::get_if<double>(&value);
+        if (!v) return std::string("expected a real number");
+        return checkScalar(spec, *v);
+    }
+    case ParamType::Enum: {
+        const auto* v = std::get_if<std::int64_t>(&value);
+        if (!v) return std::string("expected an enum value");
+        if (spec.enumName(*v).empty()) return "is not a valid value: " + std::to_string(*v);
+        return std::nullopt;
+    }
+    case ParamType::Int:
+    case ParamType::UInt: {
+        const auto* v = std::get_if<std::int64_t>(&value);
+        if (!v) return std::string("expected an integer");
+        return checkScalar(spec, static_cast<double>(*v));
+    }
+    }
+    return std::nullopt;
+}
+
+std::string formatNumber(double value) {
+    char buf[64];
+    std::to_chars_result r{};
+    if (std::isfinite(value) && value == std::floor(value) && std::fabs(value) < 1e15) {
+        r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, 0);  // 3000000000, not 3e+09
+        return std::string(buf, r.ptr);
+    }
+    const float f = static_cast<float>(value);
+    // Values that came from float fields print in float's shortest form (0.8, not 0.800000011920929).
+    if (std::isfinite(value) && std::fabs(value) <= kFloatMax && static_cast<double>(f) == value)
+        r = std::to_chars(buf, buf + sizeof buf, f);
+    else
+        r = std::to_chars(buf, buf + sizeof buf, value);
+    return std::string(buf, r.ptr);
+}
+
+std::string formatValue(const ValueSpec& spec, const ParamValue& value) {
+    if (const auto* v = std::get_if<glm::vec3>(&value)) {
+        return "[" + formatNumber(static_cast<double>(v->x)) + ", " + formatNumber(static_cast<double>(v->y)) +
+               ", " + formatNumber(static_cast<double>(v->z)) + "]";
+    }
+    if (const auto* d = std::get_if<double>(&value)) return formatNumber(*d);
+    const std::int64_t i = std::get<std::int64_t>(value);
+    if (spec.type == ParamType::Enum) return std::string(spec.enumName(i));
+    return std::to_string(i);
+}
+
+std::string describeRange(const ValueSpec& spec) {
+    if (spec.type == ParamType::Enum) {
+        std::string out;
+        for (const EnumName& e : spec.enumNames) {
+            if (e.alias) continue;
+            if (!out.empty()) out += ", ";
+            out += e.name;
+            for (const EnumName& a : spec.enumNames)
+                if (a.alias && a.value == e.value) out += " (or " + std::string(a.name) + ")";
+        }
+        return out;
+    }
+    return rangeText(spec.min, spec.max);
+}
+
+std::string_view typeName(ParamType type) {
+    switch (type) {
+    case ParamType::Int: return "int";
+    case ParamType::UInt: return "uint";
+    case ParamType::Float: return "float";
+    case ParamType::Vec3: return "vec3";
+    case ParamType::Rgb: return "rgb";
+    case ParamType::Enum: return "enum";
+    }
+    return "?";
+}
+
+std::string_view triggerName(Trigger trigger) {
+    switch (trigger) {
+    case Trigger::Redisplay: return "redisplay";
+    case Trigger::ResetAccumulation: return "reset accumulation";
+    case Trigger::RecompileShader: return "recompile shader";
+    case Trigger::ReloadScene: return "reload scene";
+    }
+    return "?";
+}
+
+// Wagner-Fischer dynamic programme for the Levenshtein distance, keeping one row
+// (R. A. Wagner, M. J. Fischer, "The String-to-String Correction Problem", JACM 21(1), 1974).
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];  // D[i-1][j-1]
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];  // D[i-1][j]
+            const std::size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+            row[j] = std::min({up + 1, row[j - 1] + 1, substitute});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+std::string_view closestMatch(std::string_view word, const std::vector<std::string_view>& candidates) {
+    const std::string w = lower(word);
+    std::string_view best;
+    std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
+    for (std::string_view c : candidates) {
+        const std::size_t d = editDistance(w, lower(c));
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = c;
+        }
+    }
+    // Plausible typo: a few edits, and fewer edits than the word has letters.
+    const std::size_t limit = std::max<std::size_t>(2, word.size() / 3);
+    if (best.empty() || bestDistance > limit || bestDistance >= std::max(word.size(), best.size())) return {};
+    return best;
+}
+
+} // namespace raylab

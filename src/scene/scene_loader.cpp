@@ -1,0 +1,693 @@
+#include "scene/scene_loader.h"
+
+#include "scene/json_locator.h"
+#include "scene/parameters.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <utility>
+#include <variant>
+
+namespace raylab {
+namespace {
+
+// Parsed documents keep the file's key order, so that validation meets problems in reading order.
+using Json = nlohmann::ordered_json;
+
+constexpr std::string_view kDefaultMaterial = "default";
+constexpr std::string_view kSectionKeys[] = {"camera", "render", "sky", "materials", "objects"};
+constexpr std::string_view kObjectTypes[] = {"sphere"};
+
+// ------------------------------------------------------------------------------------------------
+// Paths: a value's place in the document, shown as objects[2].radius and as JSON pointer.
+
+struct Path {
+    struct Segment {
+        std::string token;
+        bool index = false;
+    };
+    std::vector<Segment> segments;
+
+    Path key(std::string_view k) const {
+        Path p = *this;
+        p.segments.push_back({std::string(k), false});
+        return p;
+    }
+    Path index(std::size_t i) const {
+        Path p = *this;
+        p.segments.push_back({std::to_string(i), true});
+        return p;
+    }
+    std::string pointer() const {
+        std::string out;
+        for (const Segment& s : segments) out += "/" + JsonLocator::escapeToken(s.token);
+        return out;
+    }
+    std::string display() const {
+        if (segments.empty()) return "(top level)";
+        std::string out;
+        for (const Segment& s : segments) {
+            if (s.index) {
+                out += "[" + s.token + "]";
+            } else if (isPlainName(s.token)) {
+                if (!out.empty()) out += ".";
+                out += s.token;
+            } else {
+                out += "[" + Json(s.token).dump() + "]";  // quoted, e.g. materials["my lamp"]
+            }
+        }
+        return out;
+    }
+    static bool isPlainName(std::string_view s) {
+        if (s.empty()) return false;
+        return std::all_of(s.begin(), s.end(), [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+        });
+    }
+};
+
+// "in render", "at the top level": where a key was found, for unknown-key messages.
+std::string inWhere(const Path& p) { return p.segments.empty() ? "at the top level" : "in " + p.display(); }
+
+bool isPointerPrefix(std::string_view prefix, std::string_view pointer) {
+    return pointer == prefix ||
+           (pointer.size() > prefix.size() && pointer.substr(0, prefix.size()) == prefix &&
+            pointer[prefix.size()] == '/');
+}
+
+// The first validation problem: thrown inside the validator, turned into a SceneError with a location.
+struct Failure {
+    Path path;
+    std::string message;
+    bool atKey = false;  // point at the member's key rather than its value (unknown/duplicate keys)
+};
+
+[[noreturn]] void fail(const Path& path, std::string message, bool atKey = false) {
+    throw Failure{path, std::move(message), atKey};
+}
+
+std::string typeOf(const Json& v) {
+    switch (v.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::boolean: return "boolean";
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float: return "number";
+    case Json::value_t::string: return "string";
+    case Json::value_t::array: return "array";
+    case Json::value_t::object: return "object";
+    default: return "unsupported value";
+    }
+}
+
+std::string inQuotes(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+std::string joinNames(const std::vector<std::string_view>& names) {
+    std::string out;
+    for (std::string_view n : names) {
+        if (!out.empty()) out += ", ";
+        out += n;
+    }
+    return out;
+}
+
+// "did you mean 'radius'?" when a candidate is close, else the full list.
+std::string suggestion(std::string_view word, const std::vector<std::string_view>& candidates,
+                       std::string_view listName) {
+    const std::string_view best = closestMatch(word, candidates);
+    if (!best.empty()) return "; did you mean " + inQuotes(best) + "?";
+    if (candidates.empty()) return " (there are no " + std::string(listName) + ")";
+    return " (" + std::string(listName) + ": " + joinNames(candidates) + ")";
+}
+
+// ------------------------------------------------------------------------------------------------
+// JSON text -> document, with the byte offset of a syntax error. nlohmann reports number overflow
+// (1e999) as an exception without position; its SAX interface gives the position, so we build the
+// document through our own SAX handler.
+
+struct ParseResult {
+    Json doc;
+    bool ok = false;
+    std::size_t errorOffset = 0;
+    std::string reason;                 // the parser's explanation
+    std::optional<Path> errorPath;      // set for out-of-range numbers (known value position)
+};
+
+class DomBuilder : public nlohmann::json_sax<Json> {
+public:
+    ParseResult result;
+
+    bool null() override { return add(Json(nullptr)); }
+    bool boolean(bool v) override { return add(Json(v)); }
+    bool number_integer(number_integer_t v) override { return add(Json(v)); }
+    bool number_unsigned(number_unsigned_t v) override { return add(Json(v)); }
+    bool number_float(number_float_t v, const string_t&) override { return add(Json(v)); }
+    bool string(string_t& v) override { return add(Json(std::move(v))); }
+    bool binary(binary_t& v) override { return add(Json::binary(std::move(v))); }
+    bool start_object(std::size_t) override { return open(Json::object()); }
+    bool key(string_t& k) override {
+        stack_.back().key = k;
+        return true;
+    }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(Json::array()); }
+    bool end_array() override { return close(); }
+
+    bool parse_error(std::size_t position, const std::string& lastToken,
+                     const nlohmann::detail::exception& ex) override {
+        result.ok = false;
+        // `position` counts the characters read, so position - 1 is the offending character.
+        result.errorOffset = position > 0 ? position - 1 : 0;
+        if (ex.id == 406) {  // out_of_range.406: a number overflows a double (e.g. 1e999)
+            result.errorOffset = position >= lastToken.size() ? position - lastToken.size() : 0;
+            result.reason = "must be finite, got " + lastToken + " (too large for a double)";
+            result.errorPath = currentPath();
+        } else {
+            result.reason = stripPrefix(ex.what());
+        }
+        return false;
+    }
+
+private:
+    struct Level {
+        Json* container;
+        std::string key;  // objects: the key of the value that comes next
+    };
+
+    Json* place(Json&& v) {
+        if (stack_.empty()) {
+            result.doc = std::move(v);
+            return &result.doc;
+        }
+        Level& top = stack_.back();
+        if (top.container->is_array()) {
+            top.container->push_back(std::move(v));
+            return &top.container->back();
+        }
+        Json& slot = (*top.container)[top.key];
+        slot = std::move(v);
+        return &slot;
+    }
+    bool add(Json&& v) {
+        place(std::move(v));
+        return true;
+    }
+    bool open(Json&& v) {
+        stack_.push_back(Level{place(std::move(v)), {}});
+        return true;
+    }
+    bool close() {
+        stack_.pop_back();
+        return true;
+    }
+    Path currentPath() const {
+        // Enclosing arrays already hold the element being filled (the last one); the innermost
+        // container has not received the offending value yet.
+        Path p;
+        for (std::size_t i = 0; i < stack_.size(); ++i) {
+            const Json& c = *stack_[i].container;
+            if (!c.is_array()) p = p.key(stack_[i].key);
+            else p = p.index(i + 1 < stack_.size() ? c.size() - 1 : c.size());
+        }
+        return p;
+    }
+    // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ..." -> "syntax error ..."
+    static std::string stripPrefix(std::string_view what) {
+        if (auto bracket = what.find("] "); bracket != std::string_view::npos && what.front() == '[')
+            what.remove_prefix(bracket + 2);
+        if (what.starts_with("parse error")) {
+            if (auto colon = what.find(": "); colon != std::string_view::npos) what.remove_prefix(colon + 2);
+        }
+        return std::string(what);
+    }
+
+    std::vector<Level> stack_;
+};
+
+ParseResult parseJson(std::string_view text) {
+    DomBuilder builder;
+    builder.result.ok = true;
+    const bool ok = Json::sax_parse(text.begin(), text.end(), &builder, nlohmann::json::input_format_t::json,
+                                    /*strict=*/true, /*ignore_comments=*/true);
+    builder.result.ok = ok && builder.result.ok;
+    return std::move(builder.result);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Validation: document -> Scene, through the parameter tables.
+
+double numberOf(const Json& v) {
+    if (v.is_number_unsigned()) return static_cast<double>(v.get<std::uint64_t>());
+    if (v.is_number_integer()) return static_cast<double>(v.get<std::int64_t>());
+    return v.get<double>();
+}
+
+double readScalar(const ValueSpec& spec, const Json& v, const Path& p) {
+    if (!v.is_number()) {
+        const bool integral = spec.type == ParamType::Int || spec.type == ParamType::UInt;
+        fail(p, std::string(integral ? "expected an integer" : "expected a number") + ", got " + typeOf(v));
+    }
+    const double d = numberOf(v);
+    if (auto err = checkScalar(spec, d)) fail(p, *err);
+    return d;
+}
+
+ParamValue readValue(const ValueSpec& spec, const Json& v, const Path& p) {
+    switch (spec.type) {
+    case ParamType::Int:
+    case ParamType::UInt: return static_cast<std::int64_t>(readScalar(spec, v, p));
+    case ParamType::Float: return readScalar(spec, v, p);
+    case ParamType::Vec3:
+    case ParamType::Rgb: {
+        const bool rgb = spec.type == ParamType::Rgb;
+        if (rgb && v.is_number()) return glm::vec3(static_cast<float>(readScalar(spec, v, p)));
+        if (!v.is_array()) {
+            fail(p, std::string(rgb ? "expected a colour, [r, g, b] or one number for grey"
+                                    : "expected [x, y, z], an array of 3 numbers") +
+                        ", got " + typeOf(v));
+        }
+        if (v.size() != 3) fail(p, "expected 3 numbers, got " + std::to_string(v.size()));
+        glm::vec3 out{};
+        for (std::size_t i = 0; i < 3; ++i)
+            out[static_cast<glm::length_t>(i)] = static_cast<float>(readScalar(spec, v[i], p.index(i)));
+        return out;
+    }
+    case ParamType::Enum: {
+        std::vector<std::string_view> names;
+        for (const EnumName& e : spec.enumNames) names.push_back(e.name);
+        if (!v.is_string()) fail(p, "expected a string (" + joinNames(names) + "), got " + typeOf(v));
+        const std::string& s = v.get_ref<const std::string&>();
+        const EnumName* e = spec.findEnum(s);
+        if (!e) fail(p, "unknown value " + inQuotes(s) + suggestion(s, names, "allowed values"));
+        return static_cast<std::int64_t>(e->value);
+    }
+    }
+    fail(p, "internal error: unhandled parameter type");
+}
+
+// Reads the members of one JSON object through a table. Keys in `handledElsewhere` are skipped.
+template <class Target>
+void readMembers(const Json& obj, const Path& p, const std::vector<FieldSpec<Target>>& table,
+                 std::string_view section, Target& target,
+                 const std::vector<std::string_view>& handledElsewhere = {}) {
+    if (!obj.is_object()) fail(p, "expected an object { ... }, got " + typeOf(obj));
+    std::vector<std::string_view> known(handledElsewhere);
+    for (const auto& spec : table)
+        if (spec.section() == section) known.push_back(spec.name());
+    for (const auto& [k, v] : obj.items()) {
+        if (std::find(handledElsewhere.begin(), handledElsewhere.end(), k) != handledElsewhere.end()) continue;
+        const FieldSpec<Target>* spec = nullptr;
+        for (const auto& s : table)
+            if (s.section() == section && s.name() == k) spec = &s;
+        if (!spec) {
+            fail(p.key(k), "unknown key " + inQuotes(k) + " " + inWhere(p) + suggestion(k, known, "known keys"),
+                 true);
+        }
+        spec->set(target, readValue(*spec, v, p.key(k)));
+    }
+}
+
+struct PendingSphere {
+    Sphere sphere;
+    std::string material;
+};
+
+void checkCamera(const Camera& c) {
+    const Path camera = Path{}.key("camera");
+    const glm::vec3 view = c.lookAt - c.position;
+    const float distance = glm::length(view);
+    if (!(distance > 0.0f))
+        fail(camera.key("look_at"), "must differ from camera.position (both are " +
+                                        formatValue(*findParameter("camera.position"), c.position) + ")");
+    if (!std::isfinite(distance))
+        fail(camera.key("look_at"), "is too far from camera.position (the distance overflows a float)");
+    const float upLength = glm::length(c.up);
+    if (!(upLength > 0.0f) || !std::isfinite(upLength))
+        fail(camera.key("up"), "must be a non-zero direction, got " + formatValue(*findParameter("camera.up"), c.up));
+    // |a x b| = sin(angle) for unit vectors; below 1e-4 (about 0.006 degrees) the basis degenerates.
+    if (glm::length(glm::cross(view / distance, c.up / upLength)) < 1e-4f)
+        fail(camera.key("up"), "is parallel to the view direction look_at - position = " +
+                                   formatValue(*findParameter("camera.up"), view / distance) +
+                                   "; choose an up direction across the view");
+}
+
+void validate(const Json& root, Scene& scene) {
+    const Path top;
+    if (!root.is_object()) fail(top, "a scene file must be a JSON object { ... }, got " + typeOf(root));
+    const std::vector<std::string_view> sections(std::begin(kSectionKeys), std::end(kSectionKeys));
+    for (const auto& [k, v] : root.items()) {
+        (void)v;
+        if (std::find(sections.begin(), sections.end(), k) == sections.end())
+            fail(top.key(k), "unknown key " + inQuotes(k) + " " + inWhere(top) + suggestion(k, sections, "known keys"),
+                 true);
+    }
+
+    for (std::string_view section : {"camera", "render", "sky"}) {
+        const std::string name(section);
+        if (root.contains(name)) readMembers(root[name], top.key(name), sceneParameters(), section, scene);
+    }
+
+    // Materials: a name -> properties map. Kept sorted by name so the order does not depend on the file.
+    std::vector<Material> materials;
+    if (root.contains("materials")) {
+        const Path p = top.key("materials");
+        const Json& all = root["materials"];
+        if (!all.is_object())
+            fail(p, "expected an object { \"name\": { ... }, ... }, got " + typeOf(all));
+        for (const auto& [name, m] : all.items()) {
+            if (name.empty()) fail(p.key(name), "a material name must not be empty", true);
+            Material mat;
+            mat.name = name;
+            readMembers(m, p.key(name), materialParameters(), "", mat);
+            materials.push_back(std::move(mat));
+        }
+    }
+    std::vector<std::string_view> materialNames;
+    for (const Material& m : materials) materialNames.push_back(m.name);
+    const bool haveDefault = std::find(materialNames.begin(), materialNames.end(), kDefaultMaterial) !=
+                             materialNames.end();
+
+    // Objects.
+    const Path objectsPath = top.key("objects");
+    if (!root.contains("objects"))
+        fail(objectsPath, "a scene needs at least one object, and there is no \"objects\" array");
+    const Json& objects = root["objects"];
+    if (!objects.is_array()) fail(objectsPath, "expected an array [ { ... }, ... ], got " + typeOf(objects));
+    if (objects.empty()) fail(objectsPath, "a scene needs at least one object, got an empty array");
+    std::vector<PendingSphere> spheres;
+    const std::vector<std::string_view> types(std::begin(kObjectTypes), std::end(kObjectTypes));
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const Path p = objectsPath.index(i);
+        const Json& o = objects[i];
+        if (!o.is_object()) fail(p, "expected an object { \"type\": \"sphere\", ... }, got " + typeOf(o));
+        if (o.contains("type")) {
+            const Json& t = o["type"];
+            if (!t.is_string()) fail(p.key("type"), "expected a string (" + joinNames(types) + "), got " + typeOf(t));
+            const std::string& ts = t.get_ref<const std::string&>();
+            if (std::find(types.begin(), types.end(), ts) == types.end())
+                fail(p.key("type"), "unknown object type " + inQuotes(ts) + suggestion(ts, types, "known types"));
+        }
+        PendingSphere s;
+        readMembers(o, p, sphereParameters(), "", s.sphere, {"type", "material"});
+        s.material = std::string(kDefaultMaterial);
+        if (o.contains("material")) {
+            const Json& m = o["material"];
+            if (!m.is_string()) fail(p.key("material"), "expected a material name (a string), got " + typeOf(m));
+            s.material = m.get<std::string>();
+        }
+        const bool known = std::find(materialNames.begin(), materialNames.end(), s.material) != materialNames.end();
+        if (!known && s.material != kDefaultMaterial) {
+            fail(p.key("material"), "unknown material " + inQuotes(s.material) +
+                                        suggestion(s.material, materialNames, "defined materials"));
+        }
+        spheres.push_back(std::move(s));
+    }
+
+    // "default" is built in (albedo 0.8 grey) unless the file defines it.
+    const bool needDefault = std::any_of(spheres.begin(), spheres.end(),
+                                         [](const PendingSphere& s) { return s.material == kDefaultMaterial; });
+    if (needDefault && !haveDefault) {
+        Material d;
+        d.name = std::string(kDefaultMaterial);
+        materials.push_back(d);
+    }
+    std::sort(materials.begin(), materials.end(),
+              [](const Material& a, const Material& b) { return a.name < b.name; });
+    std::map<std::string, int, std::less<>> indexOf;
+    for (std::size_t i = 0; i < materials.size(); ++i) indexOf[materials[i].name] = static_cast<int>(i);
+
+    scene.materials = std::move(materials);
+    scene.spheres.clear();
+    for (PendingSphere& s : spheres) {
+        s.sphere.material = indexOf.at(s.material);
+        scene.spheres.push_back(s.sphere);
+    }
+
+    checkCamera(scene.camera);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Overrides ("--set KEY=VALUE").
+
+struct AppliedOverride {
+    std::string pointer;  // of the value it wrote
+    std::string text;     // as given, for messages
+};
+
+std::string overridePrefix(const std::string& text) { return "--set " + text + ": error: "; }
+
+bool looksLikeJson(std::string_view v) {
+    const auto first = v.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos) return false;
+    const char c = v[first];
+    return c == '[' || c == '{' || c == '"' || c == '-' || std::isdigit(static_cast<unsigned char>(c));
+}
+
+AppliedOverride applyOverride(Json& root, const std::string& text) {
+    auto error = [&text](const Path* at, const std::string& what) -> SceneError {
+        return SceneError(overridePrefix(text) + (at ? at->display() + ": " : std::string()) + what);
+    };
+    const auto eq = text.find('=');
+    if (eq == std::string::npos) throw error(nullptr, "expected KEY=VALUE, e.g. render.spp=256");
+    const std::string key = text.substr(0, eq);
+    const std::string valueText = text.substr(eq + 1);
+
+    std::vector<std::string> segments;
+    for (std::size_t start = 0;;) {
+        const auto dot = key.find('.', start);
+        segments.push_back(key.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+        if (dot == std::string::npos) break;
+        start = dot + 1;
+    }
+    for (const std::string& s : segments)
+        if (s.empty()) throw error(nullptr, "the key '" + key + "' has an empty part; write it like render.spp");
+
+    Json value;
+    ParseResult parsed = parseJson(valueText);
+    if (parsed.ok) {
+        value = std::move(parsed.doc);
+    } else if (looksLikeJson(valueText)) {
+        throw error(nullptr, "the value is not valid JSON: " + parsed.reason);
+    } else {
+        value = valueText;  // a bare word, e.g. sky.type=constant
+    }
+
+    if (!root.is_object()) throw error(nullptr, "the scene file's top level is not an object");
+    Json* cur = &root;
+    Path path;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const std::string& seg = segments[i];
+        const bool last = i + 1 == segments.size();
+        if (cur->is_null()) *cur = Json::object();
+        if (cur->is_object()) {
+            path = path.key(seg);
+            if (!last && !cur->contains(seg)) (*cur)[seg] = Json::object();
+            cur = &(*cur)[seg];
+        } else if (cur->is_array()) {
+            const bool digits = seg.size() < 10 &&
+                                std::all_of(seg.begin(), seg.end(), [](char c) { return c >= '0' && c <= '9'; });
+            if (!digits) throw error(&path, "is an array; expected an element index, got '" + seg + "'");
+            const std::size_t index = std::stoul(seg);
+            if (index >= cur->size()) {
+                const Path at = path.index(index);
+                const std::size_t n = cur->size();
+                throw error(&at, "index " + seg + " is past the end of " + path.display() + " (" +
+                                     std::to_string(n) + (n == 1 ? " element)" : " elements)"));
+            }
+            path = path.index(index);
+            cur = &(*cur)[index];
+        } else {
+            throw error(&path, "is a " + typeOf(*cur) + ", so it cannot contain '" + seg + "'");
+        }
+    }
+    *cur = std::move(value);
+    return AppliedOverride{path.pointer(), text};
+}
+
+// Rebuilds a Path (with array/key distinction) from a JSON pointer by walking the document.
+Path pathFromPointer(const Json& doc, std::string_view pointer) {
+    Path p;
+    const Json* cur = &doc;
+    std::size_t pos = 0;
+    while (pos < pointer.size()) {
+        const std::size_t next = pointer.find('/', pos + 1);
+        const std::string_view raw =
+            pointer.substr(pos + 1, next == std::string_view::npos ? std::string_view::npos : next - pos - 1);
+        std::string token;  // RFC 6901 unescaping: "~1" -> '/', "~0" -> '~'
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+            if (raw[i] == '~' && i + 1 < raw.size()) {
+                token += raw[i + 1] == '1' ? '/' : '~';
+                ++i;
+            } else {
+                token += raw[i];
+            }
+        }
+        if (cur && cur->is_array()) {
+            const std::size_t index = std::stoul(token);
+            p = p.index(index);
+            cur = index < cur->size() ? &(*cur)[index] : nullptr;
+        } else {
+            p = p.key(token);
+            cur = (cur && cur->is_object() && cur->contains(token)) ? &(*cur)[token] : nullptr;
+        }
+        if (next == std::string_view::npos) break;
+        pos = next;
+    }
+    return p;
+}
+
+std::string fileLocation(const std::string& fileName, SourcePos pos) {
+    return fileName + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) + ": error: ";
+}
+
+// Formats a validation failure: at the override that wrote (or created) the value, else at the value
+// (or key) in the file, else at the nearest enclosing value that is in the file.
+std::string describeFailure(const Failure& f, const std::string& fileName, const JsonLocator& locator,
+                            const std::vector<AppliedOverride>& overrides) {
+    const std::string pointer = f.path.pointer();
+    const std::string tail = f.path.display() + ": " + f.message;
+    for (auto it = overrides.rbegin(); it != overrides.rend(); ++it)
+        if (isPointerPrefix(it->pointer, pointer)) return overridePrefix(it->text) + tail;
+    if (const ValueLocation* loc = locator.find(pointer))
+        return fileLocation(fileName, f.atKey && loc->key.valid() ? loc->key : loc->value) + tail;
+    for (auto it = overrides.rbegin(); it != overrides.rend(); ++it)
+        if (isPointerPrefix(pointer, it->pointer)) return overridePrefix(it->text) + tail;
+    // Cross-field checks (camera.up against camera.position) blame a sibling set by an override.
+    const std::string parentPointer = pointer.substr(0, pointer.rfind('/'));
+    for (auto it = overrides.rbegin(); it != overrides.rend(); ++it)
+        if (!pointer.empty() && it->pointer.substr(0, it->pointer.rfind('/')) == parentPointer)
+            return overridePrefix(it->text) + tail;
+    Path parent = f.path;
+    while (!parent.segments.empty()) {
+        parent.segments.pop_back();
+        if (const ValueLocation* loc = locator.find(parent.pointer())) return fileLocation(fileName, loc->value) + tail;
+    }
+    return fileLocation(fileName, SourcePos{1, 1}) + tail;
+}
+
+// JSON number for a value as it will be read back: the shortest text that gives back the same field.
+double shortestText(double value) {
+    const std::string text = formatNumber(value);
+    double d = value;
+    std::from_chars(text.data(), text.data() + text.size(), d);
+    return d;
+}
+
+// For a float field 0.8f is written as 0.8; a double field keeps its exact value when 0.8 would differ.
+template <class Target>
+double numberForField(const FieldSpec<Target>& spec, const Target& source, double value) {
+    const double shortest = shortestText(value);
+    Target scratch = source;
+    spec.set(scratch, shortest);
+    return spec.get(scratch) == spec.get(source) ? shortest : value;
+}
+
+template <class Target>
+nlohmann::json valueJson(const FieldSpec<Target>& spec, const Target& source) {
+    const ParamValue v = spec.get(source);
+    if (const auto* vec = std::get_if<glm::vec3>(&v)) {
+        nlohmann::json arr = nlohmann::json::array();
+        // Components are floats: their shortest float text reads back to the same float.
+        for (int i = 0; i < 3; ++i) arr.push_back(shortestText(static_cast<double>((*vec)[i])));
+        return arr;
+    }
+    if (const auto* d = std::get_if<double>(&v)) return numberForField(spec, source, *d);
+    const std::int64_t i = std::get<std::int64_t>(v);
+    if (spec.type == ParamType::Enum) return std::string(spec.enumName(i));
+    return i;
+}
+
+} // namespace
+
+Scene parseScene(std::string_view text, const std::string& fileName, const std::vector<std::string>& overrides) {
+    ParseResult parsed = parseJson(text);
+    const JsonLocator locator(text);
+    if (!parsed.ok) {
+        const std::string where = fileLocation(fileName, locator.position(parsed.errorOffset));
+        if (parsed.errorPath) throw SceneError(where + parsed.errorPath->display() + ": " + parsed.reason);
+        throw SceneError(where + parsed.reason);
+    }
+    Json& doc = parsed.doc;
+    if (!locator.duplicates().empty()) {
+        const JsonLocator::Duplicate& d = locator.duplicates().front();
+        const Path p = pathFromPointer(doc, d.pointer);
+        throw SceneError(fileLocation(fileName, d.second) + p.display() + ": duplicate key " +
+                         inQuotes(p.segments.back().token) + " (first given at line " + std::to_string(d.first.line) +
+                         ", column " + std::to_string(d.first.column) + ")");
+    }
+
+    std::vector<AppliedOverride> applied;
+    for (const std::string& o : overrides) applied.push_back(applyOverride(doc, o));
+
+    Scene scene;
+    scene.sourcePath = fileName;
+    try {
+        validate(doc, scene);
+    } catch (const Failure& f) {
+        throw SceneError(describeFailure(f, fileName, locator, applied));
+    }
+    return scene;
+}
+
+Scene loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+    const std::string name = file.string();
+    errno = 0;
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(file.c_str(), "rb"), &std::fclose);
+    if (!f) throw SceneError(name + ": error: cannot read: " + std::strerror(errno));
+    std::string text;
+    char buffer[65536];
+    std::size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
+    if (std::ferror(f.get())) {
+        const int err = errno != 0 ? errno : EIO;
+        throw SceneError(name + ": error: cannot read: " + std::strerror(err));
+    }
+    Scene scene = parseScene(text, name, overrides);
+    scene.sourcePath = file;
+    return scene;
+}
+
+nlohmann::json sceneToJson(const Scene& scene) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const ParamSpec& spec : sceneParameters())
+        j[std::string(spec.section())][std::string(spec.name())] = valueJson(spec, scene);
+
+    nlohmann::json materials = nlohmann::json::object();
+    for (const Material& m : scene.materials) {
+        nlohmann::json mj = nlohmann::json::object();
+        for (const MaterialParamSpec& spec : materialParameters()) mj[std::string(spec.key)] = valueJson(spec, m);
+        materials[m.name] = mj;
+    }
+    j["materials"] = materials;
+
+    nlohmann::json objects = nlohmann::json::array();
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        if (s.material < 0 || static_cast<std::size_t>(s.material) >= scene.materials.size()) {
+            throw SceneError("sceneToJson: error: objects[" + std::to_string(i) + "].material: index " +
+                             std::to_string(s.material) + " is out of range (" +
+                             std::to_string(scene.materials.size()) + " materials)");
+        }
+        nlohmann::json o = nlohmann::json::object();
+        o["type"] = "sphere";
+        for (const SphereParamSpec& spec : sphereParameters()) o[std::string(spec.key)] = valueJson(spec, s);
+        o["material"] = scene.materials[static_cast<std::size_t>(s.material)].name;
+        objects.push_back(o);
+    }
+    j["objects"] = objects;
+    return j;
+}
+
+} // namespace raylab

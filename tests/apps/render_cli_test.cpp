@@ -1,0 +1,173 @@
+// raylab-render as a user runs it: exit codes, messages, outputs, Ctrl-C.
+#include "io/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+fs::path scratchDir() {
+    fs::path d = fs::temp_directory_path() / ("raylab_cli_test_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+}
+
+// Runs raylab-render with the arguments (shell-quoted by the caller) from the repository root.
+CliRun render(const std::string& args) {
+    const fs::path dir = scratchDir();
+    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_RENDER_EXE + "' " +
+                            args + " > '" + (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
+    const int raw = std::system(cmd.c_str());
+    CliRun r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(dir / "out.txt");
+    r.err = slurp(dir / "err.txt");
+    return r;
+}
+
+fs::path writeScene(const std::string& name, const std::string& text) {
+    const fs::path p = scratchDir() / name;
+    std::ofstream(p) << text;
+    return p;
+}
+
+const char* kSmall = " --width 16 --height 9 --spp 2 -q";
+
+} // namespace
+
+TEST(RenderCli, HelpDocumentsEveryOption) {
+    const CliRun r = render("--help");
+    EXPECT_EQ(r.status, 0);
+    for (const char* opt : {"--output", "--spp", "--time", "--width", "--height", "--seed", "--set", "--rpp",
+                            "--gl", "--quiet", "Exit status"})
+        EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+TEST(RenderCli, RendersPngAndExrAndPrintsThePath) {
+    const fs::path png = scratchDir() / "d.png";
+    CliRun r = render("scenes/default.json" + std::string(kSmall) + " -o '" + png.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find(png.string()), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(png));
+
+    const fs::path exr = scratchDir() / "d.exr";
+    r = render("scenes/default.json --width 16 --height 9 --spp 3 --seed 77 -o '" + exr.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("3/3 spp"), std::string::npos) << "progress line: " << r.err;
+    EXPECT_NE(r.err.find("Mpaths/s"), std::string::npos) << r.err;
+    auto in = OIIO::ImageInput::open(exr.string());
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().width, 16);
+    EXPECT_EQ(in->spec().get_int_attribute("raylab:spp"), 3);
+    EXPECT_EQ(in->spec().get_int_attribute("raylab:seed"), 77);
+    EXPECT_NE(in->spec().get_string_attribute("raylab:scene").find("default.json"), std::string::npos);
+}
+
+TEST(RenderCli, SetOverridesAnyKey) {
+    const fs::path exr = scratchDir() / "s.exr";
+    const CliRun r = render("scenes/furnace.json --set sky.strength=2 --set render.spp=1 -q --width 4 --height 4 -o '" +
+                         exr.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const raylab::Image im = raylab::readImage(exr);
+    EXPECT_NEAR(im.rgba[0], 1.0f, 1e-6f);   // albedo 0.5 × sky 1 × strength 2
+}
+
+TEST(RenderCli, BadScenesFailWithLocatedMessages) {
+    struct Case {
+        std::string text;
+        std::string expected;
+    };
+    const std::vector<Case> cases = {
+        {"{\n  \"objects\": [\n    {\"type\": \"sphere\",, }\n  ]\n}\n", "bad.json:3:"},
+        {R"({"objects": [{"type": "sphere", "radus": 1}]})", "did you mean 'radius'"},
+        {R"({"objects": [{"type": "sphere", "radius": -1}]})", "objects[0].radius"},
+        {R"({"objects": [{"type": "sphere", "radius": 1e999}]})", "objects[0].radius"},
+        {R"({"objects": [{"type": "sphere", "radius": "big"}]})", "objects[0].radius"},
+        {R"({"camera": {"fov": 0}, "objects": [{"type": "sphere"}]})", "camera.fov"},
+        {R"({"render": {"max_bounces": -2}, "objects": [{"type": "sphere"}]})", "render.max_bounces"},
+        {R"({"objects": [{"type": "sphere", "material": "nope"}]})", "nope"},
+    };
+    for (const Case& c : cases) {
+        const fs::path scene = writeScene("bad.json", c.text);
+        const CliRun r = render("'" + scene.string() + "'" + kSmall + " -o '" + (scratchDir() / "x.png").string() + "'");
+        EXPECT_EQ(r.status, 1) << c.text;
+        EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.text << "\n--- got:\n" << r.err;
+        EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
+    }
+    const CliRun missing = render("/nonexistent/scene.json");
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.err.find("/nonexistent/scene.json"), std::string::npos) << missing.err;
+}
+
+TEST(RenderCli, BadCommandLinesAndOutputsFailBeforeRendering) {
+    EXPECT_EQ(render("").status, 2);
+    EXPECT_EQ(render("scenes/default.json --spp -3").status, 2);
+    EXPECT_EQ(render("scenes/default.json --width 0").status, 2);
+    EXPECT_EQ(render("scenes/default.json --bogus").status, 2);
+    const CliRun bad = render("scenes/default.json --set render.spp=abc -q");
+    EXPECT_EQ(bad.status, 1);
+    EXPECT_NE(bad.err.find("--set render.spp=abc"), std::string::npos) << bad.err;
+    const CliRun unwritable = render("scenes/default.json -o /nonexistent_dir_raylab/x.png");
+    EXPECT_EQ(unwritable.status, 1);
+    EXPECT_NE(unwritable.err.find("/nonexistent_dir_raylab/x.png: error: cannot write"), std::string::npos)
+        << unwritable.err;
+    EXPECT_EQ(unwritable.err.find("spp"), std::string::npos) << "it rendered before failing: " << unwritable.err;
+    EXPECT_EQ(render("scenes/default.json -o out.tga").status, 1);
+}
+
+TEST(RenderCli, SigintWritesThePartialImageAndExits130) {
+    const fs::path exr = scratchDir() / "partial.exr";
+    int errPipe[2];
+    ASSERT_EQ(::pipe(errPipe), 0);
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::dup2(errPipe[1], STDERR_FILENO);
+        ::close(errPipe[0]);
+        if (::chdir(RAYLAB_SOURCE_DIR) != 0) ::_exit(99);
+        ::execl(RAYLAB_RENDER_EXE, RAYLAB_RENDER_EXE, "scenes/default.json", "--width", "32", "--height", "18",
+                "--spp", "1000000", "-o", exr.c_str(), static_cast<char*>(nullptr));
+        ::_exit(98);
+    }
+    ::close(errPipe[1]);
+    // Wait for the first progress line: rendering has started.
+    std::string err;
+    char buf[256];
+    while (err.find("spp") == std::string::npos) {
+        const ssize_t n = ::read(errPipe[0], buf, sizeof buf);
+        ASSERT_GT(n, 0) << "raylab-render ended early: " << err;
+        err.append(buf, size_t(n));
+    }
+    ::kill(pid, SIGINT);
+    while (::read(errPipe[0], buf, sizeof buf) > 0) {}
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    ::close(errPipe[0]);
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal instead of exiting";
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    auto in = OIIO::ImageInput::open(exr.string());
+    ASSERT_TRUE(in) << "no partial image";
+    const int spp = in->spec().get_int_attribute("raylab:spp");
+    EXPECT_GT(spp, 0);
+    EXPECT_LT(spp, 1000000);
+}

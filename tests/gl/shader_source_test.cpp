@@ -1,0 +1,94 @@
+// Shader assembly (#include, defines, #line) and compile errors reported as file:line.
+#include "gl/shader_program.h"
+#include "support/gl_test.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+using namespace raylab;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratchDir(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() / ("raylab_shader_test_" + name + std::to_string(::getpid()));
+    fs::create_directories(dir / "inc");
+    return dir;
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+} // namespace
+
+TEST(ShaderSource, IncludesOnceDefinesAfterVersionAndNumericLines) {
+    const fs::path dir = scratchDir("assemble");
+    write(dir / "inc" / "a.glsl", "float a() { return 1.0; }\n");
+    write(dir / "inc" / "b.glsl", "#include \"a.glsl\"\nfloat b() { return a(); }\n");
+    write(dir / "main.comp", "#version 450 core\n#include \"inc/a.glsl\"\n#include \"inc/b.glsl\"\nvoid main() {}\n");
+    const ShaderSource s = assembleShader(dir / "main.comp", {{"FOO", "3"}});
+    EXPECT_EQ(s.text.rfind("#version 450 core\n#define FOO 3\n#line 2 0\n", 0), 0u) << s.text;
+    EXPECT_EQ(s.files.size(), 3u);
+    // a.glsl's body appears once even though it is included twice.
+    const auto first = s.text.find("float a()");
+    EXPECT_NE(first, std::string::npos);
+    EXPECT_EQ(s.text.find("float a()", first + 1), std::string::npos);
+    EXPECT_EQ(s.text.find("#line 1 \"", 0), std::string::npos) << "GLSL rejects file names in #line";
+    fs::remove_all(dir);
+}
+
+TEST(ShaderSource, MissingIncludeAndCycleAreLocated) {
+    const fs::path dir = scratchDir("missing");
+    write(dir / "main.comp", "#version 450 core\n\n#include \"nope.glsl\"\n");
+    try {
+        assembleShader(dir / "main.comp");
+        FAIL() << "expected ShaderError";
+    } catch (const ShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("main.comp:3: error: cannot find included file \"nope.glsl\""),
+                  std::string::npos) << e.what();
+    }
+    write(dir / "x.glsl", "#include \"y.glsl\"\n");
+    write(dir / "y.glsl", "#include \"x.glsl\"\n");
+    write(dir / "cycle.comp", "#version 450 core\n#include \"x.glsl\"\n");
+    EXPECT_THROW(assembleShader(dir / "cycle.comp"), ShaderError);
+    fs::remove_all(dir);
+}
+
+TEST(ShaderSource, MapsMesaAndNvidiaLocations) {
+    const std::vector<fs::path> files = {"entry.comp", "inc/util.glsl"};
+    EXPECT_EQ(mapShaderLog("1:12(5): error: `x' undeclared\n", files), "inc/util.glsl:12:5: error: `x' undeclared\n");
+    EXPECT_EQ(mapShaderLog("0(7) : error C1008: bad\n", files), "entry.comp:7 : error C1008: bad\n");
+}
+
+class ShaderCompileTest : public test::GlTest {};
+
+TEST_F(ShaderCompileTest, CompileErrorNamesTheIncludedFileAndLine) {
+    const fs::path dir = scratchDir("compile");
+    write(dir / "inc" / "broken.glsl", "// line 1\nfloat ok() { return 1.0; }\nfloat bad() { return undefinedThing; }\n");
+    write(dir / "main.comp",
+          "#version 450 core\nlayout(local_size_x = 1) in;\n#include \"inc/broken.glsl\"\nvoid main() { ok(); }\n");
+    try {
+        ShaderProgram::computeFromFile(dir / "main.comp");
+        FAIL() << "expected ShaderError";
+    } catch (const ShaderError& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("broken.glsl:3:"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("undefinedThing"), std::string::npos) << msg;
+    }
+    // An error in the entry file itself, after the include, keeps the entry's own numbering.
+    write(dir / "main2.comp",
+          "#version 450 core\nlayout(local_size_x = 1) in;\n#include \"inc/broken.glsl\"\nvoid main() { nothere(); }\n");
+    write(dir / "inc" / "broken.glsl", "float ok() { return 1.0; }\n");
+    try {
+        ShaderProgram::computeFromFile(dir / "main2.comp");
+        FAIL() << "expected ShaderError";
+    } catch (const ShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("main2.comp:4:"), std::string::npos) << e.what();
+    }
+    fs::remove_all(dir);
+}
+
+TEST_F(ShaderCompileTest, ShippedEntryPointsCompile) {
+    EXPECT_NO_THROW(ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag"));
+    EXPECT_NO_THROW(ShaderProgram::compute("entry/trace.comp", {{"LOCAL_SIZE_X", "8"}, {"LOCAL_SIZE_Y", "8"}}));
+}
