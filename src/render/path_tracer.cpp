@@ -1,7 +1,6 @@
 #include "render/path_tracer.h"
 
 #include "shaders/include/camera.glsl"
-#include "shaders/include/scene_types.glsl"
 #include "shaders/include/sky.glsl"
 
 #include <glad/gl.h>
@@ -12,15 +11,6 @@
 
 namespace raylab {
 namespace {
-
-template <typename T>
-void uploadBuffer(GLuint buffer, const std::vector<T>& data) {
-    // An empty SSBO binding is not allowed; keep at least one record.
-    const size_t bytes = std::max<size_t>(data.size(), 1) * sizeof(T);
-    std::vector<T> padded = data;
-    padded.resize(std::max<size_t>(data.size(), 1));
-    glNamedBufferData(buffer, static_cast<GLsizeiptr>(bytes), padded.data(), GL_STATIC_DRAW);
-}
 
 int skyType(Sky::Type t) { return t == Sky::Type::Constant ? glsl::SKY_CONSTANT : glsl::SKY_GRADIENT; }
 
@@ -38,8 +28,6 @@ PathTracer::PathTracer(TracerOptions options) : options_(options) {
     }
     glCreateFramebuffers(1, &framebuffer_);
     glCreateVertexArrays(1, &vertexArray_);
-    glCreateBuffers(1, &sphereBuffer_);
-    glCreateBuffers(1, &materialBuffer_);
     glCreateBuffers(1, &counterBuffer_);
     const GLuint zeros[2] = {0, 0};
     glNamedBufferStorage(counterBuffer_, sizeof(zeros), zeros,
@@ -50,8 +38,6 @@ PathTracer::~PathTracer() {
     glDeleteTextures(1, &accumTexture_);
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
-    glDeleteBuffers(1, &sphereBuffer_);
-    glDeleteBuffers(1, &materialBuffer_);
     glDeleteBuffers(1, &counterBuffer_);
 }
 
@@ -77,14 +63,7 @@ void PathTracer::setScene(const Scene& scene) {
     allocateImage(r.width, r.height);
     defaultRpp_ = r.rpp;
 
-    std::vector<glsl::GpuSphere> spheres;
-    for (const Sphere& s : scene.spheres)
-        spheres.push_back({glm::vec4(s.center, s.radius), glm::uvec4(unsigned(s.material), 0, 0, 0)});
-    std::vector<glsl::GpuMaterial> materials;
-    for (const Material& m : scene.materials)
-        materials.push_back({glm::vec4(m.albedo, 0.0f), glm::vec4(m.radiance(), 0.0f)});
-    uploadBuffer(sphereBuffer_, spheres);
-    uploadBuffer(materialBuffer_, materials);
+    gpuScene_.upload(scene);
 
     const Camera& c = scene.camera;
     const auto cam = glsl::cameraBasis(c.position, c.lookAt, c.up, c.fovY,
@@ -94,7 +73,7 @@ void PathTracer::setScene(const Scene& scene) {
     p.set("uSeed", unsigned(r.seed));
     p.set("uMaxBounces", r.maxBounces);
     p.set("uRrDepth", r.rrDepth);
-    p.set("uSphereCount", int(spheres.size()));
+    p.set("uSphereCount", gpuScene_.sphereCount());
     p.set("uCamOrigin", cam.origin);
     p.set("uCamRight", cam.right);
     p.set("uCamUp", cam.up);
@@ -127,8 +106,7 @@ void PathTracer::renderPass(int rpp) {
     const GLuint zeros[2] = {0, 0};
     glNamedBufferSubData(counterBuffer_, 0, sizeof(zeros), zeros);
     glBindImageTexture(0, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, sphereBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, materialBuffer_);
+    gpuScene_.bind();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, counterBuffer_);
     glUseProgram(program_.id());
     if (options_.entry == TracerEntry::Fragment) {

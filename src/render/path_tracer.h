@@ -3,6 +3,7 @@
 // One pass adds rpp samples per pixel to a running mean (float32 RGBA). Needs a current GL 4.5
 // context (see gl/gl_context.h). Both programs, the headless CLI and the viewer, drive this class.
 #include "gl/shader_program.h"
+#include "render/gpu_scene.h"
 #include "render/image.h"
 #include "scene/scene.h"
 
@@ -52,11 +53,10 @@ private:
 
     TracerOptions options_;
     ShaderProgram program_;
+    GpuScene gpuScene_;
     unsigned accumTexture_ = 0;
     unsigned framebuffer_ = 0;
     unsigned vertexArray_ = 0;
-    unsigned sphereBuffer_ = 0;
-    unsigned materialBuffer_ = 0;
     unsigned counterBuffer_ = 0;
     int width_ = 0;
     int height_ = 0;

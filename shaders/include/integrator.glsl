@@ -1,0 +1,47 @@
+// The estimator of the rendering equation for one camera path. GLSL only.
+#ifndef RAYLAB_INTEGRATOR_GLSL
+#define RAYLAB_INTEGRATOR_GLSL
+#include "compat.glsl"
+#include "random.glsl"
+#include "frame.glsl"
+#include "sampling.glsl"
+#include "ray.glsl"
+#include "sky.glsl"
+#include "scene_data.glsl"
+#include "scene_intersect.glsl"
+
+// Radiance along one camera path (Kajiya 1986). beta is the path throughput:
+// the product of f·cosθ/pdf over the bounces so far.
+vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
+    SkyParams sky = SkyParams(uSkyType, uSkyColor, uSkyTop, uSkyBottom);
+    vec3 radiance = vec3(0.0f);
+    vec3 beta = vec3(1.0f);
+    for (int bounce = 0;; ++bounce) {
+        Hit hit;
+        ++rays;
+        if (!intersectScene(ray, hit)) {
+            radiance += beta * skyRadiance(sky, normalize(ray.dir));
+            break;
+        }
+        GpuMaterial m = materials[hit.material];
+        radiance += beta * m.emission.rgb;
+        if (bounce >= uMaxBounces) break;
+
+        // Lambert, cosine-weighted: f·cosθ/pdf = (ρ/π)·cosθ / (cosθ/π) = ρ.
+        vec3 n = dot(hit.normal, ray.dir) < 0.0f ? hit.normal : -hit.normal;
+        vec3 dir = frameToWorld(frameFromNormal(n), sampleCosineHemisphere(rngNext2(rng)));
+        beta *= m.albedo.rgb;
+
+        // Russian roulette (pbrt-v4 §14.1.4 style): survive with q = max throughput, at most
+        // 0.95, and divide by q so the estimate stays unbiased.
+        if (bounce + 1 >= uRrDepth) {
+            float q = min(max(beta.r, max(beta.g, beta.b)), 0.95f);
+            if (rngNextFloat(rng) >= q) break;
+            beta /= q;
+        }
+        ray = Ray(offsetRayOrigin(hit.position, n, hit.error), dir);
+    }
+    return radiance;
+}
+
+#endif

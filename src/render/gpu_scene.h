@@ -1,0 +1,26 @@
+#pragma once
+// The scene's data on the GPU: std430 buffers of geometry and materials, bound at the points
+// shaders/include/scene_data.glsl declares. Needs a current GL context.
+#include "scene/scene.h"
+
+namespace raylab {
+
+class GpuScene {
+public:
+    GpuScene();
+    ~GpuScene();
+    GpuScene(const GpuScene&) = delete;
+    GpuScene& operator=(const GpuScene&) = delete;
+
+    void upload(const Scene& scene);
+    void bind() const;   // binds every buffer to its binding point
+
+    int sphereCount() const { return sphereCount_; }
+
+private:
+    unsigned sphereBuffer_ = 0;
+    unsigned materialBuffer_ = 0;
+    int sphereCount_ = 0;
+};
+
+} // namespace raylab
