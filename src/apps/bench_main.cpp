@@ -1,6 +1,7 @@
 // raylab-bench: throughput of the path tracer (Mpaths/s, Mrays/s) on a scene at a fixed size,
 // for each tracer entry point, median of several runs; appends the figures, the machine and the
 // command to a Markdown results file. A benchmark, not a test: nothing here passes or fails.
+#include "bench/convergence_suite.h"
 #include "gl/gl_context.h"
 #include "render/path_tracer.h"
 #include "render/progressive_render.h"
@@ -63,11 +64,39 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--gl", gl, "OpenGL context: auto, osmesa or egl")
         ->check(CLI::IsMember({"auto", "osmesa", "egl"}))->capture_default_str();
+    ConvergenceOptions conv;
+    CLI::App* convergence = app.add_subcommand(
+        "convergence",
+        "Run time against error: renders every scene of a suite with checkpoints at 1, 2, 4 ... spp,\n"
+        "compares each with its reference (analytic, or a cached long render with per-pixel variance),\n"
+        "and, when blender is installed, runs Cycles on the exported scene for the same curves.\n"
+        "Writes convergence.csv, summary.md and PNG plots (gnuplot) to OUT/MODE.");
+    convergence->add_option("--suite", conv.suiteFile, "Suite file")->capture_default_str();
+    convergence->add_option("--mode", conv.mode, "quick (minutes) or full (about an hour)")
+        ->check(CLI::IsMember({"quick", "full"}))->capture_default_str();
+    convergence->add_option("--out", conv.outputDir, "Output directory (a folder per mode inside)")
+        ->capture_default_str();
+    convergence->add_option("--references", conv.referenceDir, "Reference cache directory")->capture_default_str();
+    convergence->add_option("--peer", conv.peer, "Cycles comparison: auto (when blender is installed), on, off")
+        ->check(CLI::IsMember({"auto", "on", "off"}))->capture_default_str();
+    convergence->add_option("--only", conv.only, "Run only the suite scene with this name");
+    convergence->add_option("--threads", conv.threads, "Cycles render threads")->capture_default_str();
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? 0 : 2;
+    }
+    if (*convergence) {
+        for (int i = 0; i < argc; ++i) conv.commandLine += (i ? " " : "") + std::string(argv[i]);
+        try {
+            auto context = createHeadlessContext(parseGlBackend(gl));
+            std::cerr << "GL: " << context->description() << "\n";
+            return runConvergenceSuite(conv);
+        } catch (const std::exception& e) {
+            std::cerr << "raylab-bench: error: " << e.what() << "\n";
+            return 3;
+        }
     }
 
     Scene scene;

@@ -1,6 +1,7 @@
 // raylab-render: renders a scene file headlessly to EXR (linear) or PNG (display-ready).
 // Exit status: 0 done, 1 bad input (scene file, output path), 2 bad command line,
 // 3 no usable OpenGL or a shader failure, 130 interrupted by SIGINT (partial image written).
+#include "bench/blender_export.h"
 #include "gl/gl_context.h"
 #include "io/image_io.h"
 #include "render/path_tracer.h"
@@ -76,6 +77,11 @@ int main(int argc, char** argv) {
     app.add_option("--tracer", entry, "Tracer entry point: fragment (fastest on llvmpipe) or compute")
         ->check(CLI::IsMember({"fragment", "compute"}));
     app.add_flag("-q,--quiet", quiet, "No progress line");
+    std::string blenderOut;
+    app.add_option("--export-blender", blenderOut,
+                   "Write a Blender 3.4 Python script that rebuilds the scene for Cycles, then exit "
+                   "without rendering (open it with: blender --python FILE.py)")
+        ->type_name("FILE.py");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -95,6 +101,11 @@ int main(int argc, char** argv) {
     std::filesystem::path outPath;
     try {
         scene = loadScene(scenePath, overrides);
+        if (!blenderOut.empty()) {
+            writeBlenderScript(scene, blenderOut);
+            std::cout << std::filesystem::absolute(blenderOut).string() << "\n";
+            return 0;
+        }
         outPath = output.empty() ? std::filesystem::path(scene.sourcePath.stem().string() + ".png")
                                  : std::filesystem::path(output);
         checkWritable(outPath);

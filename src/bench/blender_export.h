@@ -1,0 +1,21 @@
+#pragma once
+// Writes a Blender (3.4, Cycles) Python script that rebuilds a raylab scene with matched settings:
+// Lambert → Diffuse BSDF, emission → Emission, constant / gradient sky → World, the same pinhole
+// camera, box pixel filter, bounces, no denoising, no clamping, no adaptive sampling.
+//   blender --python scene.py                     opens the scene in Blender
+//   blender -b --factory-startup --python scene.py -- --samples 64 --output out.exr --threads 2
+// renders headless and prints "RAYLAB_RENDER_SECONDS <s>" (the time of the render call alone).
+// raylab is y-up, Blender z-up: (x, y, z) → (x, −z, y), a rotation, so handedness is kept.
+#include "scene/scene.h"
+
+#include <filesystem>
+#include <string>
+
+namespace raylab {
+
+std::string blenderScript(const Scene& scene);
+
+// Writes blenderScript(scene) atomically; throws std::runtime_error naming the path on failure.
+void writeBlenderScript(const Scene& scene, const std::filesystem::path& path);
+
+} // namespace raylab

@@ -1,0 +1,62 @@
+#include "bench/convergence.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace raylab {
+
+std::vector<Checkpoint> runConvergence(PathTracer& tracer, int rpp, std::uint64_t maxSpp,
+                                       const Image& reference) {
+    using Clock = std::chrono::steady_clock;
+    tracer.reset();
+    std::vector<Checkpoint> curve;
+    double seconds = 0.0;
+    std::uint64_t next = 1;
+    while (tracer.samplesPerPixel() < maxSpp) {
+        const std::uint64_t target = std::min(next, maxSpp);
+        const auto start = Clock::now();
+        while (tracer.samplesPerPixel() < target)
+            tracer.renderPass(int(std::min<std::uint64_t>(std::uint64_t(rpp), target - tracer.samplesPerPixel())));
+        seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        curve.push_back({tracer.samplesPerPixel(), seconds, imageError(tracer.readImage(), reference)});
+        next *= 2;
+    }
+    return curve;
+}
+
+double timeToReach(const std::vector<Checkpoint>& curve, double targetRmse) {
+    for (size_t i = 0; i < curve.size(); ++i) {
+        if (curve[i].error.rmse > targetRmse) continue;
+        if (i == 0) return curve[0].seconds;   // reached by the first checkpoint already
+        const Checkpoint& a = curve[i - 1];
+        const Checkpoint& b = curve[i];
+        const double la = std::log(a.error.rmse), lb = std::log(b.error.rmse);
+        const double f = la == lb ? 1.0 : (la - std::log(targetRmse)) / (la - lb);
+        return std::exp(std::log(a.seconds) + f * (std::log(b.seconds) - std::log(a.seconds)));
+    }
+    return -1.0;
+}
+
+double efficiency(const Checkpoint& c) {
+    return c.error.mse > 0.0 && c.seconds > 0.0 ? 1.0 / (c.error.mse * c.seconds) : 0.0;
+}
+
+double convergenceSlope(const std::vector<Checkpoint>& curve) {
+    double mx = 0, my = 0;
+    for (const Checkpoint& c : curve) {
+        mx += std::log(double(c.spp));
+        my += std::log(c.error.rmse);
+    }
+    mx /= double(curve.size());
+    my /= double(curve.size());
+    double sxy = 0, sxx = 0;
+    for (const Checkpoint& c : curve) {
+        const double x = std::log(double(c.spp)) - mx;
+        sxy += x * (std::log(c.error.rmse) - my);
+        sxx += x * x;
+    }
+    return sxx > 0 ? sxy / sxx : 0.0;
+}
+
+} // namespace raylab

@@ -1,0 +1,32 @@
+#pragma once
+// Run time against error: one progressive render read back at checkpoints (1, 2, 4, … spp), each
+// compared with a reference. Time counts tracing only (readback and comparison excluded).
+#include "bench/error_metrics.h"
+#include "render/path_tracer.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace raylab {
+
+struct Checkpoint {
+    std::uint64_t spp = 0;
+    double seconds = 0.0;   // tracing time up to this checkpoint
+    ImageError error;
+};
+
+// Checkpoints at powers of two up to maxSpp (and maxSpp itself). The tracer must hold the scene.
+std::vector<Checkpoint> runConvergence(PathTracer& tracer, int rpp, std::uint64_t maxSpp,
+                                       const Image& reference);
+
+// Seconds until the RMSE first falls to target, interpolated log–log between checkpoints;
+// negative when the curve never gets there.
+double timeToReach(const std::vector<Checkpoint>& curve, double targetRmse);
+
+// 1 / (MSE × seconds) at a checkpoint (Veach; pbrt 3rd ed. §13.7): higher is better.
+double efficiency(const Checkpoint& c);
+
+// Least-squares slope of log RMSE against log spp (−0.5 for an unbiased estimator).
+double convergenceSlope(const std::vector<Checkpoint>& curve);
+
+} // namespace raylab

@@ -1,0 +1,313 @@
+#include "bench/convergence_suite.h"
+
+#include "bench/blender_export.h"
+#include "bench/convergence.h"
+#include "bench/cycles_peer.h"
+#include "bench/reference.h"
+#include "render/path_tracer.h"
+#include "scene/scene_loader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace raylab {
+namespace fs = std::filesystem;
+namespace {
+
+struct ModeSettings {
+    int width = 96, height = 54, maxSpp = 512, seeds = 1, referenceSpp = 4096, referenceBatches = 4,
+        peerMaxSpp = 64;
+};
+
+struct SuiteScene {
+    std::string name;
+    fs::path scene;
+    bool analytic = false;
+    glm::vec3 analyticValue{0.0f};
+    bool peer = false;
+};
+
+struct Curve {
+    std::string renderer;   // "raylab" or "cycles"
+    int seed = 0;
+    std::vector<Checkpoint> points;
+};
+
+// Relative error levels for "time to reach": RMSE as a fraction of the reference's mean.
+constexpr double kLevels[] = {0.10, 0.05, 0.02};
+
+std::string fmt(const char* f, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, v);
+    return buf;
+}
+
+std::string cpuModel() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    return "unknown CPU";
+}
+
+void writePlots(const fs::path& dir, const std::string& scene, bool withPeer) {
+    const fs::path script = dir / (scene + ".gp");
+    std::ofstream gp(script);
+    gp << "set terminal pngcairo size 900,380 font ',10'\n"
+       << "set output '" << (dir / (scene + ".png")).string() << "'\n"
+       << "set datafile separator ','\nset logscale xy\nset grid\nset key bottom left\n"
+       << "set multiplot layout 1,2 title '" << scene << ": RMSE against time and samples'\n"
+       << "set xlabel 'seconds'\nset ylabel 'RMSE'\n"
+       << "plot '" << (dir / "convergence.csv").string() << "' using (strcol(1) eq '" << scene
+       << "' && strcol(2) eq 'raylab' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab'";
+    if (withPeer)
+        gp << ", '' using (strcol(1) eq '" << scene << "' && strcol(2) eq 'cycles' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'Cycles'";
+    gp << "\nset xlabel 'samples per pixel'\n"
+       << "plot '" << (dir / "convergence.csv").string() << "' using (strcol(1) eq '" << scene
+       << "' && strcol(2) eq 'raylab' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab'";
+    if (withPeer)
+        gp << ", '' using (strcol(1) eq '" << scene << "' && strcol(2) eq 'cycles' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'Cycles'";
+    gp << "\nunset multiplot\n";
+    gp.close();
+    if (std::system(("gnuplot '" + script.string() + "' 2>/dev/null").c_str()) != 0)
+        std::cerr << "raylab-bench: gnuplot failed or is missing (apt-get install gnuplot-nox); no plot for "
+                  << scene << "\n";
+}
+
+} // namespace
+
+int runConvergenceSuite(const ConvergenceOptions& o) {
+    // --- the suite -------------------------------------------------------------------------------
+    ModeSettings mode;
+    std::vector<SuiteScene> scenes;
+    try {
+        std::ifstream in(o.suiteFile);
+        if (!in) throw std::runtime_error("cannot read");
+        const nlohmann::json j = nlohmann::json::parse(in, nullptr, true, true);
+        const auto& m = j.at("modes").at(o.mode);
+        mode = {m.at("width"), m.at("height"), m.at("max_spp"), m.at("seeds"), m.at("reference_spp"),
+                m.at("reference_batches"), m.at("peer_max_spp")};
+        for (const auto& s : j.at("scenes")) {
+            SuiteScene e;
+            e.name = s.at("name");
+            e.scene = s.at("scene").get<std::string>();
+            if (s.contains("analytic")) {
+                e.analytic = true;
+                e.analyticValue = glm::vec3(s.at("analytic").get<float>());
+            }
+            e.peer = s.value("peer", false);
+            if (o.only.empty() || o.only == e.name) scenes.push_back(e);
+        }
+    } catch (const std::exception& e) {
+        std::cerr << o.suiteFile.string() << ": error: " << e.what() << "\n";
+        return 1;
+    }
+    if (scenes.empty()) {
+        std::cerr << o.suiteFile.string() << ": error: no scene named '" << o.only << "'\n";
+        return 1;
+    }
+    std::string peerWhy;
+    const bool peerWanted = o.peer != "off";
+    const bool peerReady = peerWanted && blenderAvailable(&peerWhy);
+    if (o.peer == "on" && !peerReady) {
+        std::cerr << "raylab-bench: error: --peer on but " << peerWhy << "\n";
+        return 1;
+    }
+
+    const fs::path outDir = o.outputDir / o.mode;
+    fs::create_directories(outDir);
+    std::ofstream csv(outDir / "convergence.csv");
+    csv << "scene,renderer,seed,spp,seconds,mse,rmse,relmse\n";
+    std::ostringstream summary;
+    summary << "| scene | renderer | reference | spp | seconds | RMSE | relMSE | slope | efficiency 1/(MSE·s)";
+    for (double l : kLevels) summary << " | s to RMSE ≤ " << int(l * 100) << "% of mean";
+    summary << " |\n|---|---|---|---|---|---|---|---|---";
+    for (size_t i = 0; i < std::size(kLevels); ++i) summary << "|---";
+    summary << "|\n";
+    std::ostringstream ratios;
+
+    for (const SuiteScene& s : scenes) {
+        std::cerr << "== " << s.name << " (" << s.scene.string() << ")\n";
+        const std::vector<std::string> size = {"render.width=" + std::to_string(mode.width),
+                                               "render.height=" + std::to_string(mode.height),
+                                               "render.time=0"};
+        Scene scene;
+        try {
+            scene = loadScene(s.scene, size);
+        } catch (const std::exception& e) {
+            std::cerr << e.what() << "\n";
+            return 1;
+        }
+        std::vector<Curve> curves;
+        Reference reference;
+        double startupSeconds = 0.0;
+        try {
+            const auto startupBegin = std::chrono::steady_clock::now();
+            PathTracer tracer;
+            tracer.setScene(scene);
+            tracer.renderPass(1);   // the first pass pays for llvmpipe's JIT
+            startupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - startupBegin).count();
+            if (s.analytic) {
+                reference = analyticReference(mode.width, mode.height, s.analyticValue);
+            } else {
+                const std::string key = "raylab " RAYLAB_VERSION " " + fileHash(s.scene) + " " +
+                                        std::to_string(mode.width) + "x" + std::to_string(mode.height) + " " +
+                                        std::to_string(mode.referenceSpp) + "x" + std::to_string(mode.referenceBatches);
+                const std::string command = "raylab-bench convergence --mode " + o.mode + " --only " + s.name;
+                reference = cachedReference(
+                    o.referenceDir / (s.name + "_" + std::to_string(mode.width) + "x" + std::to_string(mode.height)),
+                    key, mode.referenceBatches,
+                    [&](int k) {
+                        Scene batch = scene;
+                        batch.render.seed = 1000u + unsigned(k);
+                        batch.render.spp = mode.referenceSpp;
+                        batch.render.rpp = std::max(batch.render.rpp, 16);
+                        tracer.setScene(batch);
+                        while (tracer.samplesPerPixel() < std::uint64_t(mode.referenceSpp)) tracer.renderPass();
+                        std::cerr << "   reference batch " << k + 1 << "/" << mode.referenceBatches << "\n";
+                        return tracer.readImage();
+                    },
+                    "mean of " + std::to_string(mode.referenceBatches) + " raylab renders × " +
+                        std::to_string(mode.referenceSpp) + " spp",
+                    command);
+            }
+            for (int seed = 0; seed < mode.seeds; ++seed) {
+                Scene run = scene;
+                run.render.seed = unsigned(seed + 1);
+                tracer.setScene(run);
+                tracer.renderPass(1);   // warm-up: shader JIT stays out of the curve
+                curves.push_back({"raylab", seed + 1, runConvergence(tracer, 1, std::uint64_t(mode.maxSpp), reference.mean)});
+            }
+        } catch (const std::exception& e) {
+            std::cerr << "raylab-bench: error: " << e.what() << "\n";
+            return 3;
+        }
+
+        // Cycles: one Blender run per sample count, against Cycles' own long render (the two
+        // renderers need not agree to the last bit: spheres are tessellated in Cycles).
+        Reference peerReference;
+        const bool runPeer = s.peer && peerReady;
+        if (runPeer) {
+            try {
+                const fs::path script = outDir / (s.name + "_blender.py");
+                writeBlenderScript(scene, script);
+                const fs::path work = outDir / "cycles_work";
+                const std::string key = "cycles " + fileHash(s.scene) + " " + std::to_string(mode.width) + "x" +
+                                        std::to_string(mode.height) + " " + std::to_string(mode.referenceSpp) + "x" +
+                                        std::to_string(mode.referenceBatches) + " " + fileHash(script);
+                peerReference = cachedReference(
+                    o.referenceDir / (s.name + "_cycles_" + std::to_string(mode.width) + "x" + std::to_string(mode.height)),
+                    key, mode.referenceBatches,
+                    [&](int k) {
+                        std::cerr << "   Cycles reference batch " << k + 1 << "/" << mode.referenceBatches << "\n";
+                        return runCycles(script, mode.referenceSpp, o.threads, 1000 + k, work).image;
+                    },
+                    "mean of " + std::to_string(mode.referenceBatches) + " Cycles renders × " +
+                        std::to_string(mode.referenceSpp) + " spp",
+                    "raylab-bench convergence --mode " + o.mode + " --only " + s.name + " --peer on");
+                Curve c{"cycles", 1, {}};
+                for (int spp = 1; spp <= mode.peerMaxSpp; spp *= 2) {
+                    const CyclesRun r = runCycles(script, spp, o.threads, 1, work);
+                    c.points.push_back({std::uint64_t(spp), r.seconds, imageError(r.image, peerReference.mean)});
+                    std::cerr << "   Cycles " << spp << " spp: " << r.seconds << " s\n";
+                }
+                curves.push_back(c);
+                const ImageError between = imageError(peerReference.mean, reference.mean);
+                ratios << "- " << s.name << ": RMSE between the raylab and Cycles references "
+                       << fmt("%.4g", between.rmse) << " (reference mean " << fmt("%.4g", imageMean(reference.mean))
+                       << "; tessellated spheres and differing estimators explain small offsets).\n";
+            } catch (const std::exception& e) {
+                std::cerr << "raylab-bench: Cycles: " << e.what() << "\n";
+                if (o.peer == "on") return 3;
+            }
+        }
+
+        const double refMean = imageMean(reference.mean);
+        for (const Curve& c : curves) {
+            for (const Checkpoint& p : c.points)
+                csv << s.name << "," << c.renderer << "," << c.seed << "," << p.spp << "," << fmt("%.6g", p.seconds)
+                    << "," << fmt("%.6g", p.error.mse) << "," << fmt("%.6g", p.error.rmse) << ","
+                    << fmt("%.6g", p.error.relMse) << "\n";
+            if (c.seed != 1) continue;   // the table shows seed 1; the CSV has every seed
+            const Checkpoint& last = c.points.back();
+            const bool exact = last.error.rmse < 1e-7;
+            summary << "| " << s.name << " | " << c.renderer << " | "
+                    << (c.renderer == "cycles" ? peerReference.description : reference.description) << " | "
+                    << last.spp << " | " << fmt("%.3f", last.seconds) << " | " << fmt("%.3g", last.error.rmse) << " | "
+                    << fmt("%.3g", last.error.relMse) << " | "
+                    << (exact ? std::string("exact") : fmt("%.2f", convergenceSlope(c.points))) << " | "
+                    << (exact ? std::string("∞ (zero variance)") : fmt("%.4g", efficiency(last)));
+            for (double l : kLevels) {
+                const double t = exact ? c.points.front().seconds : timeToReach(c.points, l * refMean);
+                summary << " | " << (t < 0 ? std::string("not reached") : fmt("%.3g", t));
+            }
+            summary << " |\n";
+        }
+        if (runPeer && curves.size() >= 2 && curves.back().renderer == "cycles") {
+            // Cycles' time per run = fixed cost (scene sync, BVH build) + per-sample cost: a
+            // least-squares line through (spp, seconds) separates them, so ratios can be given
+            // both for whole runs and for the sampling work alone.
+            const auto& pts = curves.back().points;
+            double mx = 0, my = 0, sxy = 0, sxx = 0;
+            for (const Checkpoint& p : pts) {
+                mx += double(p.spp);
+                my += p.seconds;
+            }
+            mx /= double(pts.size());
+            my /= double(pts.size());
+            for (const Checkpoint& p : pts) {
+                sxy += (double(p.spp) - mx) * (p.seconds - my);
+                sxx += (double(p.spp) - mx) * (double(p.spp) - mx);
+            }
+            const double perSample = sxx > 0 ? sxy / sxx : 0.0;
+            const double fixed = my - perSample * mx;
+            ratios << "- " << s.name << ": Cycles time per run ≈ " << fmt("%.3g", fixed) << " s fixed + "
+                   << fmt("%.3g", perSample * 1e3) << " ms per sample per pixel; raylab "
+                   << fmt("%.3g", curves.front().points.back().seconds * 1e3 / double(curves.front().points.back().spp))
+                   << " ms per sample per pixel after a one-off startup of " << fmt("%.3g", startupSeconds)
+                   << " s (scene load and shader compile)\n";
+            for (double l : kLevels) {
+                const double tr = timeToReach(curves.front().points, l * refMean);
+                const double tc = timeToReach(curves.back().points, l * imageMean(peerReference.mean));
+                if (tr > 0 && tc > 0) {
+                    const double tcSampling = std::max(tc - fixed, 1e-9);
+                    ratios << "- " << s.name << ", RMSE ≤ " << int(l * 100) << "% of the mean: Cycles "
+                           << fmt("%.3g", tc) << " s (" << fmt("%.3g", tcSampling) << " s of sampling), raylab "
+                           << fmt("%.3g", tr) << " s: Cycles/raylab " << fmt("%.2f", tc / tr) << "× whole runs, "
+                           << fmt("%.2f", tcSampling / tr) << "× sampling only\n";
+                }
+            }
+        }
+        csv.flush();
+        if (curves.front().points.back().error.rmse > 0.0) writePlots(outDir, s.name, runPeer);
+    }
+
+    const std::time_t now = std::time(nullptr);
+    char date[32];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    std::ofstream md(outDir / "summary.md");
+    md << "# Run time against error — " << o.mode << " mode\n\n"
+       << "- date: " << date << "\n- machine: " << cpuModel() << ", " << std::thread::hardware_concurrency()
+       << " hardware threads\n- command: `" << o.commandLine << "`\n- image: " << mode.width << "×" << mode.height
+       << ", raylab checkpoints at 1, 2, 4 … " << mode.maxSpp << " spp, rpp 1, time = tracing only; Cycles "
+       << (peerReady ? "3.4 (CPU, " + std::to_string(o.threads) + " threads, no denoising), one Blender run per sample count, "
+                       "time = its render call"
+                     : "not run: " + (peerWanted ? peerWhy : std::string("--peer off")))
+       << "\n- slope: log–log slope of RMSE against spp (−0.5 when unbiased); efficiency at the last checkpoint\n\n"
+       << summary.str();
+    if (!ratios.str().empty()) md << "\n## raylab and Cycles\n\n" << ratios.str();
+    md << "\nPlots: one PNG per scene beside this file; raw data: convergence.csv.\n";
+    md.close();
+    std::cerr << "wrote " << (outDir / "summary.md").string() << "\n";
+    std::cout << std::ifstream(outDir / "summary.md").rdbuf();
+    return 0;
+}
+
+} // namespace raylab

@@ -1,0 +1,127 @@
+// The pieces of the run-time-against-error benchmark: metrics, interpolation, reference cache,
+// Blender export, and the convergence subcommand end to end on a tiny suite.
+#include "bench/blender_export.h"
+#include "bench/convergence.h"
+#include "bench/error_metrics.h"
+#include "bench/reference.h"
+#include "scene/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace raylab;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch() {
+    fs::path d = fs::temp_directory_path() / ("raylab_bench_unit_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+}
+
+Image constant(int w, int h, float v) {
+    Image im(w, h);
+    for (size_t i = 0; i < im.rgba.size(); ++i) im.rgba[i] = i % 4 == 3 ? 1.0f : v;
+    return im;
+}
+
+} // namespace
+
+TEST(BenchErrorMetrics, MseRmseAndRelMse) {
+    const Image ref = constant(4, 2, 1.0f);
+    const Image img = constant(4, 2, 1.5f);
+    const ImageError e = imageError(img, ref);
+    EXPECT_DOUBLE_EQ(e.mse, 0.25);
+    EXPECT_DOUBLE_EQ(e.rmse, 0.5);
+    EXPECT_NEAR(e.relMse, 0.25 / 1.01, 1e-12);   // (I−R)² / (R² + 0.01)
+    EXPECT_DOUBLE_EQ(imageMean(img), 1.5);
+    EXPECT_THROW(imageError(constant(2, 2, 0.0f), ref), std::invalid_argument);
+}
+
+TEST(BenchConvergence, TimeToReachInterpolatesLogLogAndSlopeIsMinusHalf) {
+    // RMSE = 1/sqrt(spp), time = spp ms: RMSE 0.1 is reached at 100 spp = 0.1 s exactly on the
+    // log–log line between the checkpoints 64 and 128.
+    std::vector<Checkpoint> curve;
+    for (std::uint64_t spp = 1; spp <= 1024; spp *= 2) {
+        Checkpoint c;
+        c.spp = spp;
+        c.seconds = double(spp) * 1e-3;
+        c.error.rmse = 1.0 / std::sqrt(double(spp));
+        c.error.mse = c.error.rmse * c.error.rmse;
+        curve.push_back(c);
+    }
+    EXPECT_NEAR(timeToReach(curve, 0.1), 0.1, 1e-9);
+    EXPECT_LT(timeToReach(curve, 0.001), 0.0);   // never reached
+    EXPECT_NEAR(convergenceSlope(curve), -0.5, 1e-9);
+    EXPECT_NEAR(efficiency(curve.back()), 1.0 / (curve.back().error.mse * 1.024), 1e-9);
+}
+
+TEST(BenchReference, CachedReferenceIsReusedAndRebuiltWhenItsKeyChanges) {
+    const fs::path base = scratch() / "ref";
+    fs::remove(base.string() + ".json");
+    int calls = 0;
+    auto batch = [&](int k) {
+        ++calls;
+        return constant(3, 2, float(k));   // batches 0, 1, 2, 3: mean 1.5, sample variance 5/3
+    };
+    Reference a = cachedReference(base, "key-1", 4, batch, "desc", "cmd");
+    EXPECT_EQ(calls, 4);
+    EXPECT_FALSE(a.fromCache);
+    EXPECT_NEAR(a.mean.rgba[0], 1.5f, 1e-6f);
+    EXPECT_NEAR(a.variance.rgba[0], (5.0f / 3.0f) / 4.0f, 1e-6f);   // variance of the mean
+    Reference b = cachedReference(base, "key-1", 4, batch, "desc", "cmd");
+    EXPECT_EQ(calls, 4) << "the cache was not used";
+    EXPECT_TRUE(b.fromCache);
+    EXPECT_EQ(b.mean.rgba, a.mean.rgba);
+    EXPECT_EQ(b.command, "cmd");
+    cachedReference(base, "key-2", 4, batch, "desc", "cmd");
+    EXPECT_EQ(calls, 8) << "a changed key must rebuild the reference";
+}
+
+TEST(BenchBlenderExport, ScriptRebuildsTheSceneInBlenderCoordinatesAndIsValidPython) {
+    Scene scene = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json");
+    scene.materials[0].name = "quote\"and\\back";
+    const std::string py = blenderScript(scene);
+    // y-up (6, 3.2, 8) becomes z-up (6, -8, 3.2).
+    EXPECT_NE(py.find("camera((6, -8, 3.2), (0, -0, 0.8), (0, -0, 1), 32)"), std::string::npos) << py;
+    EXPECT_NE(py.find("sphere(\"sphere0\", (0, -0, -1000), 1000, mat"), std::string::npos);
+    EXPECT_NE(py.find("world_gradient("), std::string::npos);
+    EXPECT_NE(py.find("settings(640, 360, 8, 1)"), std::string::npos);
+    EXPECT_NE(py.find("material(\"quote\\\"and\\\\back\""), std::string::npos);
+    const fs::path file = scratch() / "scene.py";
+    writeBlenderScript(scene, file);
+    const std::string cmd = "python3 -c \"import ast,sys; ast.parse(open(sys.argv[1]).read())\" '" + file.string() + "'";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
+}
+
+TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
+    const fs::path dir = scratch();
+    {
+        std::ofstream suite(dir / "suite.json");
+        suite << R"({"modes": {"quick": {"width": 16, "height": 9, "max_spp": 64, "seeds": 2,
+                     "reference_spp": 64, "reference_batches": 2, "peer_max_spp": 2}},
+                     "scenes": [{"name": "cf", "scene": "scenes/closed_furnace.json", "analytic": 1.0}]})";
+    }
+    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
+                            "' convergence --suite '" + (dir / "suite.json").string() + "' --out '" +
+                            (dir / "out").string() + "' --references '" + (dir / "refs").string() +
+                            "' --peer off > '" + (dir / "log.txt").string() + "' 2>&1";
+    const int raw = std::system(cmd.c_str());
+    std::stringstream log, csv, md;
+    log << std::ifstream(dir / "log.txt").rdbuf();
+    ASSERT_TRUE(WIFEXITED(raw));
+    ASSERT_EQ(WEXITSTATUS(raw), 0) << log.str();
+    csv << std::ifstream(dir / "out" / "quick" / "convergence.csv").rdbuf();
+    md << std::ifstream(dir / "out" / "quick" / "summary.md").rdbuf();
+    EXPECT_NE(csv.str().find("scene,renderer,seed,spp,seconds,mse,rmse,relmse"), std::string::npos);
+    EXPECT_NE(csv.str().find("cf,raylab,2,64,"), std::string::npos) << csv.str();
+    EXPECT_NE(md.str().find("| cf | raylab | analytic [1, 1, 1] | 64 |"), std::string::npos) << md.str();
+    EXPECT_NE(md.str().find("- command: `"), std::string::npos);
+    EXPECT_NE(md.str().find("--peer off"), std::string::npos);
+}
