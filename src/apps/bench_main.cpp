@@ -2,6 +2,7 @@
 // for each tracer entry point, median of several runs; appends the figures, the machine and the
 // command to a Markdown results file. A benchmark, not a test: nothing here passes or fails.
 #include "bench/convergence_suite.h"
+#include "bench/scaling.h"
 #include "gl/gl_context.h"
 #include "render/path_tracer.h"
 #include "render/progressive_render.h"
@@ -81,11 +82,30 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"auto", "on", "off"}))->capture_default_str();
     convergence->add_option("--only", conv.only, "Run only the suite scene with this name");
     convergence->add_option("--threads", conv.threads, "Cycles render threads")->capture_default_str();
+    ScalingOptions scaling;
+    CLI::App* scalingCmd = app.add_subcommand(
+        "scaling", "Cost growth: ms per sample per pixel against sphere count and resolution, and startup.\n"
+                   "Writes scaling.csv and scaling.md to --out.");
+    scalingCmd->add_option("--out", scaling.outputDir, "Output directory")->capture_default_str();
+    scalingCmd->add_option("--spp", scaling.spp, "Passes of 1 rpp per measurement")
+        ->check(CLI::PositiveNumber)->capture_default_str();
+    scalingCmd->add_option("--repeat", scaling.repeat, "Runs per point; the median is reported")
+        ->check(CLI::Range(1, 100))->capture_default_str();
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? 0 : 2;
+    }
+    if (*scalingCmd) {
+        for (int i = 0; i < argc; ++i) scaling.commandLine += (i ? " " : "") + std::string(argv[i]);
+        try {
+            auto context = createHeadlessContext(parseGlBackend(gl));
+            return runScaling(scaling);
+        } catch (const std::exception& e) {
+            std::cerr << "raylab-bench: error: " << e.what() << "\n";
+            return 3;
+        }
     }
     if (*convergence) {
         for (int i = 0; i < argc; ++i) conv.commandLine += (i ? " " : "") + std::string(argv[i]);

@@ -125,3 +125,18 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     EXPECT_NE(md.str().find("- command: `"), std::string::npos);
     EXPECT_NE(md.str().find("--peer off"), std::string::npos);
 }
+
+TEST(BenchScalingCli, WritesBothSeriesWithTheCommand) {
+    const fs::path dir = scratch() / "scaling";
+    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
+                            "' scaling --spp 1 --repeat 1 --out '" + dir.string() + "' > /dev/null 2>&1";
+    const int raw = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(raw));
+    ASSERT_EQ(WEXITSTATUS(raw), 0);
+    std::stringstream md, csv;
+    md << std::ifstream(dir / "scaling.md").rdbuf();
+    csv << std::ifstream(dir / "scaling.csv").rdbuf();
+    for (const char* s : {"## Against sphere count", "## Against resolution", "| 512 |", "| 1280×720 |", "scaling --spp 1"})
+        EXPECT_NE(md.str().find(s), std::string::npos) << s;
+    EXPECT_NE(csv.str().find("resolution,32,1280,720,"), std::string::npos);
+}
