@@ -25,6 +25,18 @@ void expectOrthonormal(Frame f, const char* what) {
     EXPECT_GT(glm::dot(glm::cross(f.t, f.b), f.n), 0.99f);   // right-handed
 }
 
+// Expected counts of n cosine-distributed directions in nt × nphi cells of (cosθ, φ):
+// ∫∫ cosθ/π dω over a cell = (c1² − c0²)/2 · Δφ/π.
+std::vector<double> cosineExpectedCounts(int nt, int nphi, int n) {
+    std::vector<double> expected(size_t(nt * nphi), 0.0);
+    for (int i = 0; i < nt; ++i)
+        for (int j = 0; j < nphi; ++j) {
+            const double c0 = double(i) / nt, c1 = double(i + 1) / nt;
+            expected[size_t(i * nphi + j)] = n * (c1 * c1 - c0 * c0) / 2.0 * (2.0 * M_PI / nphi) / M_PI;
+        }
+    return expected;
+}
+
 } // namespace
 
 TEST(ShaderFrame, OrthonormalAlongEveryAxisAndNearTheSeam) {
@@ -87,15 +99,11 @@ TEST(ShaderSampling, ConcentricDiskStaysInsideAndCoversUniformly) {
 }
 
 TEST(ShaderSampling, CosineHemisphereMatchesItsPdf) {
-    // χ² goodness of fit against pdf = cosθ/π over 10 × 20 cells in (cosθ, φ); expected counts by
-    // integrating the pdf over each cell: ∫∫ cosθ/π dω = (c1² − c0²)/2 · Δφ/π. α = 0.01.
+    // χ² goodness of fit against pdf = cosθ/π over 10 × 20 cells in (cosθ, φ), expected counts by
+    // integrating the pdf over each cell. α = 0.01.
     constexpr int nt = 10, nphi = 20, n = 1000000;
-    std::vector<double> observed(nt * nphi, 0.0), expected(nt * nphi, 0.0);
-    for (int i = 0; i < nt; ++i)
-        for (int j = 0; j < nphi; ++j) {
-            const double c0 = double(i) / nt, c1 = double(i + 1) / nt;
-            expected[size_t(i * nphi + j)] = n * (c1 * c1 - c0 * c0) / 2.0 * (2.0 * M_PI / nphi) / M_PI;
-        }
+    std::vector<double> observed(nt * nphi, 0.0);
+    const std::vector<double> expected = cosineExpectedCounts(nt, nphi, n);
     Rng rng = rngCreate(uvec2(4, 4), 0u, 17u);
     for (int k = 0; k < n; ++k) {
         const vec3 w = sampleCosineHemisphere(rngNext2(rng));
@@ -114,12 +122,8 @@ TEST(ShaderSampling, CosineHemisphereMatchesItsPdf) {
 TEST(ShaderSampling, ChiSquareCanFail) {
     // The test above must be able to fail: uniform hemisphere samples judged against cosθ/π.
     constexpr int nt = 10, nphi = 20, n = 100000;
-    std::vector<double> observed(nt * nphi, 0.0), expected(nt * nphi, 0.0);
-    for (int i = 0; i < nt; ++i)
-        for (int j = 0; j < nphi; ++j) {
-            const double c0 = double(i) / nt, c1 = double(i + 1) / nt;
-            expected[size_t(i * nphi + j)] = n * (c1 * c1 - c0 * c0) / nphi;
-        }
+    std::vector<double> observed(nt * nphi, 0.0);
+    const std::vector<double> expected = cosineExpectedCounts(nt, nphi, n);
     Rng rng = rngCreate(uvec2(4, 4), 0u, 17u);
     for (int k = 0; k < n; ++k) {
         const vec2 u = rngNext2(rng);
