@@ -4,6 +4,7 @@
 #include "shaders/include/bsdf.glsl"
 #include "shaders/include/frame.glsl"
 #include "shaders/include/random.glsl"
+#include "support/ggx_albedo.h"
 #include "support/statistics.h"
 
 #include <gtest/gtest.h>
@@ -246,39 +247,6 @@ TEST(ShaderBsdf, EnergyNoMaterialReturnsMoreThanItReceives) {
     }
 }
 
-namespace {
-
-// GGX single-scattering albedo with F = 1, E(μ, α) = ∫ D G2 / (4μ) dωi, by our own quadrature
-// (double precision, independent of the shader code): substituting the D·cosθh measure
-// dP = D(h) cosθh dωh, whose inverse CDF is tan²θh = α² u/(1 − u), and dωi = 4 (wo·h) dωh:
-// E = ∫∫ G2(wo, wi(h)) (wo·h) / (μ cosθh) du dφ over the unit square, midpoint rule.
-double ggxAlbedoQuadrature(double mu, double alpha, int k = 1500) {
-    auto lambda = [alpha](double cz, double sz2) {
-        const double x = alpha * alpha * sz2 / (cz * cz);
-        return 0.5 * (std::sqrt(1.0 + x) - 1.0);
-    };
-    const double wx = std::sqrt(1.0 - mu * mu), wz = mu;
-    double sum = 0.0;
-    for (int i = 0; i < k; ++i) {
-        const double u = (i + 0.5) / k;
-        const double tan2 = alpha * alpha * u / (1.0 - u);
-        const double ch = 1.0 / std::sqrt(1.0 + tan2), sh = std::sqrt(1.0 - ch * ch);
-        for (int j = 0; j < k; ++j) {
-            const double phi = (j + 0.5) / k * 2.0 * M_PI;
-            const double hx = sh * std::cos(phi), hy = sh * std::sin(phi), hz = ch;
-            const double oh = wx * hx + wz * hz;
-            if (oh <= 0.0) continue;
-            const double ix = 2 * oh * hx - wx, iy = 2 * oh * hy, iz = 2 * oh * hz - wz;
-            if (iz <= 0.0) continue;
-            const double g2 = 1.0 / (1.0 + lambda(wz, wx * wx) + lambda(iz, ix * ix + iy * iy));
-            sum += g2 * oh / (mu * ch);
-        }
-    }
-    return sum / (double(k) * k);
-}
-
-} // namespace
-
 TEST(ShaderBsdf, GgxSingleScatteringAlbedoMatchesQuadratureWithinHalfAPercent) {
     // testing.md's table, measured elsewhere, is a cross-check of the quadrature (3 digits).
     struct Row { double alpha, e1, e05, e01; };
@@ -289,7 +257,7 @@ TEST(ShaderBsdf, GgxSingleScatteringAlbedoMatchesQuadratureWithinHalfAPercent) {
         const double ref[] = {row.e1, row.e05, row.e01};
         for (int i = 0; i < 3; ++i) {
             SCOPED_TRACE("alpha " + std::to_string(row.alpha) + " mu " + std::to_string(mus[i]));
-            const double e = ggxAlbedoQuadrature(mus[i], row.alpha);
+            const double e = test::ggxAlbedoQuadrature(mus[i], row.alpha);
             EXPECT_NEAR(e, ref[i], 0.006) << "quadrature vs table";
             // Monte Carlo with the shader's sampler: mean weight of 10^6 samples (F = 1, no diffuse).
             const BsdfParams m = material(vec3(0.0f), vec3(1.0f), float(row.alpha));
