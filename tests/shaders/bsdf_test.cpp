@@ -5,6 +5,7 @@
 #include "shaders/include/frame.glsl"
 #include "shaders/include/random.glsl"
 #include "support/ggx_albedo.h"
+#include "support/lobe_grid.h"
 #include "support/statistics.h"
 
 #include <gtest/gtest.h>
@@ -32,66 +33,6 @@ BsdfParams material(vec3 albedo, vec3 f0, float alpha, float transmission = 0.0f
     return BsdfParams(albedo, f0, std::max(alpha, GGX_MIN_ALPHA), transmission, ior);
 }
 
-// Cells over the whole sphere of directions in coordinates around a centre direction r:
-// a = g / (c + g) with g = tan(θ'/2), θ' the angle from r, and φ' around r. Half of the a range
-// covers θ' < 2 atan(c), so a lobe of width ~c is resolved however narrow it is.
-struct LobeGrid {
-    vec3 r;
-    float c;
-    int na = 24, nphi = 48;
-    Frame frame;
-    LobeGrid(vec3 centre, float width) : r(centre), c(width), frame(frameFromNormal(centre)) {}
-
-    int cell(vec3 w) const {
-        const double ct = std::clamp(double(glm::dot(w, r)), -1.0, 1.0);
-        const double theta = std::acos(ct);
-        const double g = std::tan(theta / 2.0);
-        const double a = std::isinf(g) ? 1.0 : g / (c + g);
-        double phi = std::atan2(double(glm::dot(w, frame.b)), double(glm::dot(w, frame.t)));
-        if (phi < 0) phi += 2 * M_PI;
-        const int ia = std::min(int(a * na), na - 1), ip = std::min(int(phi / (2 * M_PI) * nphi), nphi - 1);
-        return ia * nphi + ip;
-    }
-    // Direction and Jacobian |dω / (da dφ)| at (a, φ).
-    vec3 direction(double a, double phi, double& jacobian) const {
-        const double g = c * a / (1.0 - a);
-        const double theta = 2.0 * std::atan(g);
-        jacobian = std::sin(theta) * 2.0 / (1.0 + g * g) * c / ((1.0 - a) * (1.0 - a));
-        const double st = std::sin(theta);
-        return frameToWorld(frame, vec3(float(st * std::cos(phi)), float(st * std::sin(phi)), float(std::cos(theta))));
-    }
-    // N × ∫cell pdf, by the midpoint rule on 16 × 16 sub-cells, or 256 × 256 where the cell
-    // straddles the horizon (the pdf jumps to 0 there): found from the sign of z over a grid of
-    // the cell's sub-cell corners.
-    std::vector<double> expected(const std::function<double(vec3)>& pdf, double n) const {
-        std::vector<double> e(size_t(na * nphi), 0.0);
-        for (int ia = 0; ia < na; ++ia)
-            for (int ip = 0; ip < nphi; ++ip) {
-                auto integrate = [&](int k) {
-                    double sum = 0.0;
-                    for (int i = 0; i < k; ++i)
-                        for (int j = 0; j < k; ++j) {
-                            const double a = (ia + (i + 0.5) / k) / na;
-                            const double phi = (ip + (j + 0.5) / k) / nphi * 2 * M_PI;
-                            double jac = 0.0;
-                            sum += pdf(direction(a, phi, jac)) * jac;
-                        }
-                    return sum / (double(k) * k) * (1.0 / na) * (2 * M_PI / nphi);
-                };
-                bool below = false, above = false;
-                for (int i = 0; i <= 16; ++i)
-                    for (int j = 0; j <= 16; ++j) {
-                        double jac = 0.0;
-                        const double a = std::min((ia + i / 16.0) / na, 1.0 - 1e-9);
-                        const vec3 w = direction(a, (ip + j / 16.0) / nphi * 2 * M_PI, jac);
-                        (w.z > 0.0f ? above : below) = true;
-                    }
-                e[size_t(ia * nphi + ip)] = n * integrate(below && above ? 256 : 16);
-            }
-        return e;
-    }
-};
-
 struct SweepResult {
     test::ChiSquareResult chi;
     double pdfIntegral = 0.0;
@@ -101,7 +42,7 @@ struct SweepResult {
 
 // Draws n samples from bsdfSample, histograms the non-delta ones and tests them against bsdfPdf.
 SweepResult chiSquareOfBsdf(const BsdfParams& m, vec3 wo, float lobeWidth, int n, uint seed) {
-    const LobeGrid grid(glm::normalize(vec3(-wo.x, -wo.y, wo.z)), std::max(2.0f * lobeWidth, 0.02f));
+    const test::LobeGrid grid(glm::normalize(vec3(-wo.x, -wo.y, wo.z)), std::max(2.0f * lobeWidth, 0.02f));
     std::vector<double> observed(size_t(grid.na * grid.nphi), 0.0);
     SweepResult r;
     Rng rng = rngCreate(uvec2(seed, 7), 0u, seed);
@@ -158,7 +99,7 @@ TEST(ShaderBsdf, ChiSquareRejectsAWrongPdf) {
     const vec3 wo = outgoing(0.7f);
     const BsdfParams sampled = material(vec3(0.0f), vec3(1.0f), 0.5f);
     const BsdfParams claimed = material(vec3(0.0f), vec3(1.0f), 0.55f);
-    const LobeGrid grid(glm::normalize(vec3(-wo.x, -wo.y, wo.z)), 1.0f);
+    const test::LobeGrid grid(glm::normalize(vec3(-wo.x, -wo.y, wo.z)), 1.0f);
     std::vector<double> observed(size_t(grid.na * grid.nphi), 0.0);
     Rng rng = rngCreate(uvec2(1, 1), 0u, 3u);
     for (int i = 0; i < n; ++i) {
