@@ -7,30 +7,126 @@
 #include "sampling.glsl"
 #include "ray.glsl"
 #include "sky.glsl"
+#include "bsdf.glsl"
+#include "light_sampling.glsl"
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
 
-// Radiance along one camera path (Kajiya 1986). beta is the path throughput:
-// the product of f·cosθ/pdf over the bounces so far.
+BsdfParams materialBsdf(GpuMaterial m) {
+    return BsdfParams(m.albedo.rgb, m.f0Ior.rgb, ggxAlpha(m.albedo.a), m.emission.a, m.f0Ior.a);
+}
+
+// Lights that next-event estimation picks from, uniformly: the emissive spheres, then the sky.
+int neeLightCount() { return uNee ? uLightCount + (uSkyIsLight ? 1 : 0) : 0; }
+
+// Density with which next-event estimation would have produced the direction from p that hit
+// the emitter at q (an emissive sphere's surface): found as the light whose surface q lies on.
+float emitterLightPdf(vec3 p, vec3 q) {
+    int best = -1;
+    float bestMiss = FLOAT_MAX;
+    for (int i = 0; i < uLightCount; ++i) {
+        vec4 s = lights[i].centerRadius;
+        float miss = abs(length(q - s.xyz) - s.w) / s.w;
+        if (miss < bestMiss) {
+            bestMiss = miss;
+            best = i;
+        }
+    }
+    if (best < 0 || bestMiss > 1e-3f) return 0.0f;
+    vec4 s = lights[best].centerRadius;
+    return sphereConePdf(p, s.xyz, s.w) / float(neeLightCount());
+}
+
+// Radiance along one camera path (Kajiya 1986). beta is the path throughput: the product of
+// f·|cosθ|/pdf over the bounces so far. With uNee, each bounce also adds a light sample; emission
+// that a BSDF sample reaches is then weighted so nothing is counted twice (Veach 1997, §9.2).
 vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
     SkyParams sky = SkyParams(uSkyType, uSkyColor, uSkyTop, uSkyBottom);
+    int lightCount = neeLightCount();
     vec3 radiance = vec3(0.0f);
     vec3 beta = vec3(1.0f);
+    float prevPdf = 0.0f;      // BSDF density of the direction just followed
+    bool prevDelta = true;     // camera rays and delta bounces: light sampling could not help
+    vec3 prevPos = vec3(0.0f);
     for (int bounce = 0;; ++bounce) {
         Hit hit;
         ++rays;
         if (!intersectScene(ray, hit)) {
-            radiance += beta * skyRadiance(sky, normalize(ray.dir));
+            vec3 dir = normalize(ray.dir);
+            float w = 1.0f;
+            if (uSkyIsLight && lightCount > 0 && !prevDelta) {
+                float lightPdf = UNIFORM_SPHERE_PDF / float(lightCount);
+                w = uMis ? powerHeuristic(prevPdf, lightPdf) : 0.0f;
+            }
+            radiance += beta * skyRadiance(sky, dir) * w;
             break;
         }
         GpuMaterial m = materials[hit.material];
-        radiance += beta * m.emission.rgb;
+        vec3 Le = m.emission.rgb;
+        if (max(Le.r, max(Le.g, Le.b)) > 0.0f) {
+            float w = 1.0f;
+            if (lightCount > 0 && !prevDelta) {
+                float lightPdf = emitterLightPdf(prevPos, hit.position);
+                w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
+            }
+            radiance += beta * Le * w;
+        }
         if (bounce >= uMaxBounces) break;
 
-        // Lambert, cosine-weighted: f·cosθ/pdf = (ρ/π)·cosθ / (cosθ/π) = ρ.
-        vec3 n = dot(hit.normal, ray.dir) < 0.0f ? hit.normal : -hit.normal;
-        vec3 dir = frameToWorld(frameFromNormal(n), sampleCosineHemisphere(rngNext2(rng)));
-        beta *= m.albedo.rgb;
+        BsdfParams bsdf = materialBsdf(m);
+        Frame frame = frameFromNormal(hit.normal);   // outward normal: the BSDF tells the sides
+        vec3 wo = frameToLocal(frame, -normalize(ray.dir));
+
+        // Next-event estimation: one light, picked uniformly, sampled by solid angle.
+        if (lightCount > 0) {
+            int k = min(int(rngNextFloat(rng) * float(lightCount)), lightCount - 1);
+            vec2 ul = rngNext2(rng);
+            vec3 wiW = vec3(0.0f);
+            vec3 Ll = vec3(0.0f);
+            float lightPdf = 0.0f;
+            float tMax = FLOAT_MAX;
+            if (k < uLightCount) {
+                vec4 s = lights[k].centerRadius;
+                lightPdf = sphereConePdf(hit.position, s.xyz, s.w);
+                if (lightPdf > 0.0f) {
+                    wiW = sphereConeSample(hit.position, s.xyz, s.w, ul);
+                    Ll = lights[k].radiance.rgb;
+                }
+            } else {
+                wiW = sampleUniformSphere(ul);
+                lightPdf = UNIFORM_SPHERE_PDF;
+                Ll = skyRadiance(sky, wiW);
+            }
+            lightPdf /= float(lightCount);
+            vec3 wiL = frameToLocal(frame, wiW);
+            vec3 f = lightPdf > 0.0f ? bsdfEval(bsdf, wo, wiL) : vec3(0.0f);
+            if (max(f.r, max(f.g, f.b)) > 0.0f) {
+                vec3 side = dot(wiW, hit.normal) > 0.0f ? hit.normal : -hit.normal;
+                Ray shadow = Ray(offsetRayOrigin(hit.position, side, hit.error), wiW);
+                if (k < uLightCount) {
+                    // Stop just short of the light's own surface.
+                    vec4 s = lights[k].centerRadius;
+                    float t = intersectSphere(shadow, s.xyz, s.w, 0.0f, FLOAT_MAX);
+                    tMax = t > 0.0f ? t * (1.0f - 1e-4f) : -1.0f;
+                }
+                ++rays;
+                if (tMax > 0.0f && !occludedScene(shadow, tMax)) {
+                    float w = uMis ? powerHeuristic(lightPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
+                    radiance += beta * f * Ll * (w / lightPdf);
+                }
+            }
+        }
+
+        // BSDF sample. Pure Lambert draws no lobe number, so its random stream is unchanged.
+        vec2 u = rngNext2(rng);
+        float uLobe = bsdfNeedsLobeChoice(bsdf) ? rngNextFloat(rng) : 0.5f;
+        BsdfSample bs = bsdfSample(bsdf, wo, vec3(u.x, u.y, uLobe));
+        if (bs.lobe == LOBE_NONE) break;
+        beta *= bs.weight;
+        vec3 dir = frameToWorld(frame, bs.wi);
+        prevPdf = bs.pdf;
+        prevDelta = bs.delta;
+        prevPos = hit.position;
 
         // Russian roulette (pbrt-v4 §14.1.4 style): survive with q = max throughput, at most
         // 0.95, and divide by q so the estimate stays unbiased.
@@ -39,7 +135,8 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             if (rngNextFloat(rng) >= q) break;
             beta /= q;
         }
-        ray = Ray(offsetRayOrigin(hit.position, n, hit.error), dir);
+        vec3 side = dot(dir, hit.normal) > 0.0f ? hit.normal : -hit.normal;
+        ray = Ray(offsetRayOrigin(hit.position, side, hit.error), dir);
     }
     return radiance;
 }

@@ -12,6 +12,8 @@ layout(std430, binding = 3) buffer CounterBuffer {
     uint raysTraced;         // ray casts this pass (camera and bounce rays)
 };
 
+layout(std430, binding = 4) readonly buffer LightBuffer { GpuLight lights[]; };
+
 uniform ivec2 uImageSize;
 uniform uint uSampleStart;   // samples per pixel already in uAccum
 uniform int uRpp;            // samples per pixel in this pass
@@ -29,5 +31,9 @@ uniform int uSkyType;
 uniform vec3 uSkyColor;
 uniform vec3 uSkyTop;
 uniform vec3 uSkyBottom;
+uniform int uLightCount;     // emissive spheres in lights[]
+uniform bool uNee;           // next-event estimation on
+uniform bool uMis;           // with uNee: power-heuristic MIS of light and BSDF samples
+uniform bool uSkyIsLight;    // with uNee: the sky is sampled too (its radiance is not zero)
 
 #endif

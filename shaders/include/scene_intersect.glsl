@@ -34,4 +34,13 @@ bool intersectScene(Ray ray, out Hit hit) {
     return true;
 }
 
+// Any-hit query for shadow rays: is there geometry along the ray strictly before tMax?
+bool occludedScene(Ray ray, float tMax) {
+    for (int i = 0; i < uSphereCount; ++i) {
+        vec4 s = spheres[i].centerRadius;
+        if (intersectSphere(ray, s.xyz, s.w, 0.0f, tMax) > 0.0f) return true;
+    }
+    return false;
+}
+
 #endif

@@ -11,8 +11,15 @@ struct GpuSphere {
 };
 
 struct GpuMaterial {
-    vec4 albedo;     // rgb diffuse reflectance, a unused
-    vec4 emission;   // rgb emitted radiance (colour × strength), a unused
+    vec4 albedo;     // rgb diffuse reflectance, a perceptual roughness
+    vec4 emission;   // rgb emitted radiance (colour × strength), a transmission
+    vec4 f0Ior;      // rgb specular reflectance at normal incidence, a index of refraction
+};
+
+// An emissive sphere, for next-event estimation.
+struct GpuLight {
+    vec4 centerRadius;   // xyz centre, w radius
+    vec4 radiance;       // rgb emitted radiance, a unused
 };
 
 RL_NAMESPACE_END

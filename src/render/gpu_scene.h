@@ -16,11 +16,14 @@ public:
     void bind() const;   // binds every buffer to its binding point
 
     int sphereCount() const { return sphereCount_; }
+    int lightCount() const { return lightCount_; }   // emissive spheres
 
 private:
     unsigned sphereBuffer_ = 0;
     unsigned materialBuffer_ = 0;
+    unsigned lightBuffer_ = 0;
     int sphereCount_ = 0;
+    int lightCount_ = 0;
 };
 
 } // namespace raylab

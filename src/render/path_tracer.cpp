@@ -85,6 +85,12 @@ void PathTracer::setScene(const Scene& scene) {
     p.set("uSkyColor", sky.color * sky.strength);
     p.set("uSkyTop", sky.top * sky.strength);
     p.set("uSkyBottom", sky.bottom * sky.strength);
+    const glm::vec3 skyMax = sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom);
+    const bool skyIsLight = sky.strength * std::max({skyMax.r, skyMax.g, skyMax.b}) > 0.0f;
+    p.set("uLightCount", gpuScene_.lightCount());
+    p.set("uNee", int(r.nee));
+    p.set("uMis", int(r.mis));
+    p.set("uSkyIsLight", int(r.nee && skyIsLight));
     reset();
 }
 

@@ -121,6 +121,14 @@ std::vector<ParamSpec> buildSceneTable() {
     add(spec("render.seed", T::UInt, atLeast(0), atMost(kUIntMax), "",
              "Sampler seed: same seed, same image bit for bit.", G::ResetAccumulation),
         [](auto& s) -> auto& { return s.render.seed; });
+    add(spec("render.nee", T::Bool, kAny, kAny, "",
+             "Next-event estimation: each bounce also samples emissive spheres and the sky directly.",
+             G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.render.nee; });
+    add(spec("render.mis", T::Bool, kAny, kAny, "",
+             "With nee: combine light and BSDF samples by multiple importance sampling (power heuristic).",
+             G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.render.mis; });
     add(spec("render.exposure", T::Float, atLeast(-20), atMost(20), "EV stops",
              "Display value = linear value x 2^exposure (PNG only).", G::Redisplay),
         [](auto& s) -> auto& { return s.render.exposure; });
@@ -161,6 +169,21 @@ std::vector<MaterialParamSpec> buildMaterialTable() {
     add(spec("albedo", T::Rgb, atLeast(0), atMost(1), "reflectance",
              "Lambertian (diffuse) reflectance per channel.", Trigger::ReloadScene),
         [](auto& m) -> auto& { return m.albedo; });
+    add(spec("roughness", T::Float, atLeast(0), atMost(1), "",
+             "Perceptual roughness r of the specular lobe; GGX alpha = r^2 (below 0.0316: a mirror).",
+             Trigger::ReloadScene),
+        [](auto& m) -> auto& { return m.roughness; });
+    add(spec("f0", T::Rgb, atLeast(0), atMost(1), "reflectance",
+             "Specular reflectance at normal incidence (0.04 plastic, coloured for metals; 0 = no specular).",
+             Trigger::ReloadScene),
+        [](auto& m) -> auto& { return m.f0; });
+    add(spec("transmission", T::Float, atLeast(0), atMost(1), "fraction",
+             "Fraction of the surface that is smooth glass of index ior (the rest is albedo / f0).",
+             Trigger::ReloadScene),
+        [](auto& m) -> auto& { return m.transmission; });
+    add(spec("ior", T::Float, above(0), kAny, "",
+             "Index of refraction of the inside relative to the outside (glass 1.5).", Trigger::ReloadScene),
+        [](auto& m) -> auto& { return m.ior; });
     add(spec("emission", T::Rgb, atLeast(0), kAny, "radiance",
              "Emitted colour; emitted radiance = emission x strength.", Trigger::ReloadScene),
         [](auto& m) -> auto& { return m.emission; });
@@ -248,7 +271,7 @@ const std::vector<SphereParamSpec>& sphereParameters() {
 std::optional<std::string> checkScalar(const ValueSpec& spec, double v) {
     if (!std::isfinite(v)) return "must be finite, got " + formatNumber(v);
     const bool integral = spec.type == ParamType::Int || spec.type == ParamType::UInt ||
-                          spec.type == ParamType::Enum;
+                          spec.type == ParamType::Enum || spec.type == ParamType::Bool;
     if (integral && v != std::floor(v)) return "must be an integer, got " + formatNumber(v);
     const bool low = spec.min && violatesMin(*spec.min, v);
     const bool high = spec.max && violatesMax(*spec.max, v);
@@ -262,6 +285,9 @@ std::optional<std::string> checkScalar(const ValueSpec& spec, double v) {
     case ParamType::Enum:
         if (v < kIntMin) return "must be >= " + formatNumber(kIntMin) + ", got " + formatNumber(v);
         if (v > kIntMax) return "must be <= " + formatNumber(kIntMax) + ", got " + formatNumber(v);
+        break;
+    case ParamType::Bool:
+        if (v != 0 && v != 1) return "must be true or false, got " + formatNumber(v);
         break;
     case ParamType::UInt:
         if (v < 0 || v > kUIntMax) return "must be in [0, " + formatNumber(kUIntMax) + "], got " + formatNumber(v);
@@ -298,7 +324,8 @@ std::optional<std::string> checkValue(const ValueSpec& spec, const ParamValue& v
         return std::nullopt;
     }
     case ParamType::Int:
-    case ParamType::UInt: {
+    case ParamType::UInt:
+    case ParamType::Bool: {
         const auto* v = std::get_if<std::int64_t>(&value);
         if (!v) return std::string("expected an integer");
         return checkScalar(spec, static_cast<double>(*v));
@@ -331,6 +358,7 @@ std::string formatValue(const ValueSpec& spec, const ParamValue& value) {
     if (const auto* d = std::get_if<double>(&value)) return formatNumber(*d);
     const std::int64_t i = std::get<std::int64_t>(value);
     if (spec.type == ParamType::Enum) return std::string(spec.enumName(i));
+    if (spec.type == ParamType::Bool) return i != 0 ? "true" : "false";
     return std::to_string(i);
 }
 
@@ -346,6 +374,7 @@ std::string describeRange(const ValueSpec& spec) {
         }
         return out;
     }
+    if (spec.type == ParamType::Bool) return "true, false";
     return rangeText(spec.min, spec.max);
 }
 
@@ -357,6 +386,7 @@ std::string_view typeName(ParamType type) {
     case ParamType::Vec3: return "vec3";
     case ParamType::Rgb: return "rgb";
     case ParamType::Enum: return "enum";
+    case ParamType::Bool: return "bool";
     }
     return "?";
 }

@@ -25,6 +25,7 @@ enum class ParamType {
     Vec3,   // [x, y, z], finite
     Rgb,    // [r, g, b] or a single number meaning grey; bounds apply per channel
     Enum,   // one of a fixed set of names
+    Bool,   // JSON true or false (stored as 0 / 1 in ParamValue)
 };
 
 // What a change of the parameter implies for an interactive renderer, cheapest first.
@@ -46,7 +47,7 @@ struct EnumName {
     bool alias = false;   // accepted on input, never written (e.g. "none" for "clamp")
 };
 
-// Int, UInt and Enum values are std::int64_t, Float is double, Vec3 and Rgb are glm::vec3.
+// Int, UInt, Enum and Bool values are std::int64_t, Float is double, Vec3 and Rgb are glm::vec3.
 using ParamValue = std::variant<std::int64_t, double, glm::vec3>;
 
 // Everything about a parameter except how to reach its field.

@@ -30,6 +30,8 @@ struct RenderSettings {
     int maxBounces = 8;          // scattering events per path; 0 = emission and sky only
     int rrDepth = 3;             // Russian roulette starts after this many bounces
     std::uint32_t seed = 1;      // sampler seed: same seed, same image bit for bit
+    bool nee = false;            // next-event estimation: sample emissive spheres and the sky
+    bool mis = true;             // with nee: weight light and BSDF samples by the power heuristic
     float exposure = 0.0f;       // EV stops: display value = linear × 2^exposure
     ToneMap toneMap = ToneMap::AcesFit;
 };
@@ -37,6 +39,10 @@ struct RenderSettings {
 struct Material {
     std::string name;
     glm::vec3 albedo{0.8f};          // diffuse reflectance, each channel in [0, 1]
+    float roughness = 1.0f;          // perceptual roughness r in [0, 1]; GGX alpha = r^2
+    glm::vec3 f0{0.0f};              // specular reflectance at normal incidence; 0 = pure Lambert
+    float transmission = 0.0f;       // fraction that is smooth glass (dielectric of index ior)
+    float ior = 1.5f;                // index of refraction inside / outside, > 0
     glm::vec3 emission{0.0f};        // emitted radiance colour
     float emissionStrength = 0.0f;   // multiplies emission; radiance = emission × strength
     glm::vec3 radiance() const { return emission * emissionStrength; }

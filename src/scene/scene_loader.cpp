@@ -284,6 +284,9 @@ ParamValue readValue(const ValueSpec& spec, const Json& v, const Path& p) {
             out[static_cast<glm::length_t>(i)] = static_cast<float>(readScalar(spec, v[i], p.index(i)));
         return out;
     }
+    case ParamType::Bool:
+        if (!v.is_boolean()) fail(p, "expected true or false, got " + typeOf(v));
+        return static_cast<std::int64_t>(v.get<bool>() ? 1 : 0);
     case ParamType::Enum: {
         std::vector<std::string_view> names;
         for (const EnumName& e : spec.enumNames) names.push_back(e.name);
@@ -606,6 +609,7 @@ nlohmann::json valueJson(const FieldSpec<Target>& spec, const Target& source) {
     if (const auto* d = std::get_if<double>(&v)) return numberForField(spec, source, *d);
     const std::int64_t i = std::get<std::int64_t>(v);
     if (spec.type == ParamType::Enum) return std::string(spec.enumName(i));
+    if (spec.type == ParamType::Bool) return i != 0;
     return i;
 }
 

@@ -24,7 +24,7 @@ TEST(SceneParameters, TableCoversTheSectionsWithUniqueKeys) {
     const std::set<std::string> expected = {
         "camera.position", "camera.look_at", "camera.up",        "camera.fov",      "render.width",
         "render.height",   "render.rpp",     "render.spp",       "render.time",     "render.max_bounces",
-        "render.rr_depth", "render.seed",    "render.exposure",  "render.tone_map", "sky.type",
+        "render.rr_depth", "render.seed",    "render.nee",       "render.mis",      "render.exposure",  "render.tone_map", "sky.type",
         "sky.color",       "sky.top",        "sky.bottom",       "sky.strength"};
     EXPECT_EQ(keys, expected);
     EXPECT_EQ(findParameter("render.sp"), nullptr);
@@ -70,6 +70,10 @@ TEST(SceneParameters, AccessorsReachTheirOwnField) {
             v = std::int64_t(p.enumNames[0].value == std::get<std::int64_t>(p.defaultValue()) ? p.enumNames[1].value
                                                                                            : p.enumNames[0].value);
             json = "\"" + std::string(p.enumName(std::get<std::int64_t>(v))) + "\"";
+            break;
+        case ParamType::Bool:
+            v = std::int64_t(std::get<std::int64_t>(p.defaultValue()) != 0 ? 0 : 1);
+            json = formatValue(p, v);
             break;
         }
         ASSERT_FALSE(checkValue(p, v)) << *checkValue(p, v);

@@ -1,0 +1,135 @@
+// The material's BSDF in the local frame (+z = the surface's outward normal): a Lambertian base
+// under a GGX specular layer, mixed with a smooth dielectric by `transmission`. sample / eval /
+// pdf agree: weight = eval / pdf for every non-delta sample. Shared by C++ and GLSL.
+//
+//   f = (1 − t) [ (1 − F(θo)) ρ/π + D G2 F(wo·h) / (4 cosθo cosθi) ] + t · glass(δ)
+//
+// F is Schlick's with f90 (fresnel.glsl), so f0 = 0 gives exactly Lambert. The opaque part is
+// two-sided (wo below the surface is mirrored up); the glass part knows inside from outside.
+#ifndef RAYLAB_BSDF_GLSL
+#define RAYLAB_BSDF_GLSL
+#include "compat.glsl"
+#include "sampling.glsl"
+#include "fresnel.glsl"
+#include "ggx.glsl"
+#include "bsdf_sample.glsl"
+#include "dielectric.glsl"
+RL_NAMESPACE_BEGIN
+
+struct BsdfParams {
+    vec3 albedo;
+    vec3 f0;
+    float alpha;          // GGX width, already clamped (ggxAlpha)
+    float transmission;   // probability of the glass part
+    float ior;
+};
+
+RL_FN float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
+
+// Does sampling need a random number to choose a lobe? (Pure Lambert does not, which keeps its
+// random stream, and so its images, as they were before specular materials existed.)
+RL_FN bool bsdfNeedsLobeChoice(BsdfParams m) {
+    return m.transmission > 0.0f || maxComponent(m.f0) > 0.0f;
+}
+
+// Fresnel at the viewing angle: weights the diffuse base by (1 − F) and sets the lobe choice.
+RL_FN vec3 opaqueViewFresnel(BsdfParams m, float cosO) {
+    return fresnelSchlick(m.f0, schlickF90(m.f0), cosO);
+}
+
+// Probability of sampling the specular lobe: its share of the two lobes' albedo estimates.
+RL_FN float opaqueSpecularProbability(BsdfParams m, float cosO) {
+    vec3 F = opaqueViewFresnel(m, cosO);
+    float s = maxComponent(F);
+    float d = maxComponent((vec3(1.0f) - F) * m.albedo);
+    if (s <= 0.0f) return 0.0f;
+    if (d <= 0.0f) return 1.0f;
+    return s / (s + d);
+}
+
+// f·cosθi of the opaque part, both directions above the surface (wo.z > 0, wi.z > 0).
+RL_FN vec3 opaqueEval(BsdfParams m, vec3 wo, vec3 wi) {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
+    vec3 result = (vec3(1.0f) - opaqueViewFresnel(m, wo.z)) * m.albedo * (INV_PI * wi.z);
+    if (!ggxIsDelta(m.alpha) && maxComponent(m.f0) > 0.0f) {
+        vec3 h = normalize(wo + wi);
+        vec3 F = fresnelSchlick(m.f0, schlickF90(m.f0), dot(wo, h));
+        // D G2 F / (4 cosθo cosθi) · cosθi
+        result += F * (ggxD(h, m.alpha) * ggxG2(wo, wi, m.alpha) / (4.0f * wo.z));
+    }
+    return result;
+}
+
+// Density of opaqueSample's non-delta directions.
+RL_FN float opaquePdf(BsdfParams m, vec3 wo, vec3 wi) {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    float p = opaqueSpecularProbability(m, wo.z);
+    float pdf = (1.0f - p) * pdfCosineHemisphere(wi.z);
+    if (p > 0.0f && !ggxIsDelta(m.alpha)) {
+        // Reflection of visible normals: D_wo(h) / (4 wo·h) = G1(wo) D(h) / (4 cosθo).
+        vec3 h = normalize(wo + wi);
+        pdf += p * ggxG1(wo, m.alpha) * ggxD(h, m.alpha) / (4.0f * wo.z);
+    }
+    return pdf;
+}
+
+// wo.z > 0. u.xy picks the direction, uLobe in [0, 1) the lobe.
+RL_FN BsdfSample opaqueSample(BsdfParams m, vec3 wo, vec2 u, float uLobe) {
+    float p = opaqueSpecularProbability(m, wo.z);
+    bool delta = ggxIsDelta(m.alpha);
+    if (uLobe < p) {
+        if (delta) {
+            vec3 F = opaqueViewFresnel(m, wo.z);
+            return BsdfSample(vec3(-wo.x, -wo.y, wo.z), F / p, p, LOBE_SPECULAR, true);
+        }
+        vec3 h = ggxSampleVisibleNormal(wo, m.alpha, u);
+        vec3 wi = 2.0f * dot(wo, h) * h - wo;
+        if (wi.z <= 0.0f) return bsdfNoSample();   // reflected below the surface: no light
+        float pdf = opaquePdf(m, wo, wi);
+        if (!(pdf > 0.0f)) return bsdfNoSample();
+        return BsdfSample(wi, opaqueEval(m, wo, wi) / pdf, pdf, LOBE_SPECULAR, false);
+    }
+    vec3 wi = sampleCosineHemisphere(u);
+    if (p <= 0.0f) {
+        // Diffuse only: f·cos/pdf = (1 − F) ρ exactly (the furnace tests rely on exactness).
+        return BsdfSample(wi, (vec3(1.0f) - opaqueViewFresnel(m, wo.z)) * m.albedo,
+                          pdfCosineHemisphere(wi.z), LOBE_DIFFUSE, false);
+    }
+    float pdf = opaquePdf(m, wo, wi);
+    if (!(pdf > 0.0f)) return bsdfNoSample();
+    return BsdfSample(wi, opaqueEval(m, wo, wi) / pdf, pdf, LOBE_DIFFUSE, false);
+}
+
+RL_FN vec3 mirrorZ(vec3 v, float s) { return vec3(v.x, v.y, s * v.z); }
+
+// f·|cosθi| of the whole BSDF (the delta glass and mirror lobes contribute nothing here).
+RL_FN vec3 bsdfEval(BsdfParams m, vec3 wo, vec3 wi) {
+    if (wo.z * wi.z <= 0.0f || m.transmission >= 1.0f) return vec3(0.0f);
+    float s = wo.z < 0.0f ? -1.0f : 1.0f;
+    return (1.0f - m.transmission) * opaqueEval(m, mirrorZ(wo, s), mirrorZ(wi, s));
+}
+
+RL_FN float bsdfPdf(BsdfParams m, vec3 wo, vec3 wi) {
+    if (wo.z * wi.z <= 0.0f || m.transmission >= 1.0f) return 0.0f;
+    float s = wo.z < 0.0f ? -1.0f : 1.0f;
+    return (1.0f - m.transmission) * opaquePdf(m, mirrorZ(wo, s), mirrorZ(wi, s));
+}
+
+// One sample of the whole BSDF; u = (direction, direction, lobe choice), each in [0, 1).
+RL_FN BsdfSample bsdfSample(BsdfParams m, vec3 wo, vec3 u) {
+    if (u.z < m.transmission) {
+        BsdfSample g = dielectricSample(wo, m.ior, u.z / m.transmission);
+        g.pdf *= m.transmission;   // the weight keeps t/t = 1
+        return g;
+    }
+    float uLobe = (u.z - m.transmission) / (1.0f - m.transmission);
+    if (wo.z == 0.0f) return bsdfNoSample();
+    float s = wo.z < 0.0f ? -1.0f : 1.0f;
+    BsdfSample o = opaqueSample(m, mirrorZ(wo, s), vec2(u.x, u.y), uLobe);
+    o.wi = mirrorZ(o.wi, s);
+    o.pdf *= 1.0f - m.transmission;   // the weight keeps (1 − t)/(1 − t) = 1
+    return o;
+}
+
+RL_NAMESPACE_END
+#endif

@@ -1,0 +1,196 @@
+// Light transport on the GPU (OSMesa): next-event estimation, BSDF sampling and MIS converge to
+// the same image; MIS wins on the Veach scene; glass in a uniform environment is invisible; a
+// GGX F = 1 sphere in a white furnace returns the single-scattering albedo E(μ, α).
+#include "render_helpers.h"
+#include "shaders/include/camera.glsl"
+#include "support/ggx_albedo.h"
+#include "support/gl_test.h"
+#include "support/statistics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+using namespace raylab;
+
+namespace {
+
+// Per-pixel, per-channel mean and variance of the mean over independent batches (seeds).
+struct BatchStats {
+    std::vector<double> mean, varianceOfMean;
+};
+
+BatchStats renderBatches(Scene scene, int batches) {
+    PathTracer tracer;
+    std::vector<double> sum, sum2;
+    for (int b = 0; b < batches; ++b) {
+        scene.render.seed = 1000u + std::uint32_t(b) * 7919u;
+        tracer.setScene(scene);
+        renderProgressively(tracer, scene.render);
+        const Image img = tracer.readImage();
+        if (sum.empty()) {
+            sum.assign(img.rgba.size(), 0.0);
+            sum2.assign(img.rgba.size(), 0.0);
+        }
+        for (size_t i = 0; i < img.rgba.size(); ++i) {
+            sum[i] += img.rgba[i];
+            sum2[i] += double(img.rgba[i]) * img.rgba[i];
+        }
+    }
+    BatchStats s;
+    for (size_t i = 0; i < sum.size(); ++i) {
+        const double m = sum[i] / batches;
+        const double var = std::max(0.0, (sum2[i] - batches * m * m) / (batches - 1));
+        s.mean.push_back(m);
+        s.varianceOfMean.push_back(var / batches);
+    }
+    return s;
+}
+
+// Two-sided normal quantile: z with P(|Z| > z) = p, by bisection on erfc.
+double normalQuantileTwoSided(double p) {
+    double lo = 0.0, hi = 40.0;
+    for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (std::erfc(mid / std::sqrt(2.0)) > p ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+// Fraction of pixels whose means agree: per-channel z-test at α = 0.01, Šidák-corrected over
+// every pixel and channel (as Mitsuba's render tests do).
+double fractionAgreeing(const BatchStats& a, const BatchStats& b) {
+    const size_t pixels = a.mean.size() / 4;
+    const double z = normalQuantileTwoSided(test::sidak(0.01, int(pixels * 3)));
+    size_t agree = 0;
+    for (size_t p = 0; p < pixels; ++p) {
+        bool ok = true;
+        for (size_t c = 0; c < 3; ++c) {
+            const size_t i = p * 4 + c;
+            const double d = std::abs(a.mean[i] - b.mean[i]);
+            const double sd = std::sqrt(a.varianceOfMean[i] + b.varianceOfMean[i]);
+            if (sd == 0.0 ? d > 1e-6 * std::max(1.0, std::abs(a.mean[i])) : d > z * sd) {
+                ok = false;
+                if (std::getenv("RAYLAB_DEBUG_Z"))
+                    std::printf("pixel %zu (%zu,%zu) c%zu: %g vs %g, sd %g %g\n", p, p % 24, p / 24, c, a.mean[i], b.mean[i],
+                                std::sqrt(a.varianceOfMean[i]), std::sqrt(b.varianceOfMean[i]));
+            }
+        }
+        agree += ok ? 1 : 0;
+    }
+    return double(agree) / double(pixels);
+}
+
+// A small scene with every kind of light path: glossy plastic floor, rough gold, diffuse and
+// mirror spheres, a small lamp and a gradient sky (also a light for NEE).
+const char* kTransportScene = R"({
+  "camera": { "position": [0, 1.6, 5], "look_at": [0, 0.5, 0], "fov": 40 },
+  "render": { "width": 24, "height": 16, "rpp": 32, "spp": 128, "max_bounces": 4, "rr_depth": 2 },
+  "sky": { "type": "gradient", "top": [0.3, 0.4, 0.6], "bottom": [0.2, 0.2, 0.2] },
+  "materials": {
+    "floor": { "albedo": 0.5, "f0": 0.04, "roughness": 0.7 },
+    "gold": { "albedo": 0, "f0": [1, 0.71, 0.29], "roughness": 0.8 },
+    "white": { "albedo": 0.7 },
+    "mirror": { "albedo": 0, "f0": 0.9, "roughness": 0 },
+    "lamp": { "albedo": 0, "emission": [1, 0.9, 0.7], "strength": 3 }
+  },
+  "objects": [
+    { "type": "sphere", "center": [0, -100, 0], "radius": 100, "material": "floor" },
+    { "type": "sphere", "center": [-1.1, 0.6, 0], "radius": 0.6, "material": "gold" },
+    { "type": "sphere", "center": [0.3, 0.5, -0.6], "radius": 0.5, "material": "white" },
+    { "type": "sphere", "center": [1.3, 0.4, 0.5], "radius": 0.4, "material": "mirror" },
+    { "type": "sphere", "center": [0.5, 2.4, 0.5], "radius": 0.5, "material": "lamp" }
+  ]
+})";
+
+Scene transportScene(std::vector<std::string> overrides) {
+    return parseScene(kTransportScene, "transport.json", overrides);
+}
+
+} // namespace
+
+class LightTransportTest : public test::GlTest {};
+
+TEST_F(LightTransportTest, NeeBsdfAndMisConvergeToTheSameImage) {
+    constexpr int batches = 32;
+    const BatchStats bsdf = renderBatches(transportScene({"render.nee=false"}), batches);
+    const BatchStats nee = renderBatches(transportScene({"render.nee=true", "render.mis=false"}), batches);
+    const BatchStats mis = renderBatches(transportScene({"render.nee=true", "render.mis=true"}), batches);
+    EXPECT_GE(fractionAgreeing(mis, bsdf), 0.995);
+    EXPECT_GE(fractionAgreeing(mis, nee), 0.995);
+    EXPECT_GE(fractionAgreeing(nee, bsdf), 0.995);
+    // The test can fail: 20% more light everywhere must be seen.
+    const BatchStats brighter = renderBatches(
+        transportScene({"render.nee=true", "materials.lamp.strength=3.6", "sky.strength=1.2"}), batches);
+    EXPECT_LT(fractionAgreeing(mis, brighter), 0.9);
+}
+
+TEST_F(LightTransportTest, MisHasLowerErrorThanEitherStrategyOnTheVeachScene) {
+    // Equal samples per pixel; the reference is MIS at 64× the samples. RMSE printed for
+    // bench/materials.md.
+    const std::vector<std::string> size = {"render.width=64", "render.height=32", "render.rpp=16"};
+    auto with = [&](std::vector<std::string> more) {
+        more.insert(more.end(), size.begin(), size.end());
+        return loadScene(test::scenePath("veach_mis.json"), more);
+    };
+    const Image reference = test::render(with({"render.spp=1024", "render.seed=99"}));
+    const double bsdf = test::rmse(test::render(with({"render.spp=16", "render.nee=false"})), reference);
+    const double nee = test::rmse(test::render(with({"render.spp=16", "render.mis=false"})), reference);
+    const double mis = test::rmse(test::render(with({"render.spp=16"})), reference);
+    std::printf("veach_mis 64x32, 16 spp, RMSE vs 1024 spp MIS: BSDF only %.4f, NEE only %.4f, MIS %.4f\n", bsdf,
+                nee, mis);
+    EXPECT_LT(mis, bsdf);
+    EXPECT_LT(mis, nee);
+}
+
+TEST_F(LightTransportTest, SmoothGlassSphereInAUniformEnvironmentIsInvisible) {
+    // furnace.json's sphere made of glass: every path leaves the sphere again with weight
+    // (1/η²)·η² = 1, so every pixel is the sky's radiance 1, whatever the IOR.
+    for (const char* ior : {"1.5", "0.6666667", "1.33", "1"}) {
+        SCOPED_TRACE(ior);
+        const Scene scene = loadScene(test::scenePath("furnace.json"),
+                                      {"render.width=16", "render.height=16", "render.max_bounces=64",
+                                       "materials.grey.transmission=1", "materials.grey.roughness=0",
+                                       std::string("materials.grey.ior=") + ior});
+        const Image img = test::render(scene);
+        for (size_t i = 0; i < img.rgba.size(); ++i)
+            if (i % 4 != 3) {
+                ASSERT_NEAR(img.rgba[i], 1.0f, 1e-4f) << "pixel " << i / 4;
+            }
+    }
+}
+
+TEST_F(LightTransportTest, GgxFurnaceReturnsTheSingleScatteringAlbedo) {
+    // An F = 1 GGX sphere (f0 1, albedo 0) in a white furnace, seen from close up: each pixel
+    // must be E(μ, α) at its viewing cosine μ, from our own quadrature, within 0.5% on average.
+    const int w = 8, h = 8;
+    for (const char* roughness : {"0.5", "1"}) {
+        SCOPED_TRACE(roughness);
+        const Scene scene = loadScene(
+            test::scenePath("furnace.json"),
+            {"render.width=8", "render.height=8", "render.spp=2048", "render.rpp=256", "render.max_bounces=1",
+             "camera.position=[0,0,2]", "camera.fov=40", "materials.grey.albedo=0", "materials.grey.f0=1",
+             std::string("materials.grey.roughness=") + roughness});
+        const Image img = test::render(scene);
+        const float r = std::stof(roughness);
+        const auto cam = glsl::cameraBasis(scene.camera.position, scene.camera.lookAt, scene.camera.up,
+                                           scene.camera.fovY, 1.0f);
+        double measured = 0.0, expected = 0.0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                // The pixel centre's ray (image rows are stored top first).
+                const glm::vec2 ndc((float(x) + 0.5f) / float(w) * 2 - 1, 1 - (float(y) + 0.5f) / float(h) * 2);
+                const glsl::Ray ray = glsl::cameraRay(cam, ndc);
+                const glm::dvec3 o(ray.origin), d(glm::normalize(ray.dir));
+                const double b = glm::dot(o, d), c = glm::dot(o, o) - 1.0;
+                ASSERT_GT(b * b - c, 0.0) << "the sphere must fill the image";
+                const glm::dvec3 n = o + (-b - std::sqrt(b * b - c)) * d;
+                const double mu = -glm::dot(n, d);
+                expected += test::ggxAlbedoQuadrature(mu, double(r * r), 600);
+                measured += img.rgb(x, y).x;
+            }
+        EXPECT_NEAR(measured / (w * h), expected / (w * h), 0.005 * expected / (w * h));
+    }
+}

@@ -1,0 +1,94 @@
+#pragma once
+// Histogram cells for χ² tests of direction samplers, adapted to lobes of any width, with
+// expected counts by numerical integration of a pdf.
+#include "shaders/include/frame.glsl"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace raylab::test {
+
+using glsl::Frame;
+using glm::vec3;
+
+// Cells over the whole sphere of directions in coordinates around a centre direction r:
+// a = g / (c + g) with g = tan(θ'/2), θ' the angle from r, and φ' around r. Half of the a range
+// covers θ' < 2 atan(c), so a lobe of width ~c is resolved however narrow it is.
+struct LobeGrid {
+    vec3 r;
+    float c;
+    int na = 16, nphi = 32;
+    Frame frame;
+    LobeGrid(vec3 centre, float width) : r(centre), c(width), frame(glsl::frameFromNormal(centre)) {}
+
+    int cell(vec3 w) const {
+        // In double, and θ' by atan2: acos of a float dot product cannot resolve the tiny angles
+        // of narrow lobes (1 − θ²/2 rounds to float's 6e-8 steps).
+        const glm::dvec3 d = glm::normalize(glm::dvec3(w));
+        const double x = glm::dot(d, glm::dvec3(frame.t)), y = glm::dot(d, glm::dvec3(frame.b));
+        const double z = glm::dot(d, glm::dvec3(r));
+        const double theta = std::atan2(std::sqrt(x * x + y * y), z);
+        const double g = std::tan(theta / 2.0);
+        const double a = std::isinf(g) ? 1.0 : g / (c + g);
+        double phi = std::atan2(y, x);
+        if (phi < 0) phi += 2 * M_PI;
+        const int ia = std::min(int(a * na), na - 1), ip = std::min(int(phi / (2 * M_PI) * nphi), nphi - 1);
+        return ia * nphi + ip;
+    }
+    // Direction and Jacobian |dω / (da dφ)| at (a, φ).
+    vec3 direction(double a, double phi, double& jacobian) const {
+        const double g = c * a / (1.0 - a);
+        const double theta = 2.0 * std::atan(g);
+        jacobian = std::sin(theta) * 2.0 / (1.0 + g * g) * c / ((1.0 - a) * (1.0 - a));
+        const double st = std::sin(theta);
+        return glsl::frameToWorld(frame, vec3(float(st * std::cos(phi)), float(st * std::sin(phi)), float(std::cos(theta))));
+    }
+    // N × ∫cell pdf by the midpoint rule on k × k sub-cells, k doubled from 16 until the count
+    // changes by less than a tenth of its Poisson standard deviation (k ≤ 256); cells that
+    // straddle the horizon (where the pdf jumps to 0; found from the sign of z over the cell's
+    // sub-cell corners) start at 128 and may reach 512.
+    std::vector<double> expected(const std::function<double(vec3)>& pdf, double n) const {
+        std::vector<double> e(size_t(na * nphi), 0.0);
+        for (int ia = 0; ia < na; ++ia)
+            for (int ip = 0; ip < nphi; ++ip) {
+                auto integrate = [&](int k) {
+                    double sum = 0.0;
+                    for (int i = 0; i < k; ++i)
+                        for (int j = 0; j < k; ++j) {
+                            const double a = (ia + (i + 0.5) / k) / na;
+                            const double phi = (ip + (j + 0.5) / k) / nphi * 2 * M_PI;
+                            double jac = 0.0;
+                            sum += pdf(direction(a, phi, jac)) * jac;
+                        }
+                    return n * sum / (double(k) * k) * (1.0 / na) * (2 * M_PI / nphi);
+                };
+                bool below = false, above = false;
+                for (int i = 0; i <= 16; ++i)
+                    for (int j = 0; j <= 16; ++j) {
+                        double jac = 0.0;
+                        const double a = std::min((ia + i / 16.0) / na, 1.0 - 1e-9);
+                        const vec3 w = direction(a, (ip + j / 16.0) / nphi * 2 * M_PI, jac);
+                        (w.z > 0.0f ? above : below) = true;
+                    }
+                const bool horizon = below && above;
+                int k = horizon ? 128 : 16;
+                const int kMax = horizon ? 512 : 256;
+                double v = integrate(k);
+                while (k < kMax) {
+                    k *= 2;
+                    const double finer = integrate(k);
+                    const bool converged = std::abs(finer - v) < 0.1 * std::sqrt(std::max(finer, 1.0));
+                    v = finer;
+                    if (converged) break;
+                }
+                e[size_t(ia * nphi + ip)] = v;
+            }
+        return e;
+    }
+};
+
+} // namespace raylab::test
