@@ -23,8 +23,12 @@ Scene randomSpheres(int n, int width, int height) {
     s.render.maxBounces = 4;
     s.camera.position = {0.0f, 6.0f, 18.0f};
     s.camera.lookAt = {0.0f, 0.0f, 0.0f};
-    s.materials = {{"ground", glm::vec3(0.5f), glm::vec3(0.0f), 0.0f},
-                   {"ball", glm::vec3(0.7f, 0.4f, 0.3f), glm::vec3(0.0f), 0.0f}};
+    Material ground, ball;
+    ground.name = "ground";
+    ground.albedo = glm::vec3(0.5f);
+    ball.name = "ball";
+    ball.albedo = glm::vec3(0.7f, 0.4f, 0.3f);
+    s.materials = {ground, ball};
     s.spheres.push_back({{0.0f, -1000.0f, 0.0f}, 1000.0f, 0});
     glsl::Rng rng = glsl::rngCreate(glm::uvec2(1, 2), 3u, 4u);
     for (int i = 1; i < n; ++i) {
