@@ -304,6 +304,9 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
         case Block::Heading: {
             if (b.level > 2) break;
             const std::string heading = trim(b.text);
+            // Sections are cut at heading lines; an underlined (setext) heading spans two.
+            if (!heading.empty() && trim(lines[size_t(b.line - 1)]).rfind('#', 0) != 0)
+                throw fail(b.line, "write headings as '# ' and '## ', not underlined");
             if (b.level == 1) {
                 if (section != Section::BeforeTitle)
                     throw fail(b.line, "a second '# ' title; a lesson has one, sections are '## '");

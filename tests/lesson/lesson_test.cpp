@@ -147,6 +147,8 @@ TEST(Lesson, StructureMistakesNameFileAndLine) {
     EXPECT_EQ(errorOf(replaced(kGood, "## Sources", "# Sources")),
               "lessons/t.md:39: error: a second '# ' title; a lesson has one, sections are '## '");
     EXPECT_EQ(errorOf("Text first.\n\n## Step 1: x\n"), "lessons/t.md:3: error: the lesson must start with a '# TITLE' heading");
+    EXPECT_EQ(errorOf(replaced(kGood, "## Questions", "Questions\n---------")),
+              "lessons/t.md:29: error: write headings as '# ' and '## ', not underlined");
 }
 
 TEST(Lesson, LoadLessonResolvesAgainstTheFolderAboveAndListsInNameOrder) {
