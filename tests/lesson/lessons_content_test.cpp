@@ -140,6 +140,9 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
                 const double n = std::stod(c.args[0]);
                 EXPECT_TRUE(n >= 0 && n < double(objectCount(scene)) && n == double(size_t(n)))
                     << at << ": no object " << c.args[0] << " in " << scene;
+            } else if (c.name == "scale") {
+                const double v = std::stod(c.args[0]);
+                EXPECT_TRUE(v >= 0.125 && v <= 2) << at << ": scale is 0.125 to 2";
             } else {
                 // A lesson step sets state; it never ends the viewer or writes files.
                 for (const char* banned : {"quit", "screenshot", "export", "save", "window", "click"})
