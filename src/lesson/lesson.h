@@ -1,0 +1,57 @@
+#pragma once
+// Lessons: Markdown files in lessons/ (format: lessons/README.md), each tied to a scene, made of
+// steps whose ```raylab fenced block holds script commands (script/script.h) that set the viewer's
+// state. Parsed with md4c. The viewer's Lesson panel shows them; tests load every one.
+#include "script/script.h"
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace raylab {
+
+// "FILE:LINE: error: what" (or "FILE: error: what" when no line applies).
+class LessonError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct LessonStep {
+    int line = 0;                         // line of the "## Step N: TITLE" heading
+    std::string title;                    // TITLE
+    std::string text;                     // the step's Markdown, without its heading and ```raylab block
+    std::vector<ScriptCommand> commands;  // the ```raylab block; ScriptCommand::line is the file's line
+};
+
+struct Lesson {
+    std::filesystem::path file;           // the lesson's Markdown file
+    std::filesystem::path root;           // the repository root: the folder above the lesson's folder
+    std::string title;                    // the "# " heading
+    std::string scene;                    // as written after "Scene:", relative to root
+    std::filesystem::path scenePath;      // root / scene; the file exists
+    int sceneLine = 0;
+    std::string introduction;             // Markdown between the title and the first "## " section
+    std::vector<std::string> goals;       // "## Learning goals" list items (Markdown, one line each)
+    std::vector<LessonStep> steps;        // "## Step N: TITLE" sections, N = 1, 2, ...
+    std::vector<std::string> questions;   // "## Questions" list items
+    std::string exercise;                 // "## Exercise" Markdown
+    std::string teacherNotes;             // "## Teacher's notes" Markdown (optional)
+    std::string sources;                  // "## Sources" Markdown (optional)
+
+    // A path as a script's `open` gives it, resolved like the scene: relative to root.
+    std::filesystem::path resolve(const std::string& path) const;
+};
+
+// Parses lesson text; `file` names it in messages and `root` resolves the scene. Throws LessonError
+// naming FILE:LINE (script errors in steps included).
+Lesson parseLesson(std::string_view text, const std::filesystem::path& file, const std::filesystem::path& root);
+
+// Reads `file`; the repository root is the folder above the lesson's folder (lessons/..).
+Lesson loadLesson(const std::filesystem::path& file);
+
+// Every *.md file of `dir` except README.md, in file-name order.
+std::vector<Lesson> loadLessons(const std::filesystem::path& dir);
+
+} // namespace raylab

@@ -1,0 +1,53 @@
+#pragma once
+// raylab's automation script: one command per line, '#' starts a comment. The viewer runs it
+// (raylab --script FILE, tests under Xvfb, reproducible screenshots) and lessons use it for the
+// state each step sets (lessons/README.md). This is the core copy: the viewer will use this one
+// (its own ui/app/script.* is to be deleted at merge). Commands:
+//   open PATH              load a scene (errors are shown, the previous scene stays)
+//   set KEY VALUE          edit a scene key (camera.fov 50, materials.red.albedo [1,0,0]);
+//                          selected.KEY: a key of the selected object or of its material
+//   click X Y              a left click at window pixel (X, Y), as the mouse would
+//   pick X Y               select the object at image pixel (X, Y) of the traced image
+//   select N               select object N (as the outliner does)
+//   debug-view NAME        beauty, normals, albedo, depth, material-id, nan, noise
+//   overlay boxes on|off   object bounding boxes;  overlay selected on|off: only the selected one
+//   scale S                resolution scale of the traced image (0.125 to 2)
+//   pause | resume | reset
+//   wait-spp N             wait until the image has N samples per pixel (or the target is reached)
+//   wait-frames N          let N UI frames pass
+//   screenshot PATH        the window as PNG;  export PATH: the render as EXR (linear) or PNG
+//   save PATH              the scene as JSON
+//   window W H             resize the window
+//   quit                   exit with status 0 (non-zero if any command failed)
+#include <filesystem>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace raylab {
+
+struct ScriptCommand {
+    int line = 0;   // 1-based line in the file the command came from
+    std::string name;
+    std::vector<std::string> args;
+    std::string text() const;   // "line N: name args..."
+};
+
+class ScriptError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// The names `debug-view` accepts, in the order the viewer lists them.
+std::span<const std::string_view> scriptDebugViews();
+
+// Parses and checks every line up front (command names, argument counts and numbers), so a typo
+// fails before the viewer opens. Errors read "FILE:LINE: error: what"; LINE is firstLine plus the
+// line's index in `text` (firstLine 1 for a whole file; a lesson passes the line after its fence).
+// `set` takes the rest of the line as its value (spaces allowed: [1, 0, 0]).
+std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& fileName, int firstLine = 1);
+std::vector<ScriptCommand> loadScript(const std::filesystem::path& file);
+
+} // namespace raylab

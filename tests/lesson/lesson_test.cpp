@@ -1,0 +1,180 @@
+// The lesson format (lessons/README.md): a well-formed lesson gives its parts, and each kind of
+// mistake is an error naming FILE:LINE.
+#include "lesson/lesson.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+using namespace raylab;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kRoot = fs::path(RAYLAB_SOURCE_DIR);
+
+// A complete lesson; tests change one thing in it.
+const std::string kGood = R"(# Lesson 0: A test
+
+Scene: scenes/default.json
+
+An *introduction* paragraph.
+
+## Learning goals
+
+- Say what a `ray` is.
+- Count to two.
+
+## Step 1: Look
+Some text.
+
+```raylab
+open scenes/default.json
+debug-view normals
+```
+
+More text after the block.
+
+## Step 2: Change
+```raylab
+set camera.fov 50
+reset
+wait-spp 4
+```
+
+## Questions
+
+1. Why?
+2. Why not,
+   on two lines?
+
+## Exercise
+
+Do it.
+
+## Sources
+
+- Kajiya 1986.
+)";
+
+std::string errorOf(const std::string& text) {
+    try {
+        parseLesson(text, "lessons/t.md", kRoot);
+    } catch (const LessonError& e) {
+        return e.what();
+    }
+    return "<no error>";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+} // namespace
+
+TEST(Lesson, ParsesEveryPart) {
+    const Lesson l = parseLesson(kGood, "lessons/t.md", kRoot);
+    EXPECT_EQ(l.title, "Lesson 0: A test");
+    EXPECT_EQ(l.scene, "scenes/default.json");
+    EXPECT_EQ(l.sceneLine, 3);
+    EXPECT_EQ(l.scenePath, (kRoot / "scenes/default.json").lexically_normal());
+    EXPECT_EQ(l.introduction, "An *introduction* paragraph.");
+    ASSERT_EQ(l.goals.size(), 2u);
+    EXPECT_EQ(l.goals[0], "Say what a `ray` is.");
+    ASSERT_EQ(l.steps.size(), 2u);
+    EXPECT_EQ(l.steps[0].title, "Look");
+    EXPECT_EQ(l.steps[0].line, 12);
+    EXPECT_EQ(l.steps[0].text, "Some text.\n\nMore text after the block.");
+    ASSERT_EQ(l.steps[0].commands.size(), 2u);
+    EXPECT_EQ(l.steps[0].commands[0].name, "open");
+    EXPECT_EQ(l.steps[0].commands[0].line, 16);   // the file's line, not the block's
+    EXPECT_EQ(l.steps[0].commands[1].args.at(0), "normals");
+    ASSERT_EQ(l.steps[1].commands.size(), 3u);
+    EXPECT_EQ(l.steps[1].commands[0].args.at(1), "50");
+    EXPECT_EQ(l.steps[1].text, "");
+    ASSERT_EQ(l.questions.size(), 2u);
+    EXPECT_EQ(l.questions[1], "Why not, on two lines?");
+    EXPECT_EQ(l.exercise, "Do it.");
+    EXPECT_EQ(l.sources, "- Kajiya 1986.");
+    EXPECT_EQ(l.resolve("scenes/furnace.json"), (kRoot / "scenes/furnace.json").lexically_normal());
+}
+
+TEST(Lesson, BadCommandNamesFileAndLine) {
+    EXPECT_EQ(errorOf(replaced(kGood, "debug-view normals", "debug-view heat")),
+              "lessons/t.md:17: error: unknown debug view 'heat' (beauty, normals, albedo, depth, material-id, "
+              "nan, noise)");
+    EXPECT_EQ(errorOf(replaced(kGood, "wait-spp 4", "wait-sp 4")), "lessons/t.md:26: error: unknown command 'wait-sp'");
+}
+
+TEST(Lesson, MissingSceneNamesFileAndLine) {
+    EXPECT_EQ(errorOf(replaced(kGood, "Scene: scenes/default.json", "Scene: scenes/nope.json")),
+              "lessons/t.md:3: error: scene 'scenes/nope.json' not found (" +
+                  (kRoot / "scenes/nope.json").lexically_normal().string() + ")");
+    EXPECT_EQ(errorOf(replaced(kGood, "Scene: scenes/default.json\n", "")),
+              "lessons/t.md:1: error: no 'Scene: PATH' line under the title");
+    EXPECT_EQ(errorOf(replaced(kGood, "Scene: scenes/default.json", "Scene:")),
+              "lessons/t.md:3: error: 'Scene:' needs a path (relative to the repository root)");
+}
+
+TEST(Lesson, UnclosedFenceNamesItsOpeningLine) {
+    // Cut the file after the second step's commands: its fence never closes.
+    const std::string cut = kGood.substr(0, kGood.find("wait-spp 4\n") + 11);
+    EXPECT_EQ(errorOf(cut), "lessons/t.md:23: error: unclosed code fence (it runs to the end of the file)");
+    EXPECT_EQ(errorOf(replaced(kGood, "Do it.", "```glsl\nfloat x;\n")),
+              "lessons/t.md:37: error: unclosed code fence (it runs to the end of the file)");
+}
+
+TEST(Lesson, StructureMistakesNameFileAndLine) {
+    EXPECT_EQ(errorOf(replaced(kGood, "## Step 2: Change", "## Step 3: Change")),
+              "lessons/t.md:22: error: step numbered 3, expected 2");
+    EXPECT_EQ(errorOf(replaced(kGood, "## Questions", "## Quiz")),
+              "lessons/t.md:29: error: unknown section 'Quiz'; expected 'Learning goals', 'Step N: TITLE', "
+              "'Questions', 'Exercise', 'Teacher's notes' or 'Sources'");
+    EXPECT_EQ(errorOf(replaced(kGood, "```raylab\nset", "```text\nset")),
+              "lessons/t.md:22: error: step 2 has no ```raylab block");
+    EXPECT_EQ(errorOf(replaced(kGood, "Some text.", "```raylab\nreset\n```")),
+              "lessons/t.md:17: error: a second ```raylab block in step 1 (one per step)");
+    EXPECT_EQ(errorOf(replaced(kGood, "An *introduction* paragraph.", "```raylab\nreset\n```")),
+              "lessons/t.md:5: error: a ```raylab block outside a '## Step N: TITLE' section");
+    EXPECT_EQ(errorOf(replaced(kGood, "- Say what a `ray` is.\n- Count to two.\n", "Nothing.\n")),
+              "lessons/t.md:7: error: no learning goals (a '## Learning goals' list)");
+    EXPECT_EQ(errorOf(replaced(kGood, "Do it.", "")), "lessons/t.md:35: error: no exercise (a '## Exercise' section)");
+    EXPECT_EQ(errorOf(replaced(kGood, "## Sources", "# Sources")),
+              "lessons/t.md:39: error: a second '# ' title; a lesson has one, sections are '## '");
+    EXPECT_EQ(errorOf("Text first.\n\n## Step 1: x\n"), "lessons/t.md:3: error: the lesson must start with a '# TITLE' heading");
+    EXPECT_EQ(errorOf(replaced(kGood, "## Questions", "Questions\n---------")),
+              "lessons/t.md:29: error: write headings as '# ' and '## ', not underlined");
+}
+
+TEST(Lesson, LoadLessonResolvesAgainstTheFolderAboveAndListsInNameOrder) {
+    const fs::path dir = fs::temp_directory_path() / "raylab_lesson_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "lessons");
+    fs::create_directories(dir / "scenes");
+    fs::copy_file(kRoot / "scenes/default.json", dir / "scenes/default.json");
+    for (const char* name : {"02-b.md", "01-a.md", "10-c.md"}) {
+        std::ofstream(dir / "lessons" / name) << replaced(kGood, "A test", name);
+    }
+    std::ofstream(dir / "lessons/README.md") << "# not a lesson\n";
+    const auto lessons = loadLessons(dir / "lessons");
+    ASSERT_EQ(lessons.size(), 3u);
+    EXPECT_EQ(lessons[0].title, "Lesson 0: 01-a.md");
+    EXPECT_EQ(lessons[1].title, "Lesson 0: 02-b.md");
+    EXPECT_EQ(lessons[2].title, "Lesson 0: 10-c.md");
+    EXPECT_EQ(lessons[0].scenePath, (dir / "scenes/default.json").lexically_normal());
+
+    std::ofstream(dir / "lessons/03-bad.md") << replaced(kGood, "reset\nwait", "reset now\nwait");
+    try {
+        loadLessons(dir / "lessons");
+        FAIL() << "no error";
+    } catch (const LessonError& e) {
+        EXPECT_EQ(std::string(e.what()), (dir / "lessons/03-bad.md").string() +
+                                             ":25: error: reset takes 0 argument(s), got 1");
+    }
+    fs::remove_all(dir);
+}

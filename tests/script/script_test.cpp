@@ -1,0 +1,80 @@
+// The automation script (src/script): commands parse with their arguments, comments and blank
+// lines are skipped, and every kind of mistake is reported as FILE:LINE before anything runs.
+#include "script/script.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace raylab;
+
+namespace {
+
+std::string errorOf(const std::string& text, int firstLine = 1) {
+    try {
+        parseScript(text, "s.txt", firstLine);
+    } catch (const ScriptError& e) {
+        return e.what();
+    }
+    return "<no error>";
+}
+
+} // namespace
+
+TEST(Script, ParsesEveryCommand) {
+    const auto cmds = parseScript("# a comment\n"
+                                  "open scenes/default.json\n"
+                                  "\n"
+                                  "set materials.red.albedo [1, 0, 0]   # trailing comment\n"
+                                  "click 10 20\npick 3 4\nselect 2\ndebug-view normals\n"
+                                  "overlay boxes on\noverlay selected off\nscale 0.5\n"
+                                  "pause\nresume\nreset\nwait-spp 16\nwait-frames 3\n"
+                                  "screenshot a.png\nexport b.exr\nsave c.json\nwindow 800 600\nquit\n",
+                                  "s.txt");
+    ASSERT_EQ(cmds.size(), 19u);
+    EXPECT_EQ(cmds[0].name, "open");
+    EXPECT_EQ(cmds[0].line, 2);
+    EXPECT_EQ(cmds[1].name, "set");
+    ASSERT_EQ(cmds[1].args.size(), 2u);
+    EXPECT_EQ(cmds[1].args[0], "materials.red.albedo");
+    EXPECT_EQ(cmds[1].args[1], "[1, 0, 0]");   // the rest of the line, spaces kept, comment dropped
+    EXPECT_EQ(cmds[1].line, 4);
+    EXPECT_EQ(cmds[18].name, "quit");
+    EXPECT_EQ(cmds[1].text(), "line 4: set materials.red.albedo [1, 0, 0]");
+}
+
+TEST(Script, LinesCountFromFirstLine) {
+    const auto cmds = parseScript("reset\n\nwait-spp 4\n", "lesson.md", 41);
+    ASSERT_EQ(cmds.size(), 2u);
+    EXPECT_EQ(cmds[0].line, 41);
+    EXPECT_EQ(cmds[1].line, 43);
+    EXPECT_EQ(errorOf("reset\nbogus\n", 41), "s.txt:42: error: unknown command 'bogus'");
+}
+
+TEST(Script, RejectsMistakesWithFileAndLine) {
+    EXPECT_EQ(errorOf("reset\nrender now\n"), "s.txt:2: error: unknown command 'render'");
+    EXPECT_EQ(errorOf("open\n"), "s.txt:1: error: open takes 1 argument(s), got 0");
+    EXPECT_EQ(errorOf("pause now\n"), "s.txt:1: error: pause takes 0 argument(s), got 1");
+    EXPECT_EQ(errorOf("set camera.fov\n"), "s.txt:1: error: set needs KEY VALUE");
+    EXPECT_EQ(errorOf("wait-spp lots\n"), "s.txt:1: error: wait-spp: 'lots' is not a number");
+    EXPECT_EQ(errorOf("window 800 tall\n"), "s.txt:1: error: window: 'tall' is not a number");
+    EXPECT_EQ(errorOf("debug-view heat\n"),
+              "s.txt:1: error: unknown debug view 'heat' (beauty, normals, albedo, depth, material-id, nan, noise)");
+    EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected on|off");
+    EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected on|off");
+}
+
+TEST(Script, EveryDebugViewNameParses) {
+    ASSERT_EQ(scriptDebugViews().size(), 7u);
+    for (std::string_view v : scriptDebugViews())
+        EXPECT_EQ(errorOf("debug-view " + std::string(v) + "\n"), "<no error>") << v;
+}
+
+TEST(Script, MissingFileIsAnError) {
+    try {
+        loadScript("/nonexistent/raylab.script");
+        FAIL() << "no error";
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/raylab.script: error: cannot open the script");
+    }
+}
