@@ -40,21 +40,9 @@ const std::vector<NeedsOtherBranch> kNeedsOtherBranches = {
     {"04-ray-triangle.md", "scenes/cornell_box.json", "issue-geometry"},
     {"04-ray-triangle.md", "scenes/displaced_terrain.json", "issue-geometry"},
     {"05-ray-box-bvh.md", "scenes/displaced_terrain.json", "issue-geometry"},
-    {"08-microfacets-ggx-fresnel.md", "materials.*.f0", "issue-materials"},
-    {"08-microfacets-ggx-fresnel.md", "materials.*.roughness", "issue-materials"},
-    {"08-microfacets-ggx-fresnel.md", "scenes/materials.json", "issue-materials"},
-    {"09-importance-sampling-nee-mis.md", "render.nee", "issue-materials"},
-    {"09-importance-sampling-nee-mis.md", "render.mis", "issue-materials"},
-    {"09-importance-sampling-nee-mis.md", "materials.*.f0", "issue-materials"},
-    {"09-importance-sampling-nee-mis.md", "materials.*.roughness", "issue-materials"},
-    {"09-importance-sampling-nee-mis.md", "scenes/veach_mis.json", "issue-materials"},
     {"10-camera-depth-of-field.md", "camera.aperture", "issue-geometry"},
     {"10-camera-depth-of-field.md", "camera.focus_distance", "issue-geometry"},
     {"10-camera-depth-of-field.md", "scenes/depth_of_field.json", "issue-geometry"},
-    {"12-glass-refraction.md", "materials.*.transmission", "issue-materials"},
-    {"12-glass-refraction.md", "materials.*.ior", "issue-materials"},
-    {"12-glass-refraction.md", "materials.*.roughness", "issue-materials"},
-    {"12-glass-refraction.md", "render.nee", "issue-materials"},
 };
 
 bool keyMatches(const std::string& pattern, const std::string& key) {
