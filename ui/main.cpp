@@ -159,6 +159,8 @@ int main(int argc, char** argv) {
     {
         Viewer viewer(log);
         UiState ui;
+        // Scripted runs take screenshots: no tooltip where the (unmoved) pointer happens to rest.
+        if (script) ui.pixelTooltip = false;
         if (!scenePath.empty()) {
             ui.openPath = scenePath;
             ui.savePath = (fs::path(scenePath).parent_path() / (fs::path(scenePath).stem().string() + "-edited.json")).string();

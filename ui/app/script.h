@@ -2,7 +2,8 @@
 // The viewer's automation script (raylab --script FILE): one command per line, '#' starts a
 // comment. Used by the tests under Xvfb and for reproducible screenshots. Commands:
 //   open PATH              load a scene (errors are shown, the previous scene stays)
-//   set KEY VALUE          edit a scene key (camera.fov 50, materials.red.albedo [1,0,0])
+//   set KEY VALUE          edit a scene key (camera.fov 50, materials.red.albedo [1,0,0]);
+//                          selected.KEY: a key of the selected object or of its material
 //   click X Y              a left click at window pixel (X, Y), as the mouse would
 //   pick X Y               select the object at image pixel (X, Y) of the traced image
 //   select N               select object N (as the outliner does)

@@ -56,11 +56,27 @@ bool ScriptRunner::step(Viewer& viewer, UiState& ui, ScriptHost& host, double no
     return false;
 }
 
+namespace {
+
+// "selected.KEY" names a key of the selected object ("selected.radius") or of its material
+// ("selected.albedo"), as the Material panel shows them.
+std::string selectedKey(const Viewer& viewer, const std::string& key) {
+    const std::string prefix = "selected.";
+    if (key.rfind(prefix, 0) != 0 || viewer.selected < 0) return key;
+    const std::string field = key.substr(prefix.size());
+    for (const SphereParamSpec& p : sphereParameters())
+        if (p.key == field) return "objects." + std::to_string(viewer.selected) + "." + field;
+    const int m = viewer.scene().spheres[std::size_t(viewer.selected)].material;
+    return "materials." + std::to_string(m) + "." + field;
+}
+
+} // namespace
+
 bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, ScriptHost& host) {
     const auto& a = c.args;
     const auto num = [&](std::size_t i) { return std::stod(a[i]); };
     if (c.name == "open") return viewer.openScene(a[0]);
-    if (c.name == "set") return viewer.set(a[0], a[1]);
+    if (c.name == "set") return viewer.set(selectedKey(viewer, a[0]), a[1]);
     if (c.name == "click") {
         viewportClick(viewer, ui, float(num(0)), float(num(1)));
         return true;

@@ -1,0 +1,148 @@
+// The viewer's model on a headless context: parity with the CLI's renderer, triggers, debug views,
+// failed loads that keep the previous scene, reload on change.
+#include "app/viewer.h"
+
+#include "render/render_helpers.h"
+#include "support/gl_test.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace raylab::ui {
+namespace {
+
+using test::GlTest;
+
+class ViewerTest : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        viewer = std::make_unique<Viewer>(log);
+        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json"))) << viewer->lastError();
+        ASSERT_TRUE(viewer->set("render.width", "48"));
+        ASSERT_TRUE(viewer->set("render.height", "27"));
+    }
+    // Traces with a tiny frame budget so passes are cut into bands (and chunks for rpp > 1).
+    void traceToTarget() {
+        for (int i = 0; i < 100000 && !viewer->converged(); ++i) viewer->update(1e-5);
+        ASSERT_TRUE(viewer->converged());
+    }
+    Log log{false};
+    std::unique_ptr<Viewer> viewer;
+};
+
+TEST_F(ViewerTest, SameImageAsTheHeadlessRendererForOneSamplePasses) {
+    ASSERT_TRUE(viewer->set("render.spp", "3"));
+    traceToTarget();
+    const Image shown = viewer->tracer()->readImage();
+    const Image reference = test::render(viewer->scene());   // raylab-render's path: whole passes
+    ASSERT_EQ(shown.rgba.size(), reference.rgba.size());
+    EXPECT_EQ(shown.rgba, reference.rgba);   // bands trace the very samples of whole passes
+}
+
+TEST_F(ViewerTest, ChunkedPassesMatchUpToTheRoundingOfTheRunningMean) {
+    ASSERT_TRUE(viewer->set("render.rpp", "4"));
+    ASSERT_TRUE(viewer->set("render.spp", "8"));
+    traceToTarget();
+    EXPECT_EQ(viewer->tracer()->passes(), 2u);
+    const Image shown = viewer->tracer()->readImage();
+    const Image reference = test::render(viewer->scene());
+    // Same samples; only the order of the running-mean updates differs (float32: a few ulps).
+    double worst = 0.0;
+    for (std::size_t i = 0; i < shown.rgba.size(); ++i)
+        worst = std::max(worst, std::abs(double(shown.rgba[i]) - reference.rgba[i]) / std::max(1e-3, double(std::abs(reference.rgba[i]))));
+    EXPECT_LT(worst, 1e-5);
+}
+
+TEST_F(ViewerTest, EditsDoWhatTheirTriggerSays) {
+    ASSERT_TRUE(viewer->set("render.spp", "2"));
+    traceToTarget();
+    ASSERT_EQ(viewer->tracer()->samplesPerPixel(), 2u);
+    ASSERT_TRUE(viewer->set("render.exposure", "1"));   // redisplay: the samples stay
+    EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 2u);
+    ASSERT_TRUE(viewer->set("camera.fov", "50"));       // reset accumulation
+    EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 0u);
+    EXPECT_FALSE(viewer->set("camera.fov", "500"));     // refused: nothing changes
+    EXPECT_FLOAT_EQ(viewer->scene().camera.fovY, 50.0f);
+    EXPECT_NE(viewer->lastError().find("camera.fov"), std::string::npos);
+    viewer->setResolutionScale(0.5f);
+    EXPECT_EQ(viewer->tracer()->width(), 24);
+    EXPECT_EQ(viewer->tracer()->height(), 14);
+}
+
+TEST_F(ViewerTest, DebugViewsShowNormalsNotRadiance) {
+    ASSERT_TRUE(viewer->set("render.spp", "2"));
+    traceToTarget();
+    const Image beauty = viewer->tracer()->readImage();
+    viewer->setDebugView(DebugView::Normals);
+    EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 0u);   // another quantity: restarted
+    traceToTarget();
+    const Image normals = viewer->tracer()->readImage();
+    EXPECT_GT(test::rmse(beauty, normals), 0.05);
+    // The bottom-centre pixel sees the flat-ish ground: normal (0, 1, 0) shown as (0.5, 1, 0.5).
+    const glm::vec3 ground = normals.rgb(24, 26);
+    EXPECT_NEAR(ground.x, 0.5f, 0.02f);
+    EXPECT_NEAR(ground.y, 1.0f, 0.02f);
+    EXPECT_NEAR(ground.z, 0.5f, 0.02f);
+    for (std::size_t i = 0; i < normals.rgba.size(); ++i) {
+        EXPECT_GE(normals.rgba[i], 0.0f);
+        EXPECT_LE(normals.rgba[i], 1.0f);
+    }
+    // Noise and NaN views are drawn from the beauty path's moments: switching to them from beauty
+    // keeps the samples.
+    viewer->setDebugView(DebugView::Beauty);
+    traceToTarget();
+    viewer->setDebugView(DebugView::Noise);
+    EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 2u);
+    EXPECT_NE(viewer->displayTexture(), 0u);
+}
+
+TEST_F(ViewerTest, ABrokenSceneFileKeepsThePreviousSceneAndImage) {
+    ASSERT_TRUE(viewer->set("render.spp", "2"));
+    traceToTarget();
+    const Image before = viewer->tracer()->readImage();
+    const auto broken = std::filesystem::temp_directory_path() / "raylab_viewer_broken.json";
+    std::ofstream(broken) << "{\n  \"camera\": { \"fov\": -3 }\n}\n";
+    EXPECT_FALSE(viewer->openScene(broken));
+    EXPECT_NE(viewer->lastError().find("raylab_viewer_broken.json:2:"), std::string::npos) << viewer->lastError();
+    EXPECT_EQ(viewer->scene().render.width, 48);
+    EXPECT_EQ(viewer->tracer()->readImage().rgba, before.rgba);
+    ASSERT_FALSE(log.entries().empty());
+    EXPECT_EQ(log.entries().front().level, LogEntry::Level::Error);
+    std::filesystem::remove(broken);
+}
+
+TEST_F(ViewerTest, ReloadsTheSceneWhenTheFileChanges) {
+    const auto file = std::filesystem::temp_directory_path() / "raylab_viewer_reload.json";
+    std::ofstream(file) << R"({"render": {"width": 16, "height": 8}, "camera": {"fov": 30}, "objects": [{"type": "sphere"}]})";
+    ASSERT_TRUE(viewer->openScene(file)) << viewer->lastError();
+    EXPECT_FLOAT_EQ(viewer->scene().camera.fovY, 30.0f);
+    std::ofstream(file) << R"({"render": {"width": 16, "height": 8}, "camera": {"fov": 45.5}, "objects": [{"type": "sphere"}]})";
+    viewer->pollFileChanges();
+    EXPECT_FLOAT_EQ(viewer->scene().camera.fovY, 45.5f);
+    std::ofstream(file) << R"({"render": {"width": 16, "height": 8}, "camera": {"fov": "wide"}, "objects": [{"type": "sphere"}]})";
+    viewer->pollFileChanges();   // broken on disk: the running scene stays
+    EXPECT_FLOAT_EQ(viewer->scene().camera.fovY, 45.5f);
+    EXPECT_NE(viewer->lastError().find("raylab_viewer_reload.json:1:"), std::string::npos) << viewer->lastError();
+    std::filesystem::remove(file);
+}
+
+TEST_F(ViewerTest, SavedScenesLoadBackTheSame) {
+    ASSERT_TRUE(viewer->set("materials.red.albedo", "[0.1, 0.2, 0.3]"));
+    const auto file = std::filesystem::temp_directory_path() / "raylab_viewer_saved.json";
+    ASSERT_TRUE(viewer->saveScene(file));
+    const Scene back = loadScene(file);
+    EXPECT_EQ(sceneToJson(back), sceneToJson(viewer->scene()));
+    std::filesystem::remove(file);
+}
+
+TEST_F(ViewerTest, PickingSelectsTheObjectUnderThePixel) {
+    EXPECT_EQ(viewer->pick(24.0f, 26.0f), 0);   // the ground
+    EXPECT_EQ(viewer->selected, 0);
+    EXPECT_FALSE(viewer->pick(24.0f, 0.5f));    // sky
+    EXPECT_EQ(viewer->selected, -1);
+}
+
+} // namespace
+} // namespace raylab::ui
