@@ -250,7 +250,7 @@ void Viewer::restart() {
     stats_.traceSeconds = 0.0;
     passWall_ = 0.0;
     ++stats_.restarts;
-    displayDirty_ = true;
+    restartTime_ = now();
 }
 
 // --- render control ------------------------------------------------------------------------------
@@ -272,7 +272,7 @@ void Viewer::setDebugView(DebugView view) {
     if (view == view_) return;
     const bool retrace = tracedDebugView(view) || tracedDebugView(view_);
     view_ = view;
-    displayDirty_ = true;
+    displayDirty_ = !retrace;   // a retraced view shows once its first pass is complete
     if (!tracer_) return;
     tracer_->program().set("uDebugView", int(view_));
     if (retrace) resetAccumulation();   // a different quantity accumulates
@@ -315,7 +315,7 @@ void Viewer::update(double budgetSeconds) {
         }
     } while (now() - start < budgetSeconds);
     stats_.frameTraceMs = (now() - start) * 1e3;
-    displayDirty_ = true;
+    tracedSinceDisplay_ = true;
 }
 
 void Viewer::ensureDisplayTargets() {
@@ -334,10 +334,18 @@ void Viewer::ensureDisplayTargets() {
 }
 
 unsigned Viewer::displayTexture() {
+    stats_.frameDisplayMs = 0.0;
     if (!hasScene()) return 0;
     ensureDisplayTargets();
-    if (!displayDirty_) return displayTexture_;
     const double t0 = now();
+    const std::uint64_t spp = tracer_->samplesPerPixel();
+    bool show = displayDirty_;
+    if (tracedSinceDisplay_) {
+        const bool firstPassPending = spp == 0 && t0 - restartTime_ < 0.25;
+        const bool passDone = !slicer_.midPass();
+        show = show || paused_ || (!firstPassPending && (passDone || t0 - lastDisplay_ > 0.25));
+    }
+    if (!show) return displayTexture_;
     const ShaderProgram& p = display_;
     p.set("uImageSize", glm::ivec2(displayWidth_, displayHeight_));
     p.set("uView", int(view_));
@@ -359,7 +367,10 @@ unsigned Viewer::displayTexture() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glFinish();   // so the time below is the pass's (llvmpipe runs it at the flush)
     stats_.displayMs = (now() - t0) * 1e3;
+    stats_.frameDisplayMs = stats_.displayMs;
     displayDirty_ = false;
+    tracedSinceDisplay_ = false;
+    lastDisplay_ = now();
     return displayTexture_;
 }
 

@@ -23,7 +23,8 @@ struct ViewerStats {
     double traceSeconds = 0.0;       // GPU tracing time since accumulation restarted
     double lastPassMs = 0.0;         // wall time of the last complete pass (all its slices)
     double frameTraceMs = 0.0;       // tracing time spent in the last UI frame
-    double displayMs = 0.0;          // the display pass in the last UI frame
+    double displayMs = 0.0;          // the last display pass
+    double frameDisplayMs = 0.0;     // the display pass in the last UI frame (0 when not needed)
     double shaderCompileSeconds = 0.0;
     std::uint64_t restarts = 0;      // times accumulation restarted
 };
@@ -84,8 +85,12 @@ public:
     bool converged() const;
     // Traces slices of passes for about budgetSeconds (at least one slice unless paused/converged).
     void update(double budgetSeconds);
-    // Runs the display pass if anything changed; returns the RGBA8 texture to show.
+    // Runs the display pass when there is something new to show; returns the RGBA8 texture to show.
+    // New samples are shown when a pass completes (or every 0.25 s during long passes, or at once
+    // when paused); after a restart the previous picture stays until the first pass is complete,
+    // so moving the camera never flashes a half-traced image.
     unsigned displayTexture();
+    void redisplay() { displayDirty_ = true; }   // after changing depthScale or noiseScale
     // The linear value of image pixel (x, y), top-left origin, as accumulated.
     glm::vec4 pixelValue(int x, int y) const;
     // Select the object seen at image pixel (x, y); logs what was picked.
@@ -127,8 +132,10 @@ private:
     unsigned displayVao_ = 0;
     int displayWidth_ = 0;
     int displayHeight_ = 0;
-    bool displayDirty_ = true;
-    std::uint64_t displayedSpp_ = ~std::uint64_t(0);
+    bool displayDirty_ = true;        // display settings or targets changed: show at once
+    bool tracedSinceDisplay_ = false; // samples traced that the display texture does not show yet
+    double lastDisplay_ = 0.0;        // when the display pass last ran (seconds)
+    double restartTime_ = 0.0;        // when accumulation last restarted
 };
 
 } // namespace raylab::ui

@@ -46,11 +46,11 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
     }
     switch (viewer.debugView()) {
     case DebugView::Depth:
-        if (ImGui::DragFloat("black at distance", &viewer.depthScale, 0.1f, 0.01f, 1e5f)) viewer.setDebugView(DebugView::Depth);
+        if (ImGui::DragFloat("black at distance", &viewer.depthScale, 0.1f, 0.01f, 1e5f)) viewer.redisplay();
         ImGui::TextDisabled("white = at the eye, black = this far or a miss");
         break;
     case DebugView::Noise: {
-        ImGui::DragFloat("red at rel. error", &viewer.noiseScale, 0.005f, 0.001f, 10.0f);
+        if (ImGui::DragFloat("red at rel. error", &viewer.noiseScale, 0.005f, 0.001f, 10.0f)) viewer.redisplay();
         ImGui::TextDisabled("standard error of the mean luminance / mean");
         const std::string hi = std::to_string(viewer.noiseScale).substr(0, 5);
         legend("0", hi.c_str());
