@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 namespace raylab::ui {
 namespace {
@@ -135,6 +137,35 @@ TEST_F(ViewerTest, SavedScenesLoadBackTheSame) {
     const Scene back = loadScene(file);
     EXPECT_EQ(sceneToJson(back), sceneToJson(viewer->scene()));
     std::filesystem::remove(file);
+}
+
+TEST_F(ViewerTest, AShaderThatFailsToCompileKeepsThePreviousShadersRunning) {
+    ASSERT_TRUE(viewer->set("render.spp", "1"));
+    traceToTarget();
+    const Image before = viewer->tracer()->readImage();
+    // A copy of the shaders with an error on line 3 of the debug-view include.
+    const auto dir = std::filesystem::temp_directory_path() / "raylab_viewer_bad_shaders";
+    std::filesystem::remove_all(dir);
+    std::filesystem::copy(std::string(RAYLAB_SOURCE_DIR) + "/shaders", dir, std::filesystem::copy_options::recursive);
+    {
+        std::ifstream in(dir / "include" / "debug_views.glsl");
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string src = text.str();
+        const auto third = src.find('\n', src.find('\n') + 1) + 1;
+        src.insert(third, "this is not glsl;\n");
+        std::ofstream(dir / "include" / "debug_views.glsl") << src;
+    }
+    ::setenv("RAYLAB_SHADER_DIR", dir.c_str(), 1);
+    const bool reloaded = viewer->reloadShaders();
+    ::unsetenv("RAYLAB_SHADER_DIR");
+    EXPECT_FALSE(reloaded);
+    EXPECT_NE(viewer->lastError().find("debug_views.glsl:3"), std::string::npos) << viewer->lastError();
+    EXPECT_EQ(viewer->tracer()->readImage().rgba, before.rgba);
+    ASSERT_TRUE(viewer->set("render.spp", "2"));   // the previous program still traces
+    traceToTarget();
+    EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 2u);
+    std::filesystem::remove_all(dir);
 }
 
 TEST_F(ViewerTest, PickingSelectsTheObjectUnderThePixel) {
