@@ -242,9 +242,12 @@ int main(int argc, char** argv) {
         }
         if (reportFrames) {
             times.report();
-            std::printf("target %.1f ms/frame; tracing budget now %.2f ms; %llu spp traced; image %d x %d\n", targetFrameMs,
-                        pacer.traceBudget() * 1e3, (unsigned long long)(viewer.tracer() ? viewer.tracer()->samplesPerPixel() : 0),
-                        viewer.imageWidth(), viewer.imageHeight());
+            const PathTracer* t = viewer.tracer();
+            const double traced = viewer.stats().traceSeconds;
+            std::printf("target %.1f ms/frame; tracing budget now %.2f ms; %llu spp traced in %.2f s of tracing "
+                        "(%.2f Mpaths/s); image %d x %d\n",
+                        targetFrameMs, pacer.traceBudget() * 1e3, (unsigned long long)(t ? t->samplesPerPixel() : 0), traced,
+                        t && traced > 0 ? double(t->pathsTraced()) / traced * 1e-6 : 0.0, viewer.imageWidth(), viewer.imageHeight());
         }
     }
     ImGui_ImplOpenGL3_Shutdown();

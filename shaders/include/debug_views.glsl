@@ -1,7 +1,8 @@
-// Debug views of the viewer, traced in place of the beauty path when uDebugView != 0, and the
-// per-pixel moments (mean luminance², non-finite count) behind the noise and NaN/Inf views.
-// Only compiled when the host defines RAYLAB_DEBUG_VIEWS (the viewer does; raylab-render does not,
-// so the headless tracer pays nothing). Binding points 16-19 belong to the viewer. GLSL only.
+// Debug views of the viewer. RAYLAB_DEBUG_VIEWS: the view selected by uDebugView (normals, albedo,
+// depth, material id) is traced in place of the beauty path. RAYLAB_DEBUG_MOMENTS: the beauty path
+// also keeps per-pixel moments (mean luminance², non-finite count) for the noise and NaN/Inf views.
+// The viewer compiles a tracer variant per need; the plain beauty variant and raylab-render define
+// neither and pay nothing. Binding points 16-19 belong to the viewer. GLSL only.
 #ifndef RAYLAB_DEBUG_VIEWS_GLSL
 #define RAYLAB_DEBUG_VIEWS_GLSL
 #include "compat.glsl"
@@ -20,11 +21,8 @@ const int DEBUG_DEPTH = 3;
 const int DEBUG_MATERIAL_ID = 4;
 const int DEBUG_FIRST_DISPLAY_ONLY = 5;
 
+#ifdef RAYLAB_DEBUG_VIEWS
 uniform int uDebugView;
-
-// Per pixel (row-major from the bottom row): x = running mean of luminance², y = non-finite
-// samples so far. Cleared by the host whenever accumulation restarts.
-layout(std430, binding = 16) buffer DebugMomentsBuffer { vec4 debugMoments[]; };
 
 // A colour per id that neighbouring ids do not share (golden-ratio hue steps).
 vec3 debugIdColor(uint id) {
@@ -46,6 +44,13 @@ vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
     if (uDebugView == DEBUG_DEPTH) return vec3(hit.t);
     return debugIdColor(hit.material);
 }
+
+#endif
+
+#ifdef RAYLAB_DEBUG_MOMENTS
+// Per pixel (row-major from the bottom row): x = running mean of luminance², y = non-finite
+// samples so far. Cleared by the host whenever accumulation restarts.
+layout(std430, binding = 16) buffer DebugMomentsBuffer { vec4 debugMoments[]; };
 
 struct DebugMoments {
     float sumSq;      // sum of luminance² over this pass's samples
@@ -69,5 +74,6 @@ void debugMomentsStore(DebugMoments m, ivec2 pixel) {
     float n = float(uSampleStart + uint(uRpp));
     debugMoments[i] = vec4(old.x + (m.sumSq - float(uRpp) * old.x) / n, old.y + float(m.nonFinite), 0.0f, 0.0f);
 }
+#endif
 
 #endif

@@ -7,7 +7,7 @@
 #include "camera.glsl"
 #include "scene_data.glsl"
 #include "integrator.glsl"
-#ifdef RAYLAB_DEBUG_VIEWS
+#if defined(RAYLAB_DEBUG_VIEWS) || defined(RAYLAB_DEBUG_MOMENTS)
 #include "debug_views.glsl"   // the viewer's debug views and per-pixel moments
 #endif
 
@@ -17,7 +17,7 @@ void tracePixelPass(ivec2 pixel) {
     vec3 sum = vec3(0.0f);
     uint rays = 0u;
     uint nonFinite = 0u;
-#ifdef RAYLAB_DEBUG_VIEWS
+#ifdef RAYLAB_DEBUG_MOMENTS
     DebugMoments moments = debugMomentsBegin();
 #endif
     for (int s = 0; s < uRpp; ++s) {
@@ -35,7 +35,7 @@ void tracePixelPass(ivec2 pixel) {
         if (k % uint(RAYLAB_INJECT_NONFINITE) == 0u)
             L = vec3(uintBitsToFloat((k & 1u) == 0u ? 0x7fc00000u : 0x7f800000u));
 #endif
-#ifdef RAYLAB_DEBUG_VIEWS
+#ifdef RAYLAB_DEBUG_MOMENTS
         debugMomentsAdd(moments, L);
 #endif
         if (any(isnan(L)) || any(isinf(L))) {
@@ -51,7 +51,7 @@ void tracePixelPass(ivec2 pixel) {
         mean = old + (sum - float(uRpp) * old) / float(uSampleStart + uint(uRpp));
     }
     imageStore(uAccum, pixel, vec4(mean, 1.0f));
-#ifdef RAYLAB_DEBUG_VIEWS
+#ifdef RAYLAB_DEBUG_MOMENTS
     debugMomentsStore(moments, pixel);
 #endif
     if (nonFinite > 0u) atomicAdd(nonFiniteSamples, nonFinite);

@@ -18,12 +18,6 @@ double now() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-TracerOptions viewerTracerOptions() {
-    TracerOptions o;
-    o.entry = TracerEntry::Fragment;   // bands need the scissor of the fragment entry
-    o.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
-    return o;
-}
 
 int toneMapOp(ToneMap t) {
     switch (t) {
@@ -137,19 +131,55 @@ bool Viewer::exportRender(const std::filesystem::path& file) {
     }
 }
 
-bool Viewer::reloadShaders() {
+Viewer::Variant Viewer::variantFor(DebugView view) {
+    if (tracedDebugView(view)) return kViews;
+    if (view == DebugView::NonFinite || view == DebugView::Noise) return kMoments;
+    return kBeauty;
+}
+
+std::unique_ptr<PathTracer> Viewer::compileVariant(Variant v) {
+    TracerOptions o;
+    o.entry = TracerEntry::Fragment;   // bands need the scissor of the fragment entry
+    if (v == kMoments) o.extraDefines.emplace_back("RAYLAB_DEBUG_MOMENTS", "1");
+    if (v == kViews) o.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
     const double t0 = now();
+    auto tracer = std::make_unique<PathTracer>(o);
+    stats_.shaderCompileSeconds = now() - t0;
+    return tracer;
+}
+
+bool Viewer::activateVariant(Variant v) {
+    if (!tracers_[v]) {
+        try {
+            tracers_[v] = compileVariant(v);
+        } catch (const std::exception& e) {
+            lastError_ = e.what();
+            log_.error(lastError_);
+            return false;
+        }
+    }
+    tracer_ = tracers_[v].get();
+    variant_ = v;
+    if (hasScene_) {
+        tracer_->setScene(tracedScene());
+        restart();
+    }
+    return true;
+}
+
+bool Viewer::reloadShaders() {
     try {
-        auto tracer = std::make_unique<PathTracer>(viewerTracerOptions());
+        auto tracer = compileVariant(variant_);
         ShaderProgram display = ShaderProgram::graphics("entry/fullscreen.vert", "entry/display.frag");
-        tracer_ = std::move(tracer);
+        for (auto& t : tracers_) t.reset();   // the others recompile when next needed
+        tracers_[variant_] = std::move(tracer);
+        tracer_ = tracers_[variant_].get();
         display_ = std::move(display);
     } catch (const std::exception& e) {
         lastError_ = e.what();
         log_.error(lastError_ + (tracer_ ? " (the previous shaders stay)" : ""));
         return false;
     }
-    stats_.shaderCompileSeconds = now() - t0;
     lastError_.clear();
     if (hasScene_) {
         tracer_->setScene(tracedScene());
@@ -270,12 +300,20 @@ void Viewer::setResolutionScale(float scale) {
 
 void Viewer::setDebugView(DebugView view) {
     if (view == view_) return;
-    const bool retrace = tracedDebugView(view) || tracedDebugView(view_);
+    const DebugView previous = view_;
     view_ = view;
-    displayDirty_ = !retrace;   // a retraced view shows once its first pass is complete
     if (!tracer_) return;
-    tracer_->program().set("uDebugView", int(view_));
-    if (retrace) resetAccumulation();   // a different quantity accumulates
+    const Variant v = variantFor(view);
+    if (v != variant_) {
+        if (!activateVariant(v)) {
+            view_ = previous;   // the variant did not compile: stay with what works
+            return;
+        }
+    } else if (v == kViews) {
+        resetAccumulation();   // another quantity accumulates
+    } else {
+        displayDirty_ = true;  // same samples, drawn differently
+    }
 }
 
 int Viewer::imageWidth() const { return std::max(1, int(std::lround(float(scene_.render.width) * scale_))); }
@@ -354,7 +392,7 @@ unsigned Viewer::displayTexture() {
     p.set("uDepthScale", depthScale);
     p.set("uNoiseScale", noiseScale);
     p.set("uSpp", float(tracer_->samplesPerPixel()));
-    p.set("uHasMoments", tracer_->samplesPerPixel() > 0 ? 1 : 0);
+    p.set("uHasMoments", variant_ == kMoments && tracer_->samplesPerPixel() > 0 ? 1 : 0);
     glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
     glViewport(0, 0, displayWidth_, displayHeight_);
     glDisable(GL_BLEND);
@@ -398,7 +436,8 @@ std::optional<int> Viewer::pick(float x, float y) {
 }
 
 std::string Viewer::shaderVariant() const {
-    return tracer_ ? tracer_->variantName() + " + debug views" : "none (shader error)";
+    static const char* const extra[] = {"", " + moments", " + debug views"};
+    return tracer_ ? tracer_->variantName() + extra[variant_] : "none (shader error)";
 }
 
 } // namespace raylab::ui

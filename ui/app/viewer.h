@@ -97,7 +97,7 @@ public:
     std::optional<int> pick(float x, float y);
 
     // --- counters ----------------------------------------------------------------------------------
-    const PathTracer* tracer() const { return tracer_.get(); }
+    const PathTracer* tracer() const { return tracer_; }
     const ViewerStats& stats() const { return stats_; }
     std::string shaderVariant() const;
     // The most recent error of a load, reload, compile or edit ("" once something succeeds).
@@ -115,7 +115,15 @@ private:
     Scene scene_;
     std::filesystem::path scenePath_;
     FileWatcher watcher_;
-    std::unique_ptr<PathTracer> tracer_;
+    // Tracer variants, compiled when first needed: the plain beauty tracer (what raylab-render runs),
+    // one that also keeps per-pixel moments (noise, NaN views), one that traces the debug views.
+    enum Variant { kBeauty = 0, kMoments = 1, kViews = 2 };
+    static Variant variantFor(DebugView view);
+    std::unique_ptr<PathTracer> compileVariant(Variant v);   // throws ShaderError
+    bool activateVariant(Variant v);
+    std::unique_ptr<PathTracer> tracers_[3];
+    PathTracer* tracer_ = nullptr;
+    Variant variant_ = kBeauty;
     ShaderProgram display_;
     PassSlicer slicer_;
     bool hasScene_ = false;
