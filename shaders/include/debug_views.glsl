@@ -2,7 +2,7 @@
 // depth, material id) is traced in place of the beauty path. RAYLAB_DEBUG_MOMENTS: the beauty path
 // also keeps per-pixel moments (mean luminance², non-finite count) for the noise and NaN/Inf views.
 // The viewer compiles a tracer variant per need; the plain beauty variant and raylab-render define
-// neither and pay nothing. Binding points 16-19 belong to the viewer. GLSL only.
+// neither: then this file adds nothing. (Always included: the include expander does not see #if.) Binding points 16-19 belong to the viewer. GLSL only.
 #ifndef RAYLAB_DEBUG_VIEWS_GLSL
 #define RAYLAB_DEBUG_VIEWS_GLSL
 #include "compat.glsl"
@@ -10,7 +10,6 @@
 #include "ray.glsl"
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
-#include "integrator.glsl"
 
 // Must match ui/app/debug_view.h. Views >= DEBUG_FIRST_DISPLAY_ONLY trace the beauty path and
 // are drawn from the moments by the display shader.
@@ -19,10 +18,25 @@ const int DEBUG_NORMALS = 1;
 const int DEBUG_ALBEDO = 2;
 const int DEBUG_DEPTH = 3;
 const int DEBUG_MATERIAL_ID = 4;
-const int DEBUG_FIRST_DISPLAY_ONLY = 5;
+const int DEBUG_FIRST_DISPLAY_ONLY = 5;   // 5 NaN/Inf, 6 noise
+const int DEBUG_BOUNCE_K = 7;             // only light that reached the eye after uDebugBounce bounces
+const int DEBUG_DIRECT = 8;               // emitters and sky seen directly or after one bounce
+const int DEBUG_INDIRECT = 9;             // light after two or more bounces
 
 #ifdef RAYLAB_DEBUG_VIEWS
 uniform int uDebugView;
+uniform int uDebugBounce;
+
+// The integrator's contributions, filtered by bounce for views 7-9 (bounce 0: the camera ray).
+bool debugKeepBounce(int bounce) {
+    if (uDebugView == DEBUG_BOUNCE_K) return bounce == uDebugBounce;
+    if (uDebugView == DEBUG_DIRECT) return bounce <= 1;
+    if (uDebugView == DEBUG_INDIRECT) return bounce >= 2;
+    return true;
+}
+#define RAYLAB_ADD_RADIANCE(radiance, bounce, value) if (debugKeepBounce(bounce)) radiance += (value)
+
+vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays);   // integrator.glsl, included after this file
 
 // A colour per id that neighbouring ids do not share (golden-ratio hue steps).
 vec3 debugIdColor(uint id) {
@@ -35,7 +49,7 @@ vec3 debugIdColor(uint id) {
 // miss); the display shader maps it to grey.
 vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
     if (uDebugView == DEBUG_BEAUTY || uDebugView >= DEBUG_FIRST_DISPLAY_ONLY)
-        return traceRadiance(ray, rng, rays);
+        return traceRadiance(ray, rng, rays);   // views 7-9: filtered by the hook above
     Hit hit;
     ++rays;
     if (!intersectScene(ray, hit)) return vec3(0.0f);

@@ -10,6 +10,12 @@
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
 
+// Every radiance contribution goes through this hook, so the viewer's bounce views
+// (debug_views.glsl) can keep only some bounces. By default: add it.
+#ifndef RAYLAB_ADD_RADIANCE
+#define RAYLAB_ADD_RADIANCE(radiance, bounce, value) radiance += (value)
+#endif
+
 // Radiance along one camera path (Kajiya 1986). beta is the path throughput:
 // the product of f·cosθ/pdf over the bounces so far.
 vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
@@ -20,11 +26,11 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         Hit hit;
         ++rays;
         if (!intersectScene(ray, hit)) {
-            radiance += beta * skyRadiance(sky, normalize(ray.dir));
+            RAYLAB_ADD_RADIANCE(radiance, bounce, beta * skyRadiance(sky, normalize(ray.dir)));
             break;
         }
         GpuMaterial m = materials[hit.material];
-        radiance += beta * m.emission.rgb;
+        RAYLAB_ADD_RADIANCE(radiance, bounce, beta * m.emission.rgb);
         if (bounce >= uMaxBounces) break;
 
         // Lambert, cosine-weighted: f·cosθ/pdf = (ρ/π)·cosθ / (cosθ/π) = ρ.

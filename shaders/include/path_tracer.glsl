@@ -6,10 +6,10 @@
 #include "random.glsl"
 #include "camera.glsl"
 #include "scene_data.glsl"
+// The viewer's debug views and moments; empty unless the host defines RAYLAB_DEBUG_VIEWS or
+// RAYLAB_DEBUG_MOMENTS. Before the integrator, whose radiance hook it may set.
+#include "debug_views.glsl"
 #include "integrator.glsl"
-#if defined(RAYLAB_DEBUG_VIEWS) || defined(RAYLAB_DEBUG_MOMENTS)
-#include "debug_views.glsl"   // the viewer's debug views and per-pixel moments
-#endif
 
 void tracePixelPass(ivec2 pixel) {
     CameraBasis cam = CameraBasis(uCamOrigin, uCamRight, uCamUp, uCamForward, uCamTanHalfFovY,

@@ -11,6 +11,9 @@ std::string_view debugViewName(DebugView view) {
     case DebugView::MaterialId: return "material-id";
     case DebugView::NonFinite: return "nan";
     case DebugView::Noise: return "noise";
+    case DebugView::BounceK: return "bounce";
+    case DebugView::Direct: return "direct";
+    case DebugView::Indirect: return "indirect";
     }
     return "?";
 }

@@ -21,7 +21,7 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"select", {1, 1}},      {"debug-view", {1, 1}},  {"overlay", {2, 2}},    {"scale", {1, 1}},
         {"pause", {0, 0}},       {"resume", {0, 0}},      {"reset", {0, 0}},      {"wait-spp", {1, 1}},
         {"wait-frames", {1, 1}}, {"screenshot", {1, 1}},  {"export", {1, 1}},     {"save", {1, 1}},
-        {"window", {2, 2}},      {"quit", {0, 0}},
+        {"window", {2, 2}},      {"quit", {0, 0}},        {"debug-bounce", {1, 1}},
     };
     return table;
 }
@@ -72,12 +72,13 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         if (n < it->second.min || n > it->second.max)
             fail(c.name + " takes " + std::to_string(it->second.min) + " argument(s), got " + std::to_string(n));
         const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "scale" ||
-                             c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window";
+                             c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window" ||
+                             c.name == "debug-bounce";
         if (numeric)
             for (const std::string& a : c.args)
                 if (!isNumber(a)) fail(c.name + ": '" + a + "' is not a number");
         if (c.name == "debug-view" && !parseDebugView(c.args[0]))
-            fail("unknown debug view '" + c.args[0] + "' (beauty, normals, albedo, depth, material-id, nan, noise)");
+            fail("unknown debug view '" + c.args[0] + "' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect)");
         if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected") ||
                                     (c.args[1] != "on" && c.args[1] != "off")))
             fail("overlay takes boxes|selected on|off");

@@ -92,6 +92,10 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         viewer.setDebugView(*parseDebugView(a[0]));
         return true;
     }
+    if (c.name == "debug-bounce") {
+        viewer.setDebugBounce(int(num(0)));
+        return true;
+    }
     if (c.name == "overlay") {
         (a[0] == "boxes" ? viewer.overlays.boxes : viewer.overlays.selectedOnly) = a[1] == "on";
         return true;

@@ -53,8 +53,8 @@ bool Viewer::openScene(const std::filesystem::path& file) {
         lastError_ = e.what();
         log_.error(lastError_ + (hasScene_ ? " (the previous scene stays)" : ""));
         // Keep watching the broken file: fixing it on disk reloads it.
-        if (std::filesystem::absolute(file) == std::filesystem::absolute(scenePath_) || !hasScene_)
-            watcher_.watch(file);
+        std::error_code ec;
+        if (!hasScene_ || std::filesystem::equivalent(file, scenePath_, ec)) watcher_.watch(file);
         return false;
     }
     if (!applyScene(std::move(next), Trigger::ReloadScene)) return false;
@@ -273,6 +273,7 @@ void Viewer::restart() {
     const float zero = 0.0f;
     glClearNamedBufferData(momentsBuffer_, GL_R32F, GL_RED, GL_FLOAT, &zero);
     tracer_->program().set("uDebugView", int(view_));
+    tracer_->program().set("uDebugBounce", bounce_);
     // texelFetch in the display pass needs a complete texture: one level, no mipmap filter.
     glTextureParameteri(tracer_->accumulationTexture(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(tracer_->accumulationTexture(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -314,6 +315,13 @@ void Viewer::setDebugView(DebugView view) {
     } else {
         displayDirty_ = true;  // same samples, drawn differently
     }
+}
+
+void Viewer::setDebugBounce(int k) {
+    k = std::max(k, 0);
+    if (k == bounce_) return;
+    bounce_ = k;
+    if (view_ == DebugView::BounceK) resetAccumulation();
 }
 
 int Viewer::imageWidth() const { return std::max(1, int(std::lround(float(scene_.render.width) * scale_))); }

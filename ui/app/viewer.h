@@ -72,6 +72,8 @@ public:
     float resolutionScale() const { return scale_; }
     void setDebugView(DebugView view);
     DebugView debugView() const { return view_; }
+    void setDebugBounce(int k);   // the k of DebugView::BounceK, >= 0
+    int debugBounce() const { return bounce_; }
     float depthScale = 20.0f;   // depth view: distance shown black
     float noiseScale = 0.2f;    // noise view: relative error shown red
     OverlaySettings overlays;
@@ -130,6 +132,7 @@ private:
     bool paused_ = false;
     float scale_ = 1.0f;
     DebugView view_ = DebugView::Beauty;
+    int bounce_ = 1;
     ViewerStats stats_;
     std::string lastError_;
     double passWall_ = 0.0;

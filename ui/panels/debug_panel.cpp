@@ -42,7 +42,7 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
     for (DebugView v : kDebugViews) {
         const std::string name(debugViewName(v));
         if (ImGui::RadioButton(name.c_str(), viewer.debugView() == v)) viewer.setDebugView(v);
-        if (v != DebugView::Noise && v != DebugView::MaterialId) ImGui::SameLine();
+        if (v != DebugView::Noise && v != DebugView::MaterialId && v != DebugView::Indirect) ImGui::SameLine();
     }
     switch (viewer.debugView()) {
     case DebugView::Depth:
@@ -58,6 +58,18 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
     }
     case DebugView::NonFinite:
         ImGui::TextDisabled("magenta: a NaN or Inf sample was replaced by 0 there");
+        break;
+    case DebugView::BounceK: {
+        int k = viewer.debugBounce();
+        if (ImGui::SliderInt("bounce k", &k, 0, std::max(1, viewer.scene().render.maxBounces))) viewer.setDebugBounce(k);
+        ImGui::TextDisabled("k = 0: emitters and sky seen directly; k = 1: direct lighting");
+        break;
+    }
+    case DebugView::Direct:
+        ImGui::TextDisabled("bounces 0 and 1 (emitters, sky, direct lighting)");
+        break;
+    case DebugView::Indirect:
+        ImGui::TextDisabled("bounces 2 and more: direct + indirect = beauty");
         break;
     case DebugView::MaterialId:
         ImGui::TextDisabled("one colour per material (hover for its name)");
