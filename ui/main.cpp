@@ -31,13 +31,38 @@ using namespace raylab::ui;
 
 namespace {
 
-struct DropQueue {
-    std::vector<std::string> paths;
+// What the window's callbacks collect between frames (ImGui's GLFW backend chains to these).
+struct WindowEvents {
+    std::vector<std::string> drops;
+    bool input = false;   // any key, mouse or window event since the last UI frame
 };
 
+WindowEvents& events(GLFWwindow* window) { return *static_cast<WindowEvents*>(glfwGetWindowUserPointer(window)); }
+
 void onDrop(GLFWwindow* window, int count, const char** paths) {
-    auto* queue = static_cast<DropQueue*>(glfwGetWindowUserPointer(window));
-    for (int i = 0; i < count; ++i) queue->paths.emplace_back(paths[i]);
+    for (int i = 0; i < count; ++i) events(window).drops.emplace_back(paths[i]);
+    events(window).input = true;
+}
+
+void installInputCallbacks(GLFWwindow* w) {
+    glfwSetDropCallback(w, onDrop);
+    glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { events(win).input = true; });
+    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { events(win).input = true; });
+    glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { events(win).input = true; });
+    glfwSetKeyCallback(w, [](GLFWwindow* win, int, int, int, int) { events(win).input = true; });
+    glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { events(win).input = true; });
+    glfwSetWindowSizeCallback(w, [](GLFWwindow* win, int, int) { events(win).input = true; });
+    glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { events(win).input = true; });
+    glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { events(win).input = true; });
+}
+
+bool anyInputHeld() {
+    const ImGuiIO& io = ImGui::GetIO();
+    for (bool down : io.KeysDown)
+        if (down) return true;
+    for (bool down : io.MouseDown)
+        if (down) return true;
+    return false;
 }
 
 class WindowHost : public ScriptHost {
@@ -113,6 +138,7 @@ int main(int argc, char** argv) {
     double scriptTimeout = 300.0;
     bool reportFrames = false;
     bool vsync = false;
+    bool continuous = false;
     app.add_option("scene", scenePath, "Scene file (default: scenes/default.json)");
     app.add_option("--script", scriptPath, "Automation script: one command a line (see ui/app/script.h)");
     app.add_option("--script-timeout", scriptTimeout, "Seconds before a script that has not quit fails")->capture_default_str();
@@ -126,6 +152,9 @@ int main(int argc, char** argv) {
     app.add_option("--skip-frames", skipFrames, "Frames left out of --report-frames (warm-up)")->capture_default_str();
     app.add_flag("--report-frames", reportFrames, "Print frame-time statistics at exit");
     app.add_flag("--vsync", vsync, "Wait for the display's refresh");
+    app.add_flag("--continuous", continuous,
+                 "Redraw the UI every frame even when idle (by default, with no input the UI redraws when a "
+                 "pass completes or every 0.25 s, and tracing gets the time in between)");
     CLI11_PARSE(app, argc, argv);
 
     std::optional<ScriptRunner> script;
@@ -148,9 +177,9 @@ int main(int argc, char** argv) {
     }
     GLFWwindow* window = context->window();
     glfwSwapInterval(vsync ? 1 : 0);
-    DropQueue drops;
-    glfwSetWindowUserPointer(window, &drops);
-    glfwSetDropCallback(window, onDrop);
+    WindowEvents windowEvents;
+    glfwSetWindowUserPointer(window, &windowEvents);
+    installInputCallbacks(window);   // before ImGui's backend, which chains to them
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -187,17 +216,34 @@ int main(int argc, char** argv) {
         double last = glfwGetTime();
         for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
             glfwPollEvents();
-            for (const std::string& p : drops.paths) {
+            for (const std::string& p : windowEvents.drops) {
                 ui.openPath = p;
                 viewer.openScene(p);
             }
-            drops.paths.clear();
+            windowEvents.drops.clear();
             viewer.pollFileChanges();
             if (script && frame >= 2 && !script->step(viewer, ui, host, glfwGetTime())) {
                 exitCode = script->exitCode();
                 break;
             }
             viewer.update(pacer.traceBudget());
+            // Idle (no input, nothing held, no script): keep tracing in short slices, watching for
+            // input, until there is a new image to show or a quarter second has passed. The UI then
+            // costs nothing while the user watches the image converge, and still answers at once.
+            const bool idle = !continuous && !script && !windowEvents.input && !anyInputHeld() && frame > 2;
+            windowEvents.input = false;
+            double idleSeconds = 0.0;
+            if (idle) {
+                const double idleStart = glfwGetTime();
+                while (!viewer.needsDisplay() && !viewer.converged() && !viewer.paused() &&
+                       glfwGetTime() - idleStart < 0.25) {
+                    viewer.update(0.004);
+                    glfwPollEvents();
+                    if (windowEvents.input || glfwWindowShouldClose(window)) break;
+                }
+                if (viewer.converged() || viewer.paused()) glfwWaitEventsTimeout(0.25);   // nothing to trace: sleep
+                idleSeconds = glfwGetTime() - idleStart;
+            }
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
@@ -236,7 +282,7 @@ int main(int argc, char** argv) {
                 times.drawMs.push_back(drawMs);
                 times.swapMs.push_back((t - swapStart) * 1e3);
             }
-            pacer.frameDone(t - last, viewer.stats().frameTraceMs * 1e-3);
+            pacer.frameDone(t - last - idleSeconds, viewer.stats().frameTraceMs * 1e-3);
             last = t;
             if (maxFrames > 0 && frame + 1 >= maxFrames) break;
         }

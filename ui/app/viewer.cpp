@@ -357,7 +357,7 @@ void Viewer::update(double budgetSeconds) {
             passWall_ = 0.0;
             if (slicer_.midPass() == false && u.passRpp != scene_.render.rpp)
                 slicer_.restart(tracer_->width(), tracer_->height(), scene_.render.rpp);
-            if (converged()) break;
+            break;   // a complete pass: let the display show it before tracing on
         }
     } while (now() - start < budgetSeconds);
     stats_.frameTraceMs = (now() - start) * 1e3;
@@ -379,19 +379,22 @@ void Viewer::ensureDisplayTargets() {
     displayDirty_ = true;
 }
 
+bool Viewer::needsDisplay() const {
+    if (!hasScene()) return false;
+    if (displayDirty_ || !displayTexture_) return true;
+    if (!tracedSinceDisplay_) return false;
+    const double t = now();
+    const bool firstPassPending = tracer_->samplesPerPixel() == 0 && t - restartTime_ < 0.25;
+    const bool passDone = !slicer_.midPass();
+    return paused_ || (!firstPassPending && (passDone || t - lastDisplay_ > 0.25));
+}
+
 unsigned Viewer::displayTexture() {
     stats_.frameDisplayMs = 0.0;
     if (!hasScene()) return 0;
     ensureDisplayTargets();
     const double t0 = now();
-    const std::uint64_t spp = tracer_->samplesPerPixel();
-    bool show = displayDirty_;
-    if (tracedSinceDisplay_) {
-        const bool firstPassPending = spp == 0 && t0 - restartTime_ < 0.25;
-        const bool passDone = !slicer_.midPass();
-        show = show || paused_ || (!firstPassPending && (passDone || t0 - lastDisplay_ > 0.25));
-    }
-    if (!show) return displayTexture_;
+    if (!needsDisplay()) return displayTexture_;
     const ShaderProgram& p = display_;
     p.set("uImageSize", glm::ivec2(displayWidth_, displayHeight_));
     p.set("uView", int(view_));

@@ -92,7 +92,8 @@ public:
     // when paused); after a restart the previous picture stays until the first pass is complete,
     // so moving the camera never flashes a half-traced image.
     unsigned displayTexture();
-    void redisplay() { displayDirty_ = true; }   // after changing depthScale or noiseScale
+    void redisplay() { displayDirty_ = true; }
+    bool needsDisplay() const;   // the next displayTexture() would show something new   // after changing depthScale or noiseScale
     // The linear value of image pixel (x, y), top-left origin, as accumulated.
     glm::vec4 pixelValue(int x, int y) const;
     // Select the object seen at image pixel (x, y); logs what was picked.
