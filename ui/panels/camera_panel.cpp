@@ -12,6 +12,7 @@ void drawCameraPanel(Viewer& viewer, UiState&) {
         ImGui::End();
         return;
     }
+    ImGui::PushItemWidth(-90.0f);
     if (viewer.hasScene()) {
         for (const ParamSpec& p : sceneParameters())
             if (p.section() == "camera") paramWidget(viewer, resolveParam(viewer.scene(), p.key));
@@ -19,9 +20,11 @@ void drawCameraPanel(Viewer& viewer, UiState&) {
         paramWidget(viewer, resolveParam(viewer.scene(), "render.tone_map"));
         ImGui::SliderFloat("move speed", &viewer.cameraSpeed, 0.05f, 50.0f, "%.2f units/s", ImGuiSliderFlags_Logarithmic);
     }
-    ImGui::TextDisabled("Viewport: left drag orbits, right drag looks around (fly),");
-    ImGui::TextDisabled("wheel dollies, click picks. Keys: WASD move, Q/E down/up,");
-    ImGui::TextDisabled("arrows turn, Shift = 4x speed.");
+    ImGui::PopItemWidth();
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("Viewport: left drag orbits, right drag looks around (fly), wheel dollies, click "
+                       "picks. Keys: WASD move, Q/E down/up, arrows turn, Shift = 4x speed.");
+    ImGui::PopStyleColor();
     ImGui::End();
 }
 

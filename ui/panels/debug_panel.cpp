@@ -39,10 +39,11 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
         ImGui::End();
         return;
     }
+    int column = 0;
     for (DebugView v : kDebugViews) {
         const std::string name(debugViewName(v));
+        if (column++ % 3 != 0) ImGui::SameLine(float((column - 1) % 3) * 105.0f + 8.0f);
         if (ImGui::RadioButton(name.c_str(), viewer.debugView() == v)) viewer.setDebugView(v);
-        if (v != DebugView::Noise && v != DebugView::MaterialId && v != DebugView::Indirect) ImGui::SameLine();
     }
     switch (viewer.debugView()) {
     case DebugView::Depth:

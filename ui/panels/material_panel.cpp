@@ -19,6 +19,7 @@ void drawMaterialPanel(Viewer& viewer, UiState&) {
         return;
     }
     Scene& scene = viewer.scene();
+    ImGui::PushItemWidth(-80.0f);
     ImGui::TextDisabled("Click an object in the viewport or here.");
     if (ImGui::BeginListBox("##outliner", ImVec2(-1, 6 * ImGui::GetTextLineHeightWithSpacing()))) {
         for (int i = 0; i < int(scene.spheres.size()); ++i) {
@@ -46,10 +47,11 @@ void drawMaterialPanel(Viewer& viewer, UiState&) {
             ImGui::EndCombo();
         }
         ImGui::Separator();
-        ImGui::Text("material '%s' (shared by every object that uses it)", viewer.scene().materials[std::size_t(m)].name.c_str());
+        ImGui::TextWrapped("material '%s' (shared by every object that uses it)", viewer.scene().materials[std::size_t(m)].name.c_str());
         for (const MaterialParamSpec& p : materialParameters())
             paramWidget(viewer, resolveParam(viewer.scene(), "materials." + std::to_string(m) + "." + std::string(p.key)));
     }
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 

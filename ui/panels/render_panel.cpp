@@ -13,17 +13,23 @@ void drawRenderPanel(Viewer& viewer, UiState& ui) {
         ImGui::End();
         return;
     }
+    ImGui::PushItemWidth(-110.0f);   // room for the labels
+    const float boxWidth = ImGui::GetContentRegionAvail().x - 130.0f;   // path boxes: room for the button
     if (ImGui::CollapsingHeader("Files", ImGuiTreeNodeFlags_DefaultOpen)) {
-        const bool enter = ImGui::InputText("scene##open", &ui.openPath, ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::SetNextItemWidth(boxWidth);
+        const bool enter = ImGui::InputText("##open", &ui.openPath, ImGuiInputTextFlags_EnterReturnsTrue);
         ImGui::SameLine();
         if ((ImGui::Button("Open") || enter) && !ui.openPath.empty()) viewer.openScene(ui.openPath);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Or drop a scene file on the window. Reloads when the file changes.");
+        ImGui::SetNextItemWidth(boxWidth);
         ImGui::InputText("##save", &ui.savePath);
         ImGui::SameLine();
         if (ImGui::Button("Save scene") && !ui.savePath.empty()) viewer.saveScene(ui.savePath);
+        ImGui::SetNextItemWidth(boxWidth);
         ImGui::InputText("##shot", &ui.screenshotPath);
         ImGui::SameLine();
         if (ImGui::Button("Screenshot (F12)")) ui.pendingScreenshot = ui.screenshotPath;
+        ImGui::SetNextItemWidth(boxWidth);
         ImGui::InputText("##export", &ui.exportPath);
         ImGui::SameLine();
         if (ImGui::Button("Export (F9)")) viewer.exportRender(ui.exportPath);
@@ -31,6 +37,7 @@ void drawRenderPanel(Viewer& viewer, UiState& ui) {
     }
     if (!viewer.hasScene()) {
         ImGui::TextWrapped("No scene: open one above.");
+        ImGui::PopItemWidth();
         ImGui::End();
         return;
     }
@@ -58,6 +65,7 @@ void drawRenderPanel(Viewer& viewer, UiState& ui) {
         for (const ParamSpec& p : sceneParameters())
             if (p.section() == "sky") paramWidget(viewer, resolveParam(viewer.scene(), p.key));
     }
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 
