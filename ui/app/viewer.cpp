@@ -66,20 +66,6 @@ bool Viewer::openScene(const std::filesystem::path& file) {
     return true;
 }
 
-bool Viewer::openSceneText(const std::string& text, const std::string& name) {
-    try {
-        Scene next = parseScene(text, name);
-        if (!applyScene(std::move(next), Trigger::ReloadScene)) return false;
-    } catch (const std::exception& e) {
-        lastError_ = e.what();
-        log_.error(lastError_);
-        return false;
-    }
-    scenePath_ = name;
-    watcher_.clear();
-    return true;
-}
-
 void Viewer::pollFileChanges() {
     if (!watcher_.changed()) return;
     const std::filesystem::path file = watcher_.file();

@@ -45,7 +45,6 @@ public:
     // Loads a scene file; on failure logs the error (file:line), keeps the previous scene running
     // and returns false.
     bool openScene(const std::filesystem::path& file);
-    bool openSceneText(const std::string& text, const std::string& name);   // for tests
     // Reloads when the file changed on disk; call once a frame.
     void pollFileChanges();
     bool saveScene(const std::filesystem::path& file);

@@ -29,7 +29,7 @@ void drawStatsPanel(Viewer& viewer, UiState&) {
         ImGui::Text("elapsed %.1f s, ETA %.1f s", elapsed, viewer.converged() ? 0.0 : eta);
         ImGui::Text("NaN/Inf samples: %llu", (unsigned long long)t->nonFiniteSamples());
         ImGui::Text("shader: %s, compiled in %.2f s", viewer.shaderVariant().c_str(), s.shaderCompileSeconds);
-        ImGui::Text("scene: %zu objects, %zu materials, 0 triangles", viewer.scene().spheres.size(), viewer.scene().materials.size());
+        ImGui::Text("scene: %zu spheres, %zu materials", viewer.scene().spheres.size(), viewer.scene().materials.size());
         ImGui::Text("image %d x %d, restarts %llu", t->width(), t->height(), (unsigned long long)s.restarts);
     }
     ImGui::End();
