@@ -88,6 +88,14 @@ ParamValue parseParamValue(const ValueSpec& spec, std::string_view text) {
     if (j.is_discarded()) j = std::string(text);   // a bare word: an enum name
     const std::string key(spec.key);
     ParamValue value;
+    // Booleans (render.nee, render.mis on the materials branch) are stored as 0 / 1; matched by
+    // name so this file builds before and after that type exists.
+    if (typeName(spec.type) == "bool") {
+        if (j.is_string()) j = j.get<std::string>() == "true" ? nlohmann::json(true) : j.get<std::string>() == "false" ? nlohmann::json(false) : j;
+        if (j.is_number_integer() && (j.get<long long>() == 0 || j.get<long long>() == 1)) j = j.get<long long>() == 1;
+        if (!j.is_boolean()) throw EditError(key + ": expected true or false, got " + j.dump());
+        return std::int64_t(j.get<bool>() ? 1 : 0);
+    }
     switch (spec.type) {
     case ParamType::Int:
     case ParamType::UInt: {
@@ -123,6 +131,8 @@ ParamValue parseParamValue(const ValueSpec& spec, std::string_view text) {
         value = std::int64_t(e->value);
         break;
     }
+    default:
+        throw EditError(key + ": cannot edit a value of type " + std::string(typeName(spec.type)));
     }
     if (auto why = checkValue(spec, value)) throw EditError(key + ": " + *why);
     return value;

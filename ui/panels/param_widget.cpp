@@ -33,7 +33,13 @@ bool paramWidget(Viewer& viewer, const SceneParam& param) {
     ParamValue value = param.get(viewer.scene());
     bool changed = false;
     ImGui::PushID(param.key.c_str());
-    switch (s.type) {
+    if (typeName(s.type) == "bool") {   // stored as 0 / 1 (matched by name: see scene_edit.cpp)
+        bool on = std::get<std::int64_t>(value) != 0;
+        if (ImGui::Checkbox(label.c_str(), &on)) {
+            value = std::int64_t(on ? 1 : 0);
+            changed = true;
+        }
+    } else switch (s.type) {
     case ParamType::Int:
     case ParamType::UInt: {
         // Drag speed grows with the range so seeds and sample counts stay usable.
@@ -92,6 +98,9 @@ bool paramWidget(Viewer& viewer, const SceneParam& param) {
         }
         break;
     }
+    default:
+        ImGui::TextDisabled("%s: %.*s", label.c_str(), int(typeName(s.type).size()), typeName(s.type).data());
+        break;
     }
     tooltip(s);
     ImGui::PopID();
