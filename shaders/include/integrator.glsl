@@ -12,6 +12,12 @@
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
 
+// Every radiance contribution goes through this hook, so the viewer's bounce views
+// (debug_views.glsl) can keep only some bounces. By default: add it.
+#ifndef RAYLAB_ADD_RADIANCE
+#define RAYLAB_ADD_RADIANCE(radiance, bounce, value) radiance += (value)
+#endif
+
 BsdfParams materialBsdf(GpuMaterial m) {
     return BsdfParams(m.albedo.rgb, m.f0Ior.rgb, ggxAlpha(m.albedo.a), m.emission.a, m.f0Ior.a);
 }
@@ -58,7 +64,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                 float lightPdf = UNIFORM_SPHERE_PDF / float(lightCount);
                 w = uMis ? powerHeuristic(prevPdf, lightPdf) : 0.0f;
             }
-            radiance += beta * skyRadiance(sky, dir) * w;
+            RAYLAB_ADD_RADIANCE(radiance, bounce, beta * skyRadiance(sky, dir) * w);
             break;
         }
         GpuMaterial m = materials[hit.material];
@@ -69,7 +75,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                 float lightPdf = emitterLightPdf(prevPos, hit.position);
                 w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
             }
-            radiance += beta * Le * w;
+            RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
         }
         if (bounce >= uMaxBounces) break;
 
@@ -112,7 +118,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                 ++rays;
                 if (tMax > 0.0f && !occludedScene(shadow, tMax)) {
                     float w = uMis ? powerHeuristic(lightPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
-                    radiance += beta * f * Ll * (w / lightPdf);
+                    RAYLAB_ADD_RADIANCE(radiance, bounce + 1, beta * f * Ll * (w / lightPdf));
                 }
             }
         }

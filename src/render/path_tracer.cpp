@@ -104,9 +104,14 @@ void PathTracer::reset() {
 }
 
 void PathTracer::renderPass(int rpp) {
-    if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
     if (rpp <= 0) rpp = defaultRpp_;
-    program_.set("uSampleStart", unsigned(samplesPerPixel_));
+    traceBand(0, height_, 0, rpp);
+    finishPass(rpp);
+}
+
+void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
+    if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
+    program_.set("uSampleStart", unsigned(samplesPerPixel_ + std::uint64_t(sampleOffset)));
     program_.set("uRpp", rpp);
 
     const GLuint zeros[2] = {0, 0};
@@ -118,8 +123,14 @@ void PathTracer::renderPass(int rpp) {
     if (options_.entry == TracerEntry::Fragment) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
         glViewport(0, 0, width_, height_);
+        const bool band = y > 0 || rows < height_;
+        if (band) {   // the full-screen triangle, cut to the band's rows
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(0, y, width_, rows);
+        }
         glBindVertexArray(vertexArray_);
         glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (band) glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     } else {
         const auto groups = [](int n, int size) { return GLuint((n + size - 1) / size); };
@@ -132,6 +143,9 @@ void PathTracer::renderPass(int rpp) {
     glGetNamedBufferSubData(counterBuffer_, 0, sizeof(counters), counters);   // waits for the pass
     nonFinite_ += counters[0];
     rays_ += counters[1];
+}
+
+void PathTracer::finishPass(int rpp) {
     samplesPerPixel_ += std::uint64_t(rpp);
     ++passes_;
 }

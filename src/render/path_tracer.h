@@ -35,6 +35,14 @@ public:
     void reset();
     // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them.
     void renderPass(int rpp = 0);
+    // Time slicing for interactive use (the viewer): one pass may be traced as horizontal bands and
+    // sample chunks. traceBand traces samples [spp + sampleOffset, + rpp) of rows [y, y + rows) and
+    // adds to the counters; call it for every band of a chunk, chunk after chunk, then finishPass
+    // with the pass's total rpp. Bands need the fragment entry (the compute entry traces all rows).
+    void traceBand(int y, int rows, int sampleOffset, int rpp);
+    void finishPass(int rpp);
+    unsigned accumulationTexture() const { return accumTexture_; }   // RGBA32F, bottom row first
+    const ShaderProgram& program() const { return program_; }   // for uniforms of host extensions
 
     std::uint64_t samplesPerPixel() const { return samplesPerPixel_; }
     std::uint64_t passes() const { return passes_; }

@@ -1,0 +1,71 @@
+// The panels in ImGui frames without a window (as imgui's example_null does): font atlas built,
+// display size set, NewFrame/Render; the viewer runs on the headless context.
+#include "panels/panels.h"
+
+#include "render/render_helpers.h"
+#include "support/gl_test.h"
+
+#include <gtest/gtest.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+
+namespace raylab::ui {
+namespace {
+
+class PanelsTest : public test::GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = ImVec2(1280, 800);
+        io.DeltaTime = 1.0f / 60.0f;
+        unsigned char* pixels = nullptr;
+        int w = 0, h = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+        viewer = std::make_unique<Viewer>(log);
+        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json")));
+        ASSERT_TRUE(viewer->set("render.width", "32"));
+        ASSERT_TRUE(viewer->set("render.height", "18"));
+    }
+    void TearDown() override {
+        viewer.reset();
+        ImGui::DestroyContext();
+    }
+    void frame() {
+        ImGui::NewFrame();
+        drawWorkspace(*viewer, ui, 1280, 800);
+        ImGui::Render();
+    }
+    Log log{false};
+    UiState ui;
+    std::unique_ptr<Viewer> viewer;
+};
+
+TEST_F(PanelsTest, TheWorkspaceDrawsEveryPanelAndLaysTheImageOut) {
+    viewer->selected = 2;
+    for (int i = 0; i < 3; ++i) frame();
+    for (const char* name : {"Viewport", "Render", "Camera", "Material", "Overlays", "Debug views", "Stats", "Log"})
+        EXPECT_NE(ImGui::FindWindowByName(name), nullptr) << name;
+    ASSERT_TRUE(ui.image.valid());
+    // The image keeps the traced aspect ratio inside the viewport.
+    EXPECT_NEAR(ui.image.width / ui.image.height, 32.0f / 18.0f, 0.01f);
+    const ImGuiWindow* vp = ImGui::FindWindowByName("Viewport");
+    EXPECT_GE(ui.image.x, vp->Pos.x);
+    EXPECT_LE(ui.image.x + ui.image.width, vp->Pos.x + vp->Size.x + 0.5f);
+}
+
+TEST_F(PanelsTest, DrawingChangesNothingAndAClickOnTheImagePicks) {
+    const nlohmann::json before = sceneToJson(viewer->scene());
+    for (int i = 0; i < 3; ++i) frame();
+    EXPECT_EQ(sceneToJson(viewer->scene()), before);
+    // The bottom-centre of the image shows the ground (object 0); above the image is no pick.
+    viewportClick(*viewer, ui, ui.image.x + ui.image.width * 0.5f, ui.image.y + ui.image.height - 1.0f);
+    EXPECT_EQ(viewer->selected, 0);
+    viewportClick(*viewer, ui, ui.image.x + 1.0f, ui.image.y - 5.0f);
+    EXPECT_EQ(viewer->selected, 0);   // outside: unchanged
+}
+
+} // namespace
+} // namespace raylab::ui

@@ -1,0 +1,29 @@
+#pragma once
+// Splits a UI frame's time between tracing and everything else: the tracing budget of the next
+// frame is the target frame time minus what the rest of a frame (display pass, ImGui, drawing,
+// swap) has been costing, so frames stay near the target whatever the rpp or window size.
+#include <algorithm>
+
+namespace raylab::ui {
+
+class FramePacer {
+public:
+    explicit FramePacer(double targetSeconds, double minTraceSeconds = 0.002)
+        : target_(targetSeconds), minTrace_(minTraceSeconds) {}
+    // The last frame took frameSeconds, of which traceSeconds tracing.
+    void frameDone(double frameSeconds, double traceSeconds) {
+        const double other = std::max(0.0, frameSeconds - traceSeconds);
+        other_ = other_ < 0.0 ? other : 0.8 * other_ + 0.2 * other;   // smoothed: frames jitter
+    }
+    double traceBudget() const {
+        return std::clamp(target_ - std::max(other_, 0.0), minTrace_, std::max(target_, minTrace_));
+    }
+    double otherSeconds() const { return std::max(other_, 0.0); }
+
+private:
+    double target_;
+    double minTrace_;
+    double other_ = -1.0;   // not measured yet
+};
+
+} // namespace raylab::ui

@@ -1,0 +1,98 @@
+#include "app/script.h"
+
+#include "app/debug_view.h"
+
+#include <charconv>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace raylab::ui {
+namespace {
+
+struct Arity {
+    int min;
+    int max;
+};
+
+const std::map<std::string, Arity, std::less<>>& commands() {
+    static const std::map<std::string, Arity, std::less<>> table = {
+        {"open", {1, 1}},        {"set", {2, 2}},         {"click", {2, 2}},      {"pick", {2, 2}},
+        {"select", {1, 1}},      {"debug-view", {1, 1}},  {"overlay", {2, 2}},    {"scale", {1, 1}},
+        {"pause", {0, 0}},       {"resume", {0, 0}},      {"reset", {0, 0}},      {"wait-spp", {1, 1}},
+        {"wait-frames", {1, 1}}, {"screenshot", {1, 1}},  {"export", {1, 1}},     {"save", {1, 1}},
+        {"window", {2, 2}},      {"quit", {0, 0}},        {"debug-bounce", {1, 1}},
+    };
+    return table;
+}
+
+bool isNumber(const std::string& s) {
+    double v = 0;
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return ec == std::errc() && p == s.data() + s.size();
+}
+
+} // namespace
+
+std::string ScriptCommand::text() const {
+    std::string t = "line " + std::to_string(line) + ": " + name;
+    for (const std::string& a : args) t += " " + a;
+    return t;
+}
+
+std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& fileName) {
+    std::vector<ScriptCommand> out;
+    std::istringstream in(text);
+    std::string raw;
+    int lineNo = 0;
+    while (std::getline(in, raw)) {
+        ++lineNo;
+        const auto hash = raw.find('#');
+        std::string line = raw.substr(0, hash);
+        auto fail = [&](const std::string& what) {
+            throw ScriptError(fileName + ":" + std::to_string(lineNo) + ": error: " + what);
+        };
+        std::istringstream words(line);
+        ScriptCommand c;
+        c.line = lineNo;
+        if (!(words >> c.name)) continue;
+        const auto it = commands().find(c.name);
+        if (it == commands().end()) fail("unknown command '" + c.name + "'");
+        if (c.name == "set") {
+            std::string key, rest;
+            words >> key;
+            std::getline(words, rest);
+            const auto first = rest.find_first_not_of(" \t");
+            if (key.empty() || first == std::string::npos) fail("set needs KEY VALUE");
+            c.args = {key, rest.substr(first, rest.find_last_not_of(" \t\r") - first + 1)};
+        } else {
+            for (std::string w; words >> w;) c.args.push_back(w);
+        }
+        const int n = int(c.args.size());
+        if (n < it->second.min || n > it->second.max)
+            fail(c.name + " takes " + std::to_string(it->second.min) + " argument(s), got " + std::to_string(n));
+        const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "scale" ||
+                             c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window" ||
+                             c.name == "debug-bounce";
+        if (numeric)
+            for (const std::string& a : c.args)
+                if (!isNumber(a)) fail(c.name + ": '" + a + "' is not a number");
+        if (c.name == "debug-view" && !parseDebugView(c.args[0]))
+            fail("unknown debug view '" + c.args[0] + "' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect)");
+        if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected") ||
+                                    (c.args[1] != "on" && c.args[1] != "off")))
+            fail("overlay takes boxes|selected on|off");
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::vector<ScriptCommand> loadScript(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throw ScriptError(file.string() + ": error: cannot open the script");
+    std::stringstream s;
+    s << in.rdbuf();
+    return parseScript(s.str(), file.string());
+}
+
+} // namespace raylab::ui

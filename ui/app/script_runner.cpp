@@ -1,0 +1,119 @@
+#include "app/script_runner.h"
+
+#include "app/viewport_click.h"
+
+#include <string>
+
+namespace raylab::ui {
+
+ScriptRunner::ScriptRunner(std::vector<ScriptCommand> commands, double timeoutSeconds)
+    : commands_(std::move(commands)), timeout_(timeoutSeconds) {}
+
+bool ScriptRunner::step(Viewer& viewer, UiState& ui, ScriptHost& host, double now) {
+    if (finished_) return false;
+    if (start_ < 0.0) start_ = now;
+    if (now - start_ > timeout_) {
+        viewer.log().error("script: timed out after " + std::to_string(int(timeout_)) + " s at " +
+                           (next_ > 0 ? commands_[next_ - 1].text() : std::string("the start")));
+        exitCode_ = 2;
+        finished_ = true;
+        return false;
+    }
+    // Waits of the previous command.
+    if (!ui.pendingScreenshot.empty()) return true;
+    if (waitFrames_ > 0) {
+        --waitFrames_;
+        return true;
+    }
+    if (waitSpp_ >= 0) {
+        const bool reached = !viewer.hasScene() || viewer.converged() ||
+                             (viewer.tracer() && viewer.tracer()->samplesPerPixel() >= std::uint64_t(waitSpp_));
+        if (!reached) return true;
+        waitSpp_ = -1;
+        waitFrames_ = 1;   // one more frame so the display shows the samples
+        return true;
+    }
+    while (next_ < commands_.size()) {
+        const ScriptCommand& c = commands_[next_++];
+        if (c.name == "quit") {
+            exitCode_ = failures_ > 0 ? 1 : 0;
+            finished_ = true;
+            return false;
+        }
+        if (!run(c, viewer, ui, host)) {
+            ++failures_;
+            viewer.log().error("script: " + c.text() + " failed");
+        }
+        // Commands that change what is drawn let a frame pass before the next one.
+        if (waitFrames_ > 0 || waitSpp_ >= 0 || !ui.pendingScreenshot.empty()) return true;
+        if (c.name != "set" && c.name != "pause" && c.name != "resume" && c.name != "save" && c.name != "export") {
+            waitFrames_ = 1;
+            return true;
+        }
+    }
+    exitCode_ = failures_ > 0 ? 1 : 0;
+    finished_ = true;
+    return false;
+}
+
+namespace {
+
+// "selected.KEY" names a key of the selected object ("selected.radius") or of its material
+// ("selected.albedo"), as the Material panel shows them.
+std::string selectedKey(const Viewer& viewer, const std::string& key) {
+    const std::string prefix = "selected.";
+    if (key.rfind(prefix, 0) != 0 || viewer.selected < 0) return key;
+    const std::string field = key.substr(prefix.size());
+    for (const SphereParamSpec& p : sphereParameters())
+        if (p.key == field) return "objects." + std::to_string(viewer.selected) + "." + field;
+    const int m = viewer.scene().spheres[std::size_t(viewer.selected)].material;
+    return "materials." + std::to_string(m) + "." + field;
+}
+
+} // namespace
+
+bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, ScriptHost& host) {
+    const auto& a = c.args;
+    const auto num = [&](std::size_t i) { return std::stod(a[i]); };
+    if (c.name == "open") return viewer.openScene(a[0]);
+    if (c.name == "set") return viewer.set(selectedKey(viewer, a[0]), a[1]);
+    if (c.name == "click") {
+        viewportClick(viewer, ui, float(num(0)), float(num(1)));
+        return true;
+    }
+    if (c.name == "pick") return viewer.pick(float(num(0)), float(num(1))).has_value();
+    if (c.name == "select") {
+        const int i = int(num(0));
+        if (i < -1 || i >= int(viewer.scene().spheres.size())) return false;
+        viewer.selected = i;
+        return true;
+    }
+    if (c.name == "debug-view") {
+        viewer.setDebugView(*parseDebugView(a[0]));
+        return true;
+    }
+    if (c.name == "debug-bounce") {
+        viewer.setDebugBounce(int(num(0)));
+        return true;
+    }
+    if (c.name == "overlay") {
+        (a[0] == "boxes" ? viewer.overlays.boxes : viewer.overlays.selectedOnly) = a[1] == "on";
+        return true;
+    }
+    if (c.name == "scale") {
+        viewer.setResolutionScale(float(num(0)));
+        return true;
+    }
+    if (c.name == "pause") viewer.setPaused(true);
+    else if (c.name == "resume") viewer.setPaused(false);
+    else if (c.name == "reset") viewer.resetAccumulation();
+    else if (c.name == "wait-spp") waitSpp_ = (long long)num(0);
+    else if (c.name == "wait-frames") waitFrames_ = int(num(0));
+    else if (c.name == "screenshot") ui.pendingScreenshot = a[0];
+    else if (c.name == "export") return viewer.exportRender(a[0]);
+    else if (c.name == "save") return viewer.saveScene(a[0]);
+    else if (c.name == "window") host.resizeWindow(int(num(0)), int(num(1)));
+    return true;
+}
+
+} // namespace raylab::ui

@@ -1,0 +1,439 @@
+#include "app/viewer.h"
+
+#include "app/view_geometry.h"
+#include "io/image_io.h"
+#include "scene/scene_loader.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+namespace raylab::ui {
+namespace {
+
+double now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+
+int toneMapOp(ToneMap t) {
+    switch (t) {
+    case ToneMap::Clamp: return 0;
+    case ToneMap::Reinhard: return 1;
+    case ToneMap::AcesFit: return 2;
+    }
+    return 2;
+}
+
+} // namespace
+
+Viewer::Viewer(Log& log) : log_(log) {
+    glCreateVertexArrays(1, &displayVao_);
+    glCreateFramebuffers(1, &displayFramebuffer_);
+    reloadShaders();
+}
+
+Viewer::~Viewer() {
+    glDeleteBuffers(1, &momentsBuffer_);
+    glDeleteTextures(1, &displayTexture_);
+    glDeleteFramebuffers(1, &displayFramebuffer_);
+    glDeleteVertexArrays(1, &displayVao_);
+}
+
+// --- files ---------------------------------------------------------------------------------------
+
+bool Viewer::openScene(const std::filesystem::path& file) {
+    Scene next;
+    try {
+        next = loadScene(file);
+    } catch (const std::exception& e) {
+        lastError_ = e.what();
+        log_.error(lastError_ + (hasScene_ ? " (the previous scene stays)" : ""));
+        // Keep watching the broken file: fixing it on disk reloads it.
+        std::error_code ec;
+        if (!hasScene_ || std::filesystem::equivalent(file, scenePath_, ec)) watcher_.watch(file);
+        return false;
+    }
+    if (!applyScene(std::move(next), Trigger::ReloadScene)) return false;
+    scenePath_ = file;
+    watcher_.watch(file);
+    selected = -1;
+    log_.info("opened " + file.string() + " (" + std::to_string(scene_.spheres.size()) + " objects, " +
+              std::to_string(scene_.materials.size()) + " materials)");
+    return true;
+}
+
+void Viewer::pollFileChanges() {
+    if (!watcher_.changed()) return;
+    const std::filesystem::path file = watcher_.file();
+    log_.info(file.string() + " changed on disk: reloading");
+    const int keep = selected;
+    if (openScene(file) && keep < int(scene_.spheres.size())) selected = keep;
+}
+
+bool Viewer::saveScene(const std::filesystem::path& file) {
+    try {
+        const std::string text = sceneToJson(scene_).dump(2) + "\n";
+        std::filesystem::path tmp = file;
+        tmp.replace_filename("." + file.filename().string() + ".tmp");
+        {
+            std::ofstream out(tmp, std::ios::binary);
+            out << text;
+            out.close();
+            if (!out) throw std::runtime_error(file.string() + ": error: cannot write");
+        }
+        std::filesystem::rename(tmp, file);
+        log_.info("saved the scene to " + file.string());
+        return true;
+    } catch (const std::exception& e) {
+        lastError_ = e.what();
+        log_.error(lastError_);
+        return false;
+    }
+}
+
+bool Viewer::exportRender(const std::filesystem::path& file) {
+    if (!hasScene()) {
+        log_.error("export: no scene");
+        return false;
+    }
+    try {
+        RenderMetadata meta;
+        meta.spp = tracer_->samplesPerPixel();
+        meta.renderSeconds = stats_.traceSeconds;
+        meta.seed = scene_.render.seed;
+        meta.sceneFile = scenePath_.string();
+        meta.nonFiniteSamples = tracer_->nonFiniteSamples();
+        writeImage(file, tracer_->readImage(), meta, DisplayTransform{scene_.render.exposure, scene_.render.toneMap});
+        log_.info("exported " + file.string() + " (" + std::to_string(meta.spp) + " spp)");
+        return true;
+    } catch (const std::exception& e) {
+        lastError_ = e.what();
+        log_.error(lastError_);
+        return false;
+    }
+}
+
+Viewer::Variant Viewer::variantFor(DebugView view) {
+    if (tracedDebugView(view)) return kViews;
+    if (view == DebugView::NonFinite || view == DebugView::Noise) return kMoments;
+    return kBeauty;
+}
+
+std::unique_ptr<PathTracer> Viewer::compileVariant(Variant v) {
+    TracerOptions o;
+    o.entry = TracerEntry::Fragment;   // bands need the scissor of the fragment entry
+    if (v == kMoments) o.extraDefines.emplace_back("RAYLAB_DEBUG_MOMENTS", "1");
+    if (v == kViews) o.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
+    auto tracer = std::make_unique<PathTracer>(o);
+    stats_.shaderCompileSeconds = tracer->compileSeconds();
+    return tracer;
+}
+
+bool Viewer::activateVariant(Variant v) {
+    if (!tracers_[v]) {
+        try {
+            tracers_[v] = compileVariant(v);
+        } catch (const std::exception& e) {
+            lastError_ = e.what();
+            log_.error(lastError_);
+            return false;
+        }
+    }
+    tracer_ = tracers_[v].get();
+    variant_ = v;
+    if (hasScene_) {
+        tracer_->setScene(tracedScene());
+        restart();
+    }
+    return true;
+}
+
+bool Viewer::reloadShaders() {
+    try {
+        auto tracer = compileVariant(variant_);
+        ShaderProgram display = ShaderProgram::graphics("entry/fullscreen.vert", "entry/display.frag");
+        for (auto& t : tracers_) t.reset();   // the others recompile when next needed
+        tracers_[variant_] = std::move(tracer);
+        tracer_ = tracers_[variant_].get();
+        display_ = std::move(display);
+    } catch (const std::exception& e) {
+        lastError_ = e.what();
+        log_.error(lastError_ + (tracer_ ? " (the previous shaders stay)" : ""));
+        return false;
+    }
+    lastError_.clear();
+    if (hasScene_) {
+        tracer_->setScene(tracedScene());
+        restart();
+    }
+    return true;
+}
+
+// --- edits ---------------------------------------------------------------------------------------
+
+bool Viewer::set(const std::string& key, const std::string& valueText) {
+    Scene next = scene_;
+    try {
+        const Trigger t = setParam(next, key, valueText);
+        return applyScene(std::move(next), t);
+    } catch (const std::exception& e) {
+        lastError_ = std::string("set ") + e.what();
+        log_.error(lastError_);
+        return false;
+    }
+}
+
+bool Viewer::set(const SceneParam& param, const ParamValue& value) {
+    Scene next = scene_;
+    try {
+        const Trigger t = setParam(next, param, value);
+        return applyScene(std::move(next), t);
+    } catch (const std::exception& e) {
+        lastError_ = e.what();
+        log_.error(lastError_);
+        return false;
+    }
+}
+
+void Viewer::sceneChanged(Trigger trigger) { applyScene(scene_, trigger); }
+
+bool Viewer::applyScene(Scene next, Trigger trigger) {
+    if (!tracer_) {
+        scene_ = std::move(next);
+        hasScene_ = true;
+        return false;
+    }
+    if (trigger == Trigger::RecompileShader) {
+        scene_ = std::move(next);
+        hasScene_ = true;
+        return reloadShaders();
+    }
+    if (trigger == Trigger::Redisplay && hasScene_) {
+        scene_ = std::move(next);
+        displayDirty_ = true;
+        return true;
+    }
+    // ResetAccumulation and ReloadScene: the upload is cheap for these scenes, and setScene
+    // reallocates only when the image size changed.
+    try {
+        Scene traced = next;
+        traced.render.width = std::max(1, int(std::lround(float(next.render.width) * scale_)));
+        traced.render.height = std::max(1, int(std::lround(float(next.render.height) * scale_)));
+        tracer_->setScene(traced);
+    } catch (const std::exception& e) {
+        lastError_ = e.what();
+        log_.error(lastError_);
+        if (hasScene_) tracer_->setScene(tracedScene());   // put the previous scene back
+        return false;
+    }
+    scene_ = std::move(next);
+    hasScene_ = true;
+    lastError_.clear();
+    restart();
+    return true;
+}
+
+Scene Viewer::tracedScene() const {
+    Scene traced = scene_;
+    traced.render.width = imageWidth();
+    traced.render.height = imageHeight();
+    return traced;
+}
+
+void Viewer::restart() {
+    const int w = tracer_->width();
+    const int h = tracer_->height();
+    const GLsizeiptr bytes = GLsizeiptr(w) * h * 16;
+    GLint64 have = 0;
+    if (momentsBuffer_) glGetNamedBufferParameteri64v(momentsBuffer_, GL_BUFFER_SIZE, &have);
+    if (!momentsBuffer_ || have != bytes) {
+        glDeleteBuffers(1, &momentsBuffer_);
+        glCreateBuffers(1, &momentsBuffer_);
+        glNamedBufferStorage(momentsBuffer_, bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    const float zero = 0.0f;
+    glClearNamedBufferData(momentsBuffer_, GL_R32F, GL_RED, GL_FLOAT, &zero);
+    tracer_->program().set("uDebugView", int(view_));
+    tracer_->program().set("uDebugBounce", bounce_);
+    // texelFetch in the display pass needs a complete texture: one level, no mipmap filter.
+    glTextureParameteri(tracer_->accumulationTexture(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(tracer_->accumulationTexture(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    slicer_.restart(w, h, scene_.render.rpp);
+    stats_.traceSeconds = 0.0;
+    passWall_ = 0.0;
+    ++stats_.restarts;
+    restartTime_ = now();
+}
+
+// --- render control ------------------------------------------------------------------------------
+
+void Viewer::resetAccumulation() {
+    if (!hasScene()) return;
+    tracer_->reset();
+    restart();
+}
+
+void Viewer::setResolutionScale(float scale) {
+    scale = std::clamp(scale, 0.125f, 2.0f);
+    if (scale == scale_) return;
+    scale_ = scale;
+    if (hasScene()) applyScene(scene_, Trigger::ReloadScene);
+}
+
+void Viewer::setDebugView(DebugView view) {
+    if (view == view_) return;
+    const DebugView previous = view_;
+    view_ = view;
+    if (!tracer_) return;
+    const Variant v = variantFor(view);
+    if (v != variant_) {
+        if (!activateVariant(v)) {
+            view_ = previous;   // the variant did not compile: stay with what works
+            return;
+        }
+    } else if (v == kViews) {
+        resetAccumulation();   // another quantity accumulates
+    } else {
+        displayDirty_ = true;  // same samples, drawn differently
+    }
+}
+
+void Viewer::setDebugBounce(int k) {
+    k = std::max(k, 0);
+    if (k == bounce_) return;
+    bounce_ = k;
+    if (view_ == DebugView::BounceK) resetAccumulation();
+}
+
+int Viewer::imageWidth() const { return std::max(1, int(std::lround(float(scene_.render.width) * scale_))); }
+int Viewer::imageHeight() const { return std::max(1, int(std::lround(float(scene_.render.height) * scale_))); }
+
+bool Viewer::converged() const {
+    if (!hasScene()) return true;
+    if (tracer_->samplesPerPixel() >= std::uint64_t(scene_.render.spp)) return true;
+    return scene_.render.timeBudget > 0.0 && stats_.traceSeconds >= scene_.render.timeBudget;
+}
+
+void Viewer::update(double budgetSeconds) {
+    stats_.frameTraceMs = 0.0;
+    if (!hasScene() || paused_ || converged()) return;
+    const double start = now();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 16, momentsBuffer_);
+    do {
+        // The last pass before the target is shortened to land on it exactly (as raylab-render).
+        const std::uint64_t left = std::uint64_t(scene_.render.spp) - tracer_->samplesPerPixel();
+        if (!slicer_.midPass() && left < std::uint64_t(scene_.render.rpp))
+            slicer_.restart(tracer_->width(), tracer_->height(), int(left));
+        const double spent = now() - start;
+        const WorkUnit u = slicer_.next(std::max(budgetSeconds - spent, budgetSeconds * 0.25));
+        const double t0 = now();
+        tracer_->traceBand(u.y, u.rows, u.sampleOffset, u.rpp);
+        const double dt = now() - t0;
+        slicer_.measured(u, dt);
+        stats_.traceSeconds += dt;
+        passWall_ += dt;
+        if (u.endsPass) {
+            tracer_->finishPass(u.passRpp);
+            stats_.lastPassMs = passWall_ * 1e3;
+            passWall_ = 0.0;
+            if (slicer_.midPass() == false && u.passRpp != scene_.render.rpp)
+                slicer_.restart(tracer_->width(), tracer_->height(), scene_.render.rpp);
+            break;   // a complete pass: let the display show it before tracing on
+        }
+    } while (now() - start < budgetSeconds);
+    stats_.frameTraceMs = (now() - start) * 1e3;
+    tracedSinceDisplay_ = true;
+}
+
+void Viewer::ensureDisplayTargets() {
+    const int w = tracer_->width();
+    const int h = tracer_->height();
+    if (displayTexture_ && w == displayWidth_ && h == displayHeight_) return;
+    glDeleteTextures(1, &displayTexture_);
+    glCreateTextures(GL_TEXTURE_2D, 1, &displayTexture_);
+    glTextureStorage2D(displayTexture_, 1, GL_RGBA8, w, h);
+    glTextureParameteri(displayTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(displayTexture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glNamedFramebufferTexture(displayFramebuffer_, GL_COLOR_ATTACHMENT0, displayTexture_, 0);
+    displayWidth_ = w;
+    displayHeight_ = h;
+    displayDirty_ = true;
+}
+
+bool Viewer::needsDisplay() const {
+    if (!hasScene()) return false;
+    if (displayDirty_ || !displayTexture_) return true;
+    if (!tracedSinceDisplay_) return false;
+    const double t = now();
+    const bool firstPassPending = tracer_->samplesPerPixel() == 0 && t - restartTime_ < 0.25;
+    const bool passDone = !slicer_.midPass();
+    return paused_ || (!firstPassPending && (passDone || t - lastDisplay_ > 0.25));
+}
+
+unsigned Viewer::displayTexture() {
+    stats_.frameDisplayMs = 0.0;
+    if (!hasScene()) return 0;
+    ensureDisplayTargets();
+    const double t0 = now();
+    if (!needsDisplay()) return displayTexture_;
+    const ShaderProgram& p = display_;
+    p.set("uImageSize", glm::ivec2(displayWidth_, displayHeight_));
+    p.set("uView", int(view_));
+    p.set("uExposure", scene_.render.exposure);
+    p.set("uToneMap", toneMapOp(scene_.render.toneMap));
+    p.set("uDepthScale", depthScale);
+    p.set("uNoiseScale", noiseScale);
+    p.set("uSpp", float(tracer_->samplesPerPixel()));
+    p.set("uHasMoments", variant_ == kMoments && tracer_->samplesPerPixel() > 0 ? 1 : 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
+    glViewport(0, 0, displayWidth_, displayHeight_);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glBindTextureUnit(0, tracer_->accumulationTexture());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 16, momentsBuffer_);
+    glUseProgram(p.id());
+    glBindVertexArray(displayVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glFinish();   // so the time below is the pass's (llvmpipe runs it at the flush)
+    stats_.displayMs = (now() - t0) * 1e3;
+    stats_.frameDisplayMs = stats_.displayMs;
+    displayDirty_ = false;
+    tracedSinceDisplay_ = false;
+    lastDisplay_ = now();
+    return displayTexture_;
+}
+
+glm::vec4 Viewer::pixelValue(int x, int y) const {
+    glm::vec4 v(0.0f);
+    if (!hasScene() || x < 0 || y < 0 || x >= tracer_->width() || y >= tracer_->height()) return v;
+    glGetTextureSubImage(tracer_->accumulationTexture(), 0, x, tracer_->height() - 1 - y, 0, 1, 1, 1, GL_RGBA,
+                         GL_FLOAT, sizeof(v), &v[0]);
+    return v;
+}
+
+std::optional<int> Viewer::pick(float x, float y) {
+    if (!hasScene()) return std::nullopt;
+    const std::optional<int> hit = pickObject(scene_, imageWidth(), imageHeight(), ImagePoint{x, y});
+    selected = hit.value_or(-1);
+    if (hit) {
+        const Sphere& s = scene_.spheres[std::size_t(*hit)];
+        const std::string material =
+            s.material >= 0 && s.material < int(scene_.materials.size()) ? scene_.materials[std::size_t(s.material)].name : "?";
+        log_.info("picked object " + std::to_string(*hit) + " (material " + material + ")");
+    } else {
+        log_.info("picked nothing (sky)");
+    }
+    return hit;
+}
+
+std::string Viewer::shaderVariant() const {
+    static const char* const extra[] = {"", " + moments", " + debug views"};
+    return tracer_ ? tracer_->variantName() + extra[variant_] : "none (shader error)";
+}
+
+} // namespace raylab::ui

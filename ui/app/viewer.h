@@ -1,0 +1,152 @@
+#pragma once
+// The viewer's model: the scene being shown, the path tracer driving it (the same renderer core as
+// raylab-render), the time-sliced progressive passes, the display pass, and every command the
+// panels, the mouse and keys, and the automation script issue. No window and no ImGui here: the
+// views in ui/panels read and change this object. Needs a current GL 4.5 context.
+#include "app/debug_view.h"
+#include "app/file_watcher.h"
+#include "app/log.h"
+#include "app/pass_slicer.h"
+#include "app/scene_edit.h"
+#include "gl/shader_program.h"
+#include "render/path_tracer.h"
+#include "scene/scene.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace raylab::ui {
+
+struct ViewerStats {
+    double traceSeconds = 0.0;       // GPU tracing time since accumulation restarted
+    double lastPassMs = 0.0;         // wall time of the last complete pass (all its slices)
+    double frameTraceMs = 0.0;       // tracing time spent in the last UI frame
+    double displayMs = 0.0;          // the last display pass
+    double frameDisplayMs = 0.0;     // the display pass in the last UI frame (0 when not needed)
+    double shaderCompileSeconds = 0.0;
+    std::uint64_t restarts = 0;      // times accumulation restarted
+};
+
+struct OverlaySettings {
+    bool boxes = false;          // every object's bounding box
+    bool selectedOnly = false;   // only the selected object's box
+};
+
+class Viewer {
+public:
+    explicit Viewer(Log& log);
+    ~Viewer();
+    Viewer(const Viewer&) = delete;
+    Viewer& operator=(const Viewer&) = delete;
+
+    // --- files -----------------------------------------------------------------------------------
+    // Loads a scene file; on failure logs the error (file:line), keeps the previous scene running
+    // and returns false.
+    bool openScene(const std::filesystem::path& file);
+    // Reloads when the file changed on disk; call once a frame.
+    void pollFileChanges();
+    bool saveScene(const std::filesystem::path& file);
+    // The traced image as EXR (linear) or PNG (exposure and tone map applied).
+    bool exportRender(const std::filesystem::path& file);
+    bool reloadShaders();
+
+    // --- edits -------------------------------------------------------------------------------------
+    // Changes one key ("camera.fov", "materials.red.albedo", "objects.2.radius"); logs and returns
+    // false when the key or value is bad.
+    bool set(const std::string& key, const std::string& valueText);
+    bool set(const SceneParam& param, const ParamValue& value);
+    // After changing scene() directly (camera moves): does what `trigger` implies.
+    void sceneChanged(Trigger trigger);
+    Scene& scene() { return scene_; }
+    const Scene& scene() const { return scene_; }
+    bool hasScene() const { return hasScene_ && tracer_ != nullptr; }
+
+    // --- render control ----------------------------------------------------------------------------
+    void setPaused(bool paused) { paused_ = paused; }
+    bool paused() const { return paused_; }
+    void resetAccumulation();
+    void setResolutionScale(float scale);   // clamped to [0.125, 2]
+    float resolutionScale() const { return scale_; }
+    void setDebugView(DebugView view);
+    DebugView debugView() const { return view_; }
+    void setDebugBounce(int k);   // the k of DebugView::BounceK, >= 0
+    int debugBounce() const { return bounce_; }
+    float depthScale = 20.0f;   // depth view: distance shown black
+    float noiseScale = 0.2f;    // noise view: relative error shown red
+    OverlaySettings overlays;
+    float cameraSpeed = 2.0f;   // world units per second for WASD/QE
+    int selected = -1;          // object index, -1 = none
+
+    // The traced image size (the scene's render size × resolution scale).
+    int imageWidth() const;
+    int imageHeight() const;
+    // Finished: target spp or time budget reached.
+    bool converged() const;
+    // Traces slices of passes for about budgetSeconds (at least one slice unless paused/converged).
+    void update(double budgetSeconds);
+    // Runs the display pass when there is something new to show; returns the RGBA8 texture to show.
+    // New samples are shown when a pass completes (or every 0.25 s during long passes, or at once
+    // when paused); after a restart the previous picture stays until the first pass is complete,
+    // so moving the camera never flashes a half-traced image.
+    unsigned displayTexture();
+    void redisplay() { displayDirty_ = true; }
+    bool needsDisplay() const;   // the next displayTexture() would show something new   // after changing depthScale or noiseScale
+    // The linear value of image pixel (x, y), top-left origin, as accumulated.
+    glm::vec4 pixelValue(int x, int y) const;
+    // Select the object seen at image pixel (x, y); logs what was picked.
+    std::optional<int> pick(float x, float y);
+
+    // --- counters ----------------------------------------------------------------------------------
+    const PathTracer* tracer() const { return tracer_; }
+    const ViewerStats& stats() const { return stats_; }
+    std::string shaderVariant() const;
+    // The most recent error of a load, reload, compile or edit ("" once something succeeds).
+    const std::string& lastError() const { return lastError_; }
+    const std::filesystem::path& scenePath() const { return scenePath_; }
+    Log& log() { return log_; }
+
+private:
+    Scene tracedScene() const;   // scene_ with the resolution scale applied
+    bool applyScene(Scene next, Trigger trigger);
+    void restart();   // after a scene upload: clear moments, restart the slicer
+    void ensureDisplayTargets();
+
+    Log& log_;
+    Scene scene_;
+    std::filesystem::path scenePath_;
+    FileWatcher watcher_;
+    // Tracer variants, compiled when first needed: the plain beauty tracer (what raylab-render runs),
+    // one that also keeps per-pixel moments (noise, NaN views), one that traces the debug views.
+    enum Variant { kBeauty = 0, kMoments = 1, kViews = 2 };
+    static Variant variantFor(DebugView view);
+    std::unique_ptr<PathTracer> compileVariant(Variant v);   // throws ShaderError
+    bool activateVariant(Variant v);
+    std::unique_ptr<PathTracer> tracers_[3];
+    PathTracer* tracer_ = nullptr;
+    Variant variant_ = kBeauty;
+    ShaderProgram display_;
+    PassSlicer slicer_;
+    bool hasScene_ = false;
+    bool paused_ = false;
+    float scale_ = 1.0f;
+    DebugView view_ = DebugView::Beauty;
+    int bounce_ = 1;
+    ViewerStats stats_;
+    std::string lastError_;
+    double passWall_ = 0.0;
+
+    unsigned momentsBuffer_ = 0;   // binding 16: per-pixel moments (debug_views.glsl)
+    unsigned displayTexture_ = 0;
+    unsigned displayFramebuffer_ = 0;
+    unsigned displayVao_ = 0;
+    int displayWidth_ = 0;
+    int displayHeight_ = 0;
+    bool displayDirty_ = true;        // display settings or targets changed: show at once
+    bool tracedSinceDisplay_ = false; // samples traced that the display texture does not show yet
+    double lastDisplay_ = 0.0;        // when the display pass last ran (seconds)
+    double restartTime_ = 0.0;        // when accumulation last restarted
+};
+
+} // namespace raylab::ui

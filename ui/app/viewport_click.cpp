@@ -1,0 +1,16 @@
+#include "app/viewport_click.h"
+
+#include <string>
+
+namespace raylab::ui {
+
+void viewportClick(Viewer& viewer, const UiState& ui, float x, float y) {
+    const ImageRect& r = ui.image;
+    if (!r.valid() || x < r.x || y < r.y || x >= r.x + r.width || y >= r.y + r.height) {
+        viewer.log().info("click at (" + std::to_string(int(x)) + ", " + std::to_string(int(y)) + ") is outside the image");
+        return;
+    }
+    viewer.pick((x - r.x) / r.width * float(viewer.imageWidth()), (y - r.y) / r.height * float(viewer.imageHeight()));
+}
+
+} // namespace raylab::ui

@@ -1,0 +1,11 @@
+#pragma once
+// A left click at a window pixel, as the viewport and the automation script deliver it: when it
+// lands on the shown image, the object under it is picked (the image may be scaled in the window).
+#include "app/ui_state.h"
+#include "app/viewer.h"
+
+namespace raylab::ui {
+
+void viewportClick(Viewer& viewer, const UiState& ui, float x, float y);
+
+} // namespace raylab::ui

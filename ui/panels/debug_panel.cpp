@@ -1,0 +1,85 @@
+// Debug panel: the debug view, its scales, a colour legend, and the value under the cursor.
+#include "panels/panels.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+namespace raylab::ui {
+namespace {
+
+// The display shader's heat map (shaders/entry/display.frag).
+ImU32 heat(float t) {
+    t = std::clamp(t, 0.0f, 1.0f);
+    const float r = std::clamp(2.0f * t - 0.5f, 0.0f, 1.0f);
+    const float g = std::clamp(t < 0.5f ? 2.0f * t : 2.0f - 2.0f * t + 0.5f, 0.0f, 1.0f);
+    const float b = std::clamp(1.0f - 2.0f * t, 0.0f, 1.0f);
+    return ImGui::GetColorU32(ImVec4(r, g, b, 1.0f));
+}
+
+void legend(const char* lo, const char* hi) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    const float w = ImGui::GetContentRegionAvail().x, h = 12.0f;
+    const int n = 32;
+    for (int i = 0; i < n; ++i)
+        dl->AddRectFilled(ImVec2(p.x + w * float(i) / n, p.y), ImVec2(p.x + w * float(i + 1) / n, p.y + h),
+                          heat((float(i) + 0.5f) / n));
+    ImGui::Dummy(ImVec2(w, h));
+    ImGui::TextUnformatted(lo);
+    ImGui::SameLine(std::max(0.0f, w - ImGui::CalcTextSize(hi).x));
+    ImGui::TextUnformatted(hi);
+}
+
+} // namespace
+
+void drawDebugPanel(Viewer& viewer, UiState& ui) {
+    if (!ImGui::Begin("Debug views")) {
+        ImGui::End();
+        return;
+    }
+    int column = 0;
+    for (DebugView v : kDebugViews) {
+        const std::string name(debugViewName(v));
+        if (column++ % 3 != 0) ImGui::SameLine(float((column - 1) % 3) * 105.0f + 8.0f);
+        if (ImGui::RadioButton(name.c_str(), viewer.debugView() == v)) viewer.setDebugView(v);
+    }
+    switch (viewer.debugView()) {
+    case DebugView::Depth:
+        if (ImGui::DragFloat("black at distance", &viewer.depthScale, 0.1f, 0.01f, 1e5f)) viewer.redisplay();
+        ImGui::TextDisabled("white = at the eye, black = this far or a miss");
+        break;
+    case DebugView::Noise: {
+        if (ImGui::DragFloat("red at rel. error", &viewer.noiseScale, 0.005f, 0.001f, 10.0f)) viewer.redisplay();
+        ImGui::TextDisabled("standard error of the mean luminance / mean");
+        const std::string hi = std::to_string(viewer.noiseScale).substr(0, 5);
+        legend("0", hi.c_str());
+        break;
+    }
+    case DebugView::NonFinite:
+        ImGui::TextDisabled("magenta: a NaN or Inf sample was replaced by 0 there");
+        break;
+    case DebugView::BounceK: {
+        int k = viewer.debugBounce();
+        if (ImGui::SliderInt("bounce k", &k, 0, std::max(1, viewer.scene().render.maxBounces))) viewer.setDebugBounce(k);
+        ImGui::TextDisabled("k = 0: emitters and sky seen directly; k = 1: direct lighting");
+        break;
+    }
+    case DebugView::Direct:
+        ImGui::TextDisabled("bounces 0 and 1 (emitters, sky, direct lighting)");
+        break;
+    case DebugView::Indirect:
+        ImGui::TextDisabled("bounces 2 and more: direct + indirect = beauty");
+        break;
+    case DebugView::MaterialId:
+        ImGui::TextDisabled("one colour per material (hover for its name)");
+        break;
+    default:
+        break;
+    }
+    ImGui::Checkbox("value under the cursor", &ui.pixelTooltip);
+    ImGui::End();
+}
+
+} // namespace raylab::ui

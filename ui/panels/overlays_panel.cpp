@@ -1,0 +1,21 @@
+// Overlays panel: which wireframes the viewport draws over the image (viewport_panel.cpp draws
+// them with the tracer's own camera maths, app/view_geometry.h).
+#include "panels/panels.h"
+
+#include <imgui.h>
+
+namespace raylab::ui {
+
+void drawOverlaysPanel(Viewer& viewer, UiState&) {
+    if (!ImGui::Begin("Overlays")) {
+        ImGui::End();
+        return;
+    }
+    ImGui::Checkbox("bounding boxes", &viewer.overlays.boxes);
+    ImGui::SameLine();
+    ImGui::Checkbox("selected only", &viewer.overlays.selectedOnly);
+    ImGui::TextDisabled("Boxes: yellow, the selected object's: cyan.");
+    ImGui::End();
+}
+
+} // namespace raylab::ui

@@ -1,0 +1,24 @@
+#pragma once
+// The viewer's views, one file each: ImGui windows that read and change the Viewer model. They
+// hold no state of their own besides UiState, so the same calls run in a window and in the null
+// ImGui frames of the tests.
+#include "app/ui_state.h"
+#include "app/viewport_click.h"
+#include "app/viewer.h"
+
+namespace raylab::ui {
+
+void drawViewport(Viewer& viewer, UiState& ui);       // viewport_panel.cpp: image, overlays, mouse, keys
+void drawRenderPanel(Viewer& viewer, UiState& ui);    // render_panel.cpp: files, passes, stop conditions
+void drawCameraPanel(Viewer& viewer, UiState& ui);    // camera_panel.cpp
+void drawMaterialPanel(Viewer& viewer, UiState& ui);  // material_panel.cpp: outliner, object, material
+void drawOverlaysPanel(Viewer& viewer, UiState& ui);  // overlays_panel.cpp
+void drawDebugPanel(Viewer& viewer, UiState& ui);     // debug_panel.cpp
+void drawStatsPanel(Viewer& viewer, UiState& ui);     // stats_panel.cpp
+void drawLogPanel(Viewer& viewer, UiState& ui);       // log_panel.cpp
+
+// All of the above, laid out for a window of the given size on first use (imgui.ini keeps what
+// the user changes afterwards).
+void drawWorkspace(Viewer& viewer, UiState& ui, float windowWidth, float windowHeight);
+
+} // namespace raylab::ui

@@ -1,0 +1,72 @@
+// Render panel: files (open, save, screenshot, export), pause/resume/reset, resolution scale and
+// every render.* key of the parameter table except the display ones (camera panel).
+#include "panels/panels.h"
+#include "panels/param_widget.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace raylab::ui {
+
+void drawRenderPanel(Viewer& viewer, UiState& ui) {
+    if (!ImGui::Begin("Render")) {
+        ImGui::End();
+        return;
+    }
+    ImGui::PushItemWidth(-110.0f);   // room for the labels
+    const float boxWidth = ImGui::GetContentRegionAvail().x - 130.0f;   // path boxes: room for the button
+    if (ImGui::CollapsingHeader("Files", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::SetNextItemWidth(boxWidth);
+        const bool enter = ImGui::InputText("##open", &ui.openPath, ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::SameLine();
+        if ((ImGui::Button("Open") || enter) && !ui.openPath.empty()) viewer.openScene(ui.openPath);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Or drop a scene file on the window. Reloads when the file changes.");
+        ImGui::SetNextItemWidth(boxWidth);
+        ImGui::InputText("##save", &ui.savePath);
+        ImGui::SameLine();
+        if (ImGui::Button("Save scene") && !ui.savePath.empty()) viewer.saveScene(ui.savePath);
+        ImGui::SetNextItemWidth(boxWidth);
+        ImGui::InputText("##shot", &ui.screenshotPath);
+        ImGui::SameLine();
+        if (ImGui::Button("Screenshot (F12)")) ui.pendingScreenshot = ui.screenshotPath;
+        ImGui::SetNextItemWidth(boxWidth);
+        ImGui::InputText("##export", &ui.exportPath);
+        ImGui::SameLine();
+        if (ImGui::Button("Export (F9)")) viewer.exportRender(ui.exportPath);
+        if (ImGui::Button("Reload shaders (F5)")) viewer.reloadShaders();
+    }
+    if (!viewer.hasScene()) {
+        ImGui::TextWrapped("No scene: open one above.");
+        ImGui::PopItemWidth();
+        ImGui::End();
+        return;
+    }
+    if (ImGui::CollapsingHeader("Passes", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (ImGui::Button(viewer.paused() ? "Resume (Space)" : "Pause (Space)")) viewer.setPaused(!viewer.paused());
+        ImGui::SameLine();
+        if (ImGui::Button("Reset (R)")) viewer.resetAccumulation();
+        float scale = viewer.resolutionScale();
+        if (ImGui::SliderFloat("resolution scale", &scale, 0.125f, 2.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp))
+            viewer.setResolutionScale(scale);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Traced size = render.width/height x scale (1 = the file's size)");
+        ImGui::Text("traced image %d x %d", viewer.imageWidth(), viewer.imageHeight());
+        const auto* t = viewer.tracer();
+        const double target = double(viewer.scene().render.spp);
+        const float progress = t ? float(double(t->samplesPerPixel()) / target) : 0.0f;
+        const std::string text = std::to_string(t ? t->samplesPerPixel() : 0) + " / " +
+                                 std::to_string(viewer.scene().render.spp) + " spp";
+        ImGui::ProgressBar(progress, ImVec2(-1, 0), text.c_str());
+        for (const ParamSpec& p : sceneParameters()) {
+            if (p.section() != "render" || p.name() == "exposure" || p.name() == "tone_map") continue;
+            paramWidget(viewer, resolveParam(viewer.scene(), p.key));
+        }
+    }
+    if (ImGui::CollapsingHeader("Sky")) {
+        for (const ParamSpec& p : sceneParameters())
+            if (p.section() == "sky") paramWidget(viewer, resolveParam(viewer.scene(), p.key));
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+} // namespace raylab::ui

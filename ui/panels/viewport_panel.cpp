@@ -1,0 +1,174 @@
+// The viewport: the traced image fitted into its window, overlays on top, the error banner, the
+// value under the cursor, and the mouse and key camera controls.
+#include "panels/panels.h"
+
+#include "app/camera_control.h"
+#include "app/view_geometry.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+namespace raylab::ui {
+namespace {
+
+constexpr float kRadiansPerPixel = 0.005f;
+constexpr float kTurnSpeed = 1.2f;   // radians per second for the arrow keys
+
+ImVec2 toWindow(const ImageRect& r, int w, int h, ImagePoint p) {
+    return ImVec2(r.x + p.x / float(w) * r.width, r.y + p.y / float(h) * r.height);
+}
+
+void drawOverlays(Viewer& viewer, const ImageRect& r) {
+    const Scene& scene = viewer.scene();
+    if (!viewer.overlays.boxes && !viewer.overlays.selectedOnly) return;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.width, r.y + r.height), true);
+    const int w = viewer.imageWidth(), h = viewer.imageHeight();
+    for (int i = 0; i < int(scene.spheres.size()); ++i) {
+        const bool sel = i == viewer.selected;
+        if (viewer.overlays.selectedOnly && !sel) continue;
+        const ImU32 colour = sel ? IM_COL32(0, 255, 255, 255) : IM_COL32(255, 255, 0, 255);
+        for (const Segment& s : projectBox(scene, w, h, objectBounds(scene.spheres[std::size_t(i)])))
+            dl->AddLine(toWindow(r, w, h, s.a), toWindow(r, w, h, s.b), colour, 1.0f);
+    }
+    dl->PopClipRect();
+}
+
+void keyboardCamera(Viewer& viewer) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput || io.KeyCtrl) return;
+    const float dt = std::min(io.DeltaTime, 0.1f);
+    const float step = viewer.cameraSpeed * dt * (io.KeyShift ? 4.0f : 1.0f);
+    // GLFW's key codes for letters are their upper-case ASCII codes (the backend indexes KeysDown by them).
+    auto down = [](int key) { return key >= 0 && key < int(IM_ARRAYSIZE(ImGui::GetIO().KeysDown)) && ImGui::IsKeyDown(key); };
+    const float forward = float(down('W')) - float(down('S'));
+    const float right = float(down('D')) - float(down('A'));
+    const float up = float(down('E')) - float(down('Q'));
+    const float yaw = float(down(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) - float(down(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)));
+    const float pitch = float(down(ImGui::GetKeyIndex(ImGuiKey_UpArrow))) - float(down(ImGui::GetKeyIndex(ImGuiKey_DownArrow)));
+    if (forward == 0.0f && right == 0.0f && up == 0.0f && yaw == 0.0f && pitch == 0.0f) return;
+    Camera& cam = viewer.scene().camera;
+    moveCamera(cam, forward * step, right * step, up * step);
+    turnCamera(cam, yaw * kTurnSpeed * dt, pitch * kTurnSpeed * dt);
+    viewer.sceneChanged(Trigger::ResetAccumulation);
+}
+
+void tooltip(Viewer& viewer, const ImageRect& r) {
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    const float fx = (m.x - r.x) / r.width * float(viewer.imageWidth());
+    const float fy = (m.y - r.y) / r.height * float(viewer.imageHeight());
+    const int x = int(fx), y = int(fy);
+    if (x < 0 || y < 0 || x >= viewer.imageWidth() || y >= viewer.imageHeight()) return;
+    const glm::vec4 v = viewer.pixelValue(x, y);
+    const auto obj = pickObject(viewer.scene(), viewer.imageWidth(), viewer.imageHeight(), ImagePoint{fx, fy});
+    ImGui::BeginTooltip();
+    ImGui::Text("pixel (%d, %d)", x, y);
+    ImGui::Text("%s: %.4g %.4g %.4g", std::string(debugViewName(viewer.debugView())).c_str(), double(v.x), double(v.y), double(v.z));
+    if (obj) {
+        const Sphere& s = viewer.scene().spheres[std::size_t(*obj)];
+        ImGui::Text("object %d, material %d '%s'", *obj, s.material, viewer.scene().materials[std::size_t(s.material)].name.c_str());
+    } else {
+        ImGui::TextUnformatted("sky");
+    }
+    ImGui::EndTooltip();
+}
+
+} // namespace
+
+void drawViewport(Viewer& viewer, UiState& ui) {
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
+    const bool open = ImGui::Begin("Viewport", nullptr, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
+    if (!open) {
+        ImGui::End();
+        return;
+    }
+    if (!viewer.lastError().empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
+        ImGui::TextWrapped("%s", viewer.lastError().c_str());
+        ImGui::PopStyleColor();
+    }
+    const unsigned texture = viewer.displayTexture();
+    if (!texture) {
+        ui.image = {};
+        ImGui::TextUnformatted("No scene. Open one in the Render panel or drop a file here.");
+        ImGui::End();
+        return;
+    }
+    // Fit the image into the space left, keeping its aspect ratio, centred.
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const float aspect = float(viewer.imageWidth()) / float(viewer.imageHeight());
+    float w = avail.x, h = avail.x / aspect;
+    if (h > avail.y) {
+        h = avail.y;
+        w = h * aspect;
+    }
+    w = std::max(w, 1.0f);
+    h = std::max(h, 1.0f);
+    ImVec2 pos = ImGui::GetCursorScreenPos();
+    pos.x += std::max(0.0f, (avail.x - w) * 0.5f);
+    pos.y += std::max(0.0f, (avail.y - h) * 0.5f);
+    ImGui::SetCursorScreenPos(pos);
+    ui.image = ImageRect{pos.x, pos.y, w, h};
+    ImGui::InvisibleButton("##image", ImVec2(w, h), ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+    // GL textures start at the bottom row: flip v.
+    ImGui::GetWindowDrawList()->AddImage(ImTextureID(std::uintptr_t(texture)), pos, ImVec2(pos.x + w, pos.y + h),
+                                         ImVec2(0, 1), ImVec2(1, 0));
+    drawOverlays(viewer, ui.image);
+
+    const ImGuiIO& io = ImGui::GetIO();
+    Camera& cam = viewer.scene().camera;
+    if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 3.0f) || ImGui::IsMouseDragging(ImGuiMouseButton_Right, 3.0f))) {
+        ui.dragging = true;
+        if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
+            if (io.MouseDown[0]) orbitCamera(cam, io.MouseDelta.x * kRadiansPerPixel, io.MouseDelta.y * kRadiansPerPixel);
+            else turnCamera(cam, io.MouseDelta.x * kRadiansPerPixel, -io.MouseDelta.y * kRadiansPerPixel);
+            viewer.sceneChanged(Trigger::ResetAccumulation);
+        }
+    }
+    if (ImGui::IsItemDeactivated()) {
+        if (!ui.dragging && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) viewportClick(viewer, ui, io.MousePos.x, io.MousePos.y);
+        ui.dragging = false;
+    }
+    if (ImGui::IsItemHovered()) {
+        if (io.MouseWheel != 0.0f) {
+            dollyCamera(cam, io.MouseWheel > 0 ? 0.9f : 1.0f / 0.9f);
+            viewer.sceneChanged(Trigger::ResetAccumulation);
+        }
+        if (ui.pixelTooltip && !ui.dragging) tooltip(viewer, ui.image);
+    }
+    if (ImGui::IsWindowFocused()) keyboardCamera(viewer);
+    ImGui::End();
+}
+
+void drawWorkspace(Viewer& viewer, UiState& ui, float W, float H) {
+    // First-use layout: controls on the left, the image in the middle, inspection on the right,
+    // stats and log under the image. imgui.ini remembers any change.
+    const float left = 330.0f, right = 330.0f, bottom = 230.0f;
+    const float mid = std::max(200.0f, W - left - right);
+    auto place = [](float x, float y, float w, float h) {
+        ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(w, h), ImGuiCond_FirstUseEver);
+    };
+    place(left, 0, mid, H - bottom);
+    drawViewport(viewer, ui);
+    place(0, 0, left, H * 0.62f);
+    drawRenderPanel(viewer, ui);
+    place(0, H * 0.62f, left, H * 0.38f);
+    drawCameraPanel(viewer, ui);
+    place(left + mid, 0, right, H * 0.55f);
+    drawMaterialPanel(viewer, ui);
+    place(left + mid, H * 0.55f, right, H * 0.12f);
+    drawOverlaysPanel(viewer, ui);
+    place(left + mid, H * 0.67f, right, H * 0.33f);
+    drawDebugPanel(viewer, ui);
+    place(left, H - bottom, mid * 0.5f, bottom);
+    drawStatsPanel(viewer, ui);
+    place(left + mid * 0.5f, H - bottom, mid * 0.5f, bottom);
+    drawLogPanel(viewer, ui);
+}
+
+} // namespace raylab::ui
