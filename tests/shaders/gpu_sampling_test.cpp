@@ -81,7 +81,7 @@ TEST_F(GpuSamplingTest, GgxVisibleNormalsAndPlasticFromTheShaderMatchTheirPdfAcr
                 }
                 EXPECT_EQ(nonFinite, 0);
                 EXPECT_EQ(inconsistent, 0);
-                const auto expected = grid.expected([&](vec3 w) { return double(bsdfPdf(m, wo, w)); }, n);
+                const auto expected = grid.expected([&](vec3 w) { return double(bsdfPdf(m, wo, w)); }, n, observed);
                 const auto chi = test::chiSquareTest(observed, expected);
                 if (std::getenv("RAYLAB_DEBUG_CHI") && chi.pValue <= perTest)
                     for (size_t c = 0; c < observed.size(); ++c)
