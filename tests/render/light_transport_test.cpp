@@ -194,3 +194,18 @@ TEST_F(LightTransportTest, GgxFurnaceReturnsTheSingleScatteringAlbedo) {
         EXPECT_NEAR(measured / (w * h), expected / (w * h), 0.005 * expected / (w * h));
     }
 }
+
+TEST_F(LightTransportTest, MaterialScenesProduceNoNanInAnyLightSamplingMode) {
+    // Every material of the sweep (mirror, smooth and rough glass, metals, plastics) with NEE and
+    // MIS on and off: no sample may be NaN or Inf.
+    for (const char* scene : {"materials.json", "veach_mis.json"})
+        for (const char* mode : {"render.nee=false", "render.mis=false", "render.mis=true"}) {
+            SCOPED_TRACE(std::string(scene) + " " + mode);
+            const Scene s = loadScene(test::scenePath(scene), {"render.width=40", "render.height=16", "render.spp=16",
+                                                               "render.rpp=16", "render.nee=true", mode});
+            PathTracer tracer;
+            tracer.setScene(s);
+            renderProgressively(tracer, s.render);
+            EXPECT_EQ(tracer.nonFiniteSamples(), 0u);
+        }
+}

@@ -93,6 +93,41 @@ TEST_F(GpuSamplingTest, GgxVisibleNormalsAndPlasticFromTheShaderMatchTheirPdfAcr
             }
 }
 
+TEST_F(GpuSamplingTest, RoughGlassFromTheShaderMatchesItsPdf) {
+    // Walter et al. 2007 glass sampled by the shader, from outside and inside, at a few α and
+    // cosθ (the full sweep runs on the CPU: ShaderBsdf.RoughDielectric*). 8 tests, Šidák α = 0.01.
+    const test::GpuSampler sampler;
+    const double perTest = test::sidak(0.01, 8);
+    const unsigned n = 1000000;
+    unsigned seed = 900;
+    for (float side : {1.0f, -1.0f})
+        for (float alpha : {0.05f, 0.5f})
+            for (float mu : {0.7f, 0.3f}) {
+                SCOPED_TRACE("side " + std::to_string(side) + " alpha " + std::to_string(alpha) + " cos " +
+                             std::to_string(mu));
+                const BsdfParams m(vec3(0.0f), vec3(0.0f), alpha, 1.0f, 1.5f);
+                const vec3 wo = outgoing(mu) * vec3(1.0f, 1.0f, side);
+                const float eta = side > 0 ? 1.5f : 1.0f / 1.5f;
+                const float sin2T = (1.0f - mu * mu) / (eta * eta);
+                vec3 centre(-wo.x, -wo.y, wo.z);
+                if (sin2T < 1.0f) centre = -wo / eta + vec3(0.0f, 0.0f, side * (mu / eta - std::sqrt(1.0f - sin2T)));
+                const test::LobeGrid grid(glm::normalize(centre), std::max(2.0f * alpha, 0.02f));
+                std::vector<double> observed(size_t(grid.na * grid.nphi), 0.0);
+                int inconsistent = 0;
+                for (const auto& s : sampler.bsdf(m, wo, n, ++seed)) {
+                    if (s.lobe() == LOBE_NONE) continue;
+                    observed[size_t(grid.cell(s.wi()))] += 1.0;
+                    const float pdf = bsdfPdf(m, wo, s.wi());
+                    if (!(std::abs(s.pdf() - pdf) <= 2e-3f * pdf)) ++inconsistent;
+                }
+                EXPECT_EQ(inconsistent, 0);
+                const auto expected = grid.expected([&](vec3 w) { return double(bsdfPdf(m, wo, w)); }, n, observed);
+                const auto chi = test::chiSquareTest(observed, expected);
+                EXPECT_FALSE(chi.sampleInZeroCell);
+                EXPECT_GT(chi.pValue, perTest) << "chi2 " << chi.statistic << " dof " << chi.dof;
+            }
+}
+
 TEST_F(GpuSamplingTest, GlassFromTheShaderReflectsWithFresnelProbability) {
     // Reflect / refract counts of 10^6 GPU samples against N·F: IOR 1.5 and 1/1.5, from both
     // sides, 4 cosines; 16 tests, Šidák-corrected α = 0.01.
