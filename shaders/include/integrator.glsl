@@ -9,8 +9,19 @@
 #include "sky.glsl"
 #include "bsdf.glsl"
 #include "light_sampling.glsl"
+#include "environment_map.glsl"
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
+
+// Radiance from the sky along a unit direction: the image texel it falls in (nearest, so the
+// radiance is piecewise constant over texels), or the analytic skies.
+vec3 skyLookup(SkyParams sky, vec3 dir) {
+    if (sky.type != SKY_MAP) return skyRadiance(sky, dir);
+    ivec2 size = textureSize(uSkyMap, 0);
+    vec2 uv = equirectFromDirection(dir, uSkyRotation);
+    ivec2 texel = min(ivec2(uv * vec2(size)), size - ivec2(1));
+    return uSkyMapScale * texelFetch(uSkyMap, texel, 0).rgb;
+}
 
 BsdfParams materialBsdf(GpuMaterial m) {
     return BsdfParams(m.albedo.rgb, m.f0Ior.rgb, ggxAlpha(m.albedo.a), m.emission.a, m.f0Ior.a);
@@ -58,7 +69,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                 float lightPdf = UNIFORM_SPHERE_PDF / float(lightCount);
                 w = uMis ? powerHeuristic(prevPdf, lightPdf) : 0.0f;
             }
-            radiance += beta * skyRadiance(sky, dir) * w;
+            radiance += beta * skyLookup(sky, dir) * w;
             break;
         }
         GpuMaterial m = materials[hit.material];
@@ -95,7 +106,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             } else {
                 wiW = sampleUniformSphere(ul);
                 lightPdf = UNIFORM_SPHERE_PDF;
-                Ll = skyRadiance(sky, wiW);
+                Ll = skyLookup(sky, wiW);
             }
             lightPdf /= float(lightCount);
             vec3 wiL = frameToLocal(frame, wiW);

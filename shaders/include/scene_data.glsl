@@ -13,6 +13,7 @@ layout(std430, binding = 3) buffer CounterBuffer {
 };
 
 layout(std430, binding = 4) readonly buffer LightBuffer { GpuLight lights[]; };
+layout(binding = 4) uniform sampler2D uSkyMap;   // texture unit 4: sky.map (1×1 black without)
 
 uniform ivec2 uImageSize;
 uniform uint uSampleStart;   // samples per pixel already in uAccum
@@ -34,6 +35,8 @@ uniform vec3 uSkyBottom;
 uniform int uLightCount;     // emissive spheres in lights[]
 uniform bool uNee;           // next-event estimation on
 uniform bool uMis;           // with uNee: power-heuristic MIS of light and BSDF samples
+uniform float uSkyMapScale;  // sky.strength for the map
+uniform float uSkyRotation;  // radians about +y
 uniform bool uSkyIsLight;    // with uNee: the sky is sampled too (its radiance is not zero)
 
 #endif

@@ -17,11 +17,16 @@ public:
 
     int sphereCount() const { return sphereCount_; }
     int lightCount() const { return lightCount_; }   // emissive spheres
+    float skyMapMax() const { return skyMapMax_; }    // largest channel of the sky map, 0 without
 
 private:
+    void uploadSkyMap(const Sky& sky);
+
     unsigned sphereBuffer_ = 0;
     unsigned materialBuffer_ = 0;
     unsigned lightBuffer_ = 0;
+    unsigned skyMapTexture_ = 0;
+    float skyMapMax_ = 0.0f;
     int sphereCount_ = 0;
     int lightCount_ = 0;
 };

@@ -12,7 +12,10 @@
 namespace raylab {
 namespace {
 
-int skyType(Sky::Type t) { return t == Sky::Type::Constant ? glsl::SKY_CONSTANT : glsl::SKY_GRADIENT; }
+int skyType(Sky::Type t) {
+    if (t == Sky::Type::Map) return glsl::SKY_MAP;
+    return t == Sky::Type::Constant ? glsl::SKY_CONSTANT : glsl::SKY_GRADIENT;
+}
 
 } // namespace
 
@@ -85,7 +88,10 @@ void PathTracer::setScene(const Scene& scene) {
     p.set("uSkyColor", sky.color * sky.strength);
     p.set("uSkyTop", sky.top * sky.strength);
     p.set("uSkyBottom", sky.bottom * sky.strength);
-    const glm::vec3 skyMax = sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom);
+    p.set("uSkyMapScale", sky.strength);
+    p.set("uSkyRotation", glm::radians(sky.rotation));
+    glm::vec3 skyMax = sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom);
+    if (sky.type == Sky::Type::Map) skyMax = glm::vec3(gpuScene_.skyMapMax());
     const bool skyIsLight = sky.strength * std::max({skyMax.r, skyMax.g, skyMax.b}) > 0.0f;
     p.set("uLightCount", gpuScene_.lightCount());
     p.set("uNee", int(r.nee));

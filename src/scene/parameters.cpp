@@ -142,10 +142,11 @@ std::vector<ParamSpec> buildSceneTable() {
 
     // --- sky ---
     add(spec("sky.type", T::Enum, kAny, kAny, "",
-             "Constant radiance, or a blend from bottom (looking down) to top (looking up).",
+             "Constant radiance, a blend from bottom (looking down) to top (looking up), or an HDR image (sky.map).",
              G::ResetAccumulation,
              {{"constant", static_cast<int>(Sky::Type::Constant)},
-              {"gradient", static_cast<int>(Sky::Type::Gradient)}}),
+              {"gradient", static_cast<int>(Sky::Type::Gradient)},
+              {"map", static_cast<int>(Sky::Type::Map)}}),
         [](auto& s) -> auto& { return s.sky.type; });
     add(spec("sky.color", T::Rgb, atLeast(0), kAny, "radiance",
              "Constant sky: its radiance (ignored by gradient).", G::ResetAccumulation),
@@ -156,6 +157,9 @@ std::vector<ParamSpec> buildSceneTable() {
     add(spec("sky.bottom", T::Rgb, atLeast(0), kAny, "radiance",
              "Gradient sky: radiance straight down (-y).", G::ResetAccumulation),
         [](auto& s) -> auto& { return s.sky.bottom; });
+    add(spec("sky.rotation", T::Float, atLeast(-360), atMost(360), "degrees",
+             "Map sky: turns the image about the up (+y) axis.", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.sky.rotation; });
     add(spec("sky.strength", T::Float, atLeast(0), kAny, "factor", "Multiplies the sky radiance.",
              G::ResetAccumulation),
         [](auto& s) -> auto& { return s.sky.strength; });
