@@ -11,6 +11,7 @@
 #include "light_sampling.glsl"
 #include "environment_map.glsl"
 #include "scene_data.glsl"
+#include "environment_sampling.glsl"
 #include "scene_intersect.glsl"
 
 // Radiance from the sky along a unit direction: the image texel it falls in (nearest, so the
@@ -22,6 +23,10 @@ vec3 skyLookup(SkyParams sky, vec3 dir) {
     ivec2 texel = min(ivec2(uv * vec2(size)), size - ivec2(1));
     return uSkyMapScale * texelFetch(uSkyMap, texel, 0).rgb;
 }
+
+// Next-event estimation of the sky: the map by its own distribution, analytic skies uniformly.
+bool skyByMap() { return uSkyType == SKY_MAP && uEnvMeanWeight > 0.0f; }
+float skyLightPdf(vec3 dir) { return skyByMap() ? environmentPdf(dir) : UNIFORM_SPHERE_PDF; }
 
 BsdfParams materialBsdf(GpuMaterial m) {
     return BsdfParams(m.albedo.rgb, m.f0Ior.rgb, ggxAlpha(m.albedo.a), m.emission.a, m.f0Ior.a);
@@ -66,8 +71,8 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             vec3 dir = normalize(ray.dir);
             float w = 1.0f;
             if (uSkyIsLight && lightCount > 0 && !prevDelta) {
-                float lightPdf = UNIFORM_SPHERE_PDF / float(lightCount);
-                w = uMis ? powerHeuristic(prevPdf, lightPdf) : 0.0f;
+                float lightPdf = skyLightPdf(dir) / float(lightCount);
+                w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
             }
             radiance += beta * skyLookup(sky, dir) * w;
             break;
@@ -104,8 +109,8 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                     Ll = lights[k].radiance.rgb;
                 }
             } else {
-                wiW = sampleUniformSphere(ul);
-                lightPdf = UNIFORM_SPHERE_PDF;
+                wiW = skyByMap() ? sampleEnvironment(ul) : sampleUniformSphere(ul);
+                lightPdf = skyLightPdf(wiW);
                 Ll = skyLookup(sky, wiW);
             }
             lightPdf /= float(lightCount);

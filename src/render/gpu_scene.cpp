@@ -1,6 +1,7 @@
 #include "render/gpu_scene.h"
 
 #include "io/image_io.h"
+#include "render/environment_distribution.h"
 #include "shaders/include/scene_types.glsl"
 
 #include <glad/gl.h>
@@ -16,6 +17,8 @@ constexpr GLuint kSphereBinding = 1;
 constexpr GLuint kMaterialBinding = 2;
 constexpr GLuint kLightBinding = 4;
 constexpr GLuint kSkyMapUnit = 4;   // texture unit of uSkyMap
+constexpr GLuint kEnvMarginalBinding = 5;
+constexpr GLuint kEnvConditionalBinding = 6;
 
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
@@ -29,6 +32,8 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &sphereBuffer_);
     glCreateBuffers(1, &materialBuffer_);
     glCreateBuffers(1, &lightBuffer_);
+    glCreateBuffers(1, &envMarginalBuffer_);
+    glCreateBuffers(1, &envConditionalBuffer_);
 }
 
 GpuScene::~GpuScene() {
@@ -36,6 +41,8 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &materialBuffer_);
     glDeleteBuffers(1, &lightBuffer_);
     glDeleteTextures(1, &skyMapTexture_);
+    glDeleteBuffers(1, &envMarginalBuffer_);
+    glDeleteBuffers(1, &envConditionalBuffer_);
 }
 
 void GpuScene::upload(const Scene& scene) {
@@ -75,6 +82,12 @@ void GpuScene::uploadSkyMap(const Sky& sky) {
     glTextureSubImage2D(skyMapTexture_, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, image.rgba.data());
     glTextureParameteri(skyMapTexture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(skyMapTexture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    // Importance sampling tables (only used for map skies).
+    EnvironmentDistribution dist;
+    if (sky.type == Sky::Type::Map) dist = EnvironmentDistribution(image);
+    skyMapMeanWeight_ = dist.meanWeight();
+    uploadBuffer(envMarginalBuffer_, dist.marginalCdf());
+    uploadBuffer(envConditionalBuffer_, dist.conditionalCdf());
 }
 
 void GpuScene::bind() const {
@@ -82,6 +95,8 @@ void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, materialBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer_);
     glBindTextureUnit(kSkyMapUnit, skyMapTexture_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvMarginalBinding, envMarginalBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvConditionalBinding, envConditionalBuffer_);
 }
 
 } // namespace raylab

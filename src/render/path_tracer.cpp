@@ -90,6 +90,7 @@ void PathTracer::setScene(const Scene& scene) {
     p.set("uSkyBottom", sky.bottom * sky.strength);
     p.set("uSkyMapScale", sky.strength);
     p.set("uSkyRotation", glm::radians(sky.rotation));
+    p.set("uEnvMeanWeight", gpuScene_.skyMapMeanWeight());
     glm::vec3 skyMax = sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom);
     if (sky.type == Sky::Type::Map) skyMax = glm::vec3(gpuScene_.skyMapMax());
     const bool skyIsLight = sky.strength * std::max({skyMax.r, skyMax.g, skyMax.b}) > 0.0f;
