@@ -47,7 +47,10 @@ float environmentPdf(vec3 dir) {
     return envPdfUv(texel, size) / (2.0f * PI * PI * sinTheta);
 }
 
-vec3 sampleEnvironment(vec2 u) {
+// A direction from the map's distribution, with the solid-angle density of the texel it was
+// drawn in (exact, whereas re-mapping the direction may land in a neighbour at a texel edge),
+// and the image coordinates it came from.
+vec3 sampleEnvironment(vec2 u, out float pdf, out vec2 uvOut) {
     ivec2 size = textureSize(uSkyMap, 0);
     int y = envFindMarginal(size.y, u.y);
     int offset = y * (size.x + 1);
@@ -59,6 +62,9 @@ vec3 sampleEnvironment(vec2 u) {
     float fy = dy > 0.0f ? clamp((u.y - y0) / dy, 0.0f, 0.99999994f) : 0.5f;
     float fx = dx > 0.0f ? clamp((u.x - x0) / dx, 0.0f, 0.99999994f) : 0.5f;
     vec2 uv = vec2((float(x) + fx) / float(size.x), (float(y) + fy) / float(size.y));
+    float sinTheta = sin(uv.y * PI);
+    pdf = sinTheta > 0.0f ? envPdfUv(ivec2(x, y), size) / (2.0f * PI * PI * sinTheta) : 0.0f;
+    uvOut = uv;
     return directionFromEquirect(uv, uSkyRotation);
 }
 

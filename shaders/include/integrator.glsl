@@ -99,7 +99,8 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             vec2 ul = rngNext2(rng);
             vec3 wiW = vec3(0.0f);
             vec3 Ll = vec3(0.0f);
-            float lightPdf = 0.0f;
+            float lightPdf = 0.0f;   // density the direction was drawn with (divides)
+            float misPdf = 0.0f;     // density the BSDF side sees for it (weights only)
             float tMax = FLOAT_MAX;
             if (k < uLightCount) {
                 vec4 s = lights[k].centerRadius;
@@ -108,12 +109,20 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                     wiW = sphereConeSample(hit.position, s.xyz, s.w, ul);
                     Ll = lights[k].radiance.rgb;
                 }
+                misPdf = lightPdf;
+            } else if (skyByMap()) {
+                vec2 uv;
+                wiW = sampleEnvironment(ul, lightPdf, uv);
+                misPdf = skyLightPdf(wiW);   // equal but at texel edges, where it re-maps
+                Ll = skyLookup(sky, wiW);
             } else {
-                wiW = skyByMap() ? sampleEnvironment(ul) : sampleUniformSphere(ul);
-                lightPdf = skyLightPdf(wiW);
+                wiW = sampleUniformSphere(ul);
+                lightPdf = UNIFORM_SPHERE_PDF;
+                misPdf = lightPdf;
                 Ll = skyLookup(sky, wiW);
             }
             lightPdf /= float(lightCount);
+            misPdf /= float(lightCount);
             vec3 wiL = frameToLocal(frame, wiW);
             vec3 f = lightPdf > 0.0f ? bsdfEval(bsdf, wo, wiL) : vec3(0.0f);
             if (max(f.r, max(f.g, f.b)) > 0.0f) {
@@ -127,7 +136,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                 }
                 ++rays;
                 if (tMax > 0.0f && !occludedScene(shadow, tMax)) {
-                    float w = uMis ? powerHeuristic(lightPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
+                    float w = uMis ? powerHeuristic(misPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
                     radiance += beta * f * Ll * (w / lightPdf);
                 }
             }
