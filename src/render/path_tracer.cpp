@@ -20,15 +20,7 @@ int skyType(Sky::Type t) {
 } // namespace
 
 PathTracer::PathTracer(TracerOptions options) : options_(options) {
-    if (options_.entry == TracerEntry::Fragment) {
-        program_ = ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag",
-                                           options_.extraDefines);
-    } else {
-        ShaderDefines defines = options_.extraDefines;
-        defines.emplace_back("LOCAL_SIZE_X", std::to_string(options_.localSizeX));
-        defines.emplace_back("LOCAL_SIZE_Y", std::to_string(options_.localSizeY));
-        program_ = ShaderProgram::compute("entry/trace.comp", defines);
-    }
+    buildProgram(Features{});
     glCreateFramebuffers(1, &framebuffer_);
     glCreateVertexArrays(1, &vertexArray_);
     glCreateBuffers(1, &counterBuffer_);
@@ -42,6 +34,30 @@ PathTracer::~PathTracer() {
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &counterBuffer_);
+}
+
+PathTracer::Features PathTracer::featuresOf(const Scene& scene) {
+    Features f;
+    f.nee = scene.render.nee;
+    for (const Material& m : scene.materials)
+        if (m.transmission > 0.0f || std::max({m.f0.r, m.f0.g, m.f0.b}) > 0.0f) f.generalBsdf = true;
+    f.skyMap = scene.sky.type == Sky::Type::Map;
+    return f;
+}
+
+void PathTracer::buildProgram(Features features) {
+    ShaderDefines defines = options_.extraDefines;
+    if (features.nee) defines.emplace_back("RAYLAB_NEE", "1");
+    if (features.generalBsdf) defines.emplace_back("RAYLAB_GENERAL_BSDF", "1");
+    if (features.skyMap) defines.emplace_back("RAYLAB_SKY_MAP", "1");
+    if (options_.entry == TracerEntry::Fragment) {
+        program_ = ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag", defines);
+    } else {
+        defines.emplace_back("LOCAL_SIZE_X", std::to_string(options_.localSizeX));
+        defines.emplace_back("LOCAL_SIZE_Y", std::to_string(options_.localSizeY));
+        program_ = ShaderProgram::compute("entry/trace.comp", defines);
+    }
+    features_ = features;
 }
 
 std::string PathTracer::variantName() const {
@@ -67,6 +83,8 @@ void PathTracer::setScene(const Scene& scene) {
     defaultRpp_ = r.rpp;
 
     gpuScene_.upload(scene);
+    // Scene features are compiled in only when used (render.nee: recompile shader).
+    if (const Features f = featuresOf(scene); !(f == features_)) buildProgram(f);
 
     const Camera& c = scene.camera;
     const auto cam = glsl::cameraBasis(c.position, c.lookAt, c.up, c.fovY,

@@ -123,7 +123,7 @@ std::vector<ParamSpec> buildSceneTable() {
         [](auto& s) -> auto& { return s.render.seed; });
     add(spec("render.nee", T::Bool, kAny, kAny, "",
              "Next-event estimation: each bounce also samples emissive spheres and the sky directly.",
-             G::ResetAccumulation),
+             G::RecompileShader),
         [](auto& s) -> auto& { return s.render.nee; });
     add(spec("render.mis", T::Bool, kAny, kAny, "",
              "With nee: combine light and BSDF samples by multiple importance sampling (power heuristic).",
@@ -143,7 +143,7 @@ std::vector<ParamSpec> buildSceneTable() {
     // --- sky ---
     add(spec("sky.type", T::Enum, kAny, kAny, "",
              "Constant radiance, a blend from bottom (looking down) to top (looking up), or an HDR image (sky.map).",
-             G::ResetAccumulation,
+             G::ReloadScene,
              {{"constant", static_cast<int>(Sky::Type::Constant)},
               {"gradient", static_cast<int>(Sky::Type::Gradient)},
               {"map", static_cast<int>(Sky::Type::Map)}}),
