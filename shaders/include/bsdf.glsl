@@ -1,8 +1,9 @@
 // The material's BSDF in the local frame (+z = the surface's outward normal): a Lambertian base
-// under a GGX specular layer, mixed with a smooth dielectric by `transmission`. sample / eval /
+// under a GGX specular layer, mixed by `transmission` with a dielectric (glass) that is smooth
+// (a delta lobe) below GGX_DELTA_ALPHA and rough (Walter et al. 2007) above. sample / eval /
 // pdf agree: weight = eval / pdf for every non-delta sample. Shared by C++ and GLSL.
 //
-//   f = (1 − t) [ (1 − F(θo)) ρ/π + D G2 F(wo·h) / (4 cosθo cosθi) ] + t · glass(δ)
+//   f = (1 − t) [ (1 − F(θo)) ρ/π + D G2 F(wo·h) / (4 cosθo cosθi) ] + t · glass
 //
 // F is Schlick's with f90 (fresnel.glsl), so f0 = 0 gives exactly Lambert. The opaque part is
 // two-sided (wo below the surface is mirrored up); the glass part knows inside from outside.
@@ -102,31 +103,60 @@ RL_FN BsdfSample opaqueSample(BsdfParams m, vec3 wo, vec2 u, float uLobe) {
 
 RL_FN vec3 mirrorZ(vec3 v, float s) { return vec3(v.x, v.y, s * v.z); }
 
+// The glass part is a delta lobe (never evaluated) when α is below GGX_DELTA_ALPHA, and at an
+// IOR of 1, where every microfacet passes light straight on (a delta lobe however rough).
+RL_FN bool bsdfGlassIsDelta(BsdfParams m) { return ggxIsDelta(m.alpha) || abs(m.ior - 1.0f) < 1e-3f; }
+RL_FN bool bsdfRoughGlass(BsdfParams m) { return m.transmission > 0.0f && !bsdfGlassIsDelta(m); }
+
 // f·|cosθi| of the whole BSDF (the delta glass and mirror lobes contribute nothing here).
 RL_FN vec3 bsdfEval(BsdfParams m, vec3 wo, vec3 wi) {
-    if (wo.z * wi.z <= 0.0f || m.transmission >= 1.0f) return vec3(0.0f);
-    float s = wo.z < 0.0f ? -1.0f : 1.0f;
-    return (1.0f - m.transmission) * opaqueEval(m, mirrorZ(wo, s), mirrorZ(wi, s));
+    vec3 result = vec3(0.0f);
+    if (wo.z * wi.z > 0.0f && m.transmission < 1.0f) {
+        float s = wo.z < 0.0f ? -1.0f : 1.0f;
+        result = (1.0f - m.transmission) * opaqueEval(m, mirrorZ(wo, s), mirrorZ(wi, s));
+    }
+    if (bsdfRoughGlass(m)) result += vec3(m.transmission * roughDielectricEval(wo, wi, m.alpha, m.ior));
+    return result;
 }
 
 RL_FN float bsdfPdf(BsdfParams m, vec3 wo, vec3 wi) {
-    if (wo.z * wi.z <= 0.0f || m.transmission >= 1.0f) return 0.0f;
-    float s = wo.z < 0.0f ? -1.0f : 1.0f;
-    return (1.0f - m.transmission) * opaquePdf(m, mirrorZ(wo, s), mirrorZ(wi, s));
+    float pdf = 0.0f;
+    if (wo.z * wi.z > 0.0f && m.transmission < 1.0f) {
+        float s = wo.z < 0.0f ? -1.0f : 1.0f;
+        pdf = (1.0f - m.transmission) * opaquePdf(m, mirrorZ(wo, s), mirrorZ(wi, s));
+    }
+    if (bsdfRoughGlass(m)) pdf += m.transmission * roughDielectricPdf(wo, wi, m.alpha, m.ior);
+    return pdf;
+}
+
+// Weight and pdf of a non-delta direction from the whole mixture, so that sample, eval and pdf
+// agree whichever lobe produced it (one-sample MIS over the lobes).
+RL_FN BsdfSample bsdfCompleteSample(BsdfParams m, vec3 wo, BsdfSample s) {
+    if (s.lobe == LOBE_NONE || s.delta) return s;
+    float pdf = bsdfPdf(m, wo, s.wi);
+    if (!(pdf > 0.0f)) return bsdfNoSample();
+    s.pdf = pdf;
+    s.weight = bsdfEval(m, wo, s.wi) / pdf;
+    return s;
 }
 
 // One sample of the whole BSDF; u = (direction, direction, lobe choice), each in [0, 1).
 RL_FN BsdfSample bsdfSample(BsdfParams m, vec3 wo, vec3 u) {
     if (u.z < m.transmission) {
-        BsdfSample g = dielectricSample(wo, m.ior, u.z / m.transmission);
-        g.pdf *= m.transmission;   // the weight keeps t/t = 1
-        return g;
+        float uGlass = u.z / m.transmission;
+        if (bsdfGlassIsDelta(m)) {
+            BsdfSample g = dielectricSample(wo, m.ior, uGlass);
+            g.pdf *= m.transmission;   // the weight keeps t/t = 1
+            return g;
+        }
+        return bsdfCompleteSample(m, wo, roughDielectricSample(wo, m.alpha, m.ior, vec2(u.x, u.y), uGlass));
     }
     float uLobe = (u.z - m.transmission) / (1.0f - m.transmission);
     if (wo.z == 0.0f) return bsdfNoSample();
     float s = wo.z < 0.0f ? -1.0f : 1.0f;
     BsdfSample o = opaqueSample(m, mirrorZ(wo, s), vec2(u.x, u.y), uLobe);
     o.wi = mirrorZ(o.wi, s);
+    if (bsdfRoughGlass(m) && !o.delta) return bsdfCompleteSample(m, wo, o);
     o.pdf *= 1.0f - m.transmission;   // the weight keeps (1 − t)/(1 − t) = 1
     return o;
 }

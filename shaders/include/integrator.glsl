@@ -9,8 +9,32 @@
 #include "sky.glsl"
 #include "bsdf.glsl"
 #include "light_sampling.glsl"
+#include "environment_map.glsl"
 #include "scene_data.glsl"
+#include "environment_sampling.glsl"
 #include "scene_intersect.glsl"
+
+// Radiance from the sky along a unit direction: the image texel it falls in (nearest, so the
+// radiance is piecewise constant over texels), or the analytic skies.
+vec3 skyLookup(SkyParams sky, vec3 dir) {
+#ifndef RAYLAB_SKY_MAP
+    return skyRadiance(sky, dir);
+#else
+    if (sky.type != SKY_MAP) return skyRadiance(sky, dir);
+    ivec2 size = textureSize(uSkyMap, 0);
+    vec2 uv = equirectFromDirection(dir, uSkyRotation);
+    ivec2 texel = min(ivec2(uv * vec2(size)), size - ivec2(1));
+    return uSkyMapScale * texelFetch(uSkyMap, texel, 0).rgb;
+#endif
+}
+
+// Next-event estimation of the sky: the map by its own distribution, analytic skies uniformly.
+#ifdef RAYLAB_SKY_MAP
+bool skyByMap() { return uSkyType == SKY_MAP && uEnvMeanWeight > 0.0f; }
+#else
+bool skyByMap() { return false; }
+#endif
+float skyLightPdf(vec3 dir) { return skyByMap() ? environmentPdf(dir) : UNIFORM_SPHERE_PDF; }
 
 // Every radiance contribution goes through this hook, so the viewer's bounce views
 // (debug_views.glsl) can keep only some bounces. By default: add it.
@@ -23,7 +47,15 @@ BsdfParams materialBsdf(GpuMaterial m) {
 }
 
 // Lights that next-event estimation picks from, uniformly: the emissive spheres, then the sky.
+// Compiled in only when the host defines them (absent features cost nothing; on llvmpipe the mere
+// presence of the light-sampling block, even never taken, cost about 2.5× in throughput):
+// RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (some material has f0 > 0 or transmission > 0),
+// RAYLAB_SKY_MAP (sky.type map).
+#ifdef RAYLAB_NEE
 int neeLightCount() { return uNee ? uLightCount + (uSkyIsLight ? 1 : 0) : 0; }
+#else
+int neeLightCount() { return 0; }
+#endif
 
 // Density with which next-event estimation would have produced the direction from p that hit
 // the emitter at q (an emissive sphere's surface): found as the light whose surface q lies on.
@@ -60,21 +92,25 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         if (!intersectScene(ray, hit)) {
             vec3 dir = normalize(ray.dir);
             float w = 1.0f;
+#ifdef RAYLAB_NEE
             if (uSkyIsLight && lightCount > 0 && !prevDelta) {
-                float lightPdf = UNIFORM_SPHERE_PDF / float(lightCount);
-                w = uMis ? powerHeuristic(prevPdf, lightPdf) : 0.0f;
+                float lightPdf = skyLightPdf(dir) / float(lightCount);
+                w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
             }
-            RAYLAB_ADD_RADIANCE(radiance, bounce, beta * skyRadiance(sky, dir) * w);
+#endif
+            RAYLAB_ADD_RADIANCE(radiance, bounce, beta * skyLookup(sky, dir) * w);
             break;
         }
         GpuMaterial m = materials[hit.material];
         vec3 Le = m.emission.rgb;
         if (max(Le.r, max(Le.g, Le.b)) > 0.0f) {
             float w = 1.0f;
+#ifdef RAYLAB_NEE
             if (lightCount > 0 && !prevDelta) {
                 float lightPdf = emitterLightPdf(prevPos, hit.position);
                 w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
             }
+#endif
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
         }
         if (bounce >= uMaxBounces) break;
@@ -83,13 +119,15 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         Frame frame = frameFromNormal(hit.normal);   // outward normal: the BSDF tells the sides
         vec3 wo = frameToLocal(frame, -normalize(ray.dir));
 
+#ifdef RAYLAB_NEE
         // Next-event estimation: one light, picked uniformly, sampled by solid angle.
         if (lightCount > 0) {
             int k = min(int(rngNextFloat(rng) * float(lightCount)), lightCount - 1);
             vec2 ul = rngNext2(rng);
             vec3 wiW = vec3(0.0f);
             vec3 Ll = vec3(0.0f);
-            float lightPdf = 0.0f;
+            float lightPdf = 0.0f;   // density the direction was drawn with (divides)
+            float misPdf = 0.0f;     // density the BSDF side sees for it (weights only)
             float tMax = FLOAT_MAX;
             if (k < uLightCount) {
                 vec4 s = lights[k].centerRadius;
@@ -98,12 +136,20 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                     wiW = sphereConeSample(hit.position, s.xyz, s.w, ul);
                     Ll = lights[k].radiance.rgb;
                 }
+                misPdf = lightPdf;
+            } else if (skyByMap()) {
+                vec2 uv;
+                wiW = sampleEnvironment(ul, lightPdf, uv);
+                misPdf = skyLightPdf(wiW);   // equal but at texel edges, where it re-maps
+                Ll = skyLookup(sky, wiW);
             } else {
                 wiW = sampleUniformSphere(ul);
                 lightPdf = UNIFORM_SPHERE_PDF;
-                Ll = skyRadiance(sky, wiW);
+                misPdf = lightPdf;
+                Ll = skyLookup(sky, wiW);
             }
             lightPdf /= float(lightCount);
+            misPdf /= float(lightCount);
             vec3 wiL = frameToLocal(frame, wiW);
             vec3 f = lightPdf > 0.0f ? bsdfEval(bsdf, wo, wiL) : vec3(0.0f);
             if (max(f.r, max(f.g, f.b)) > 0.0f) {
@@ -117,16 +163,31 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                 }
                 ++rays;
                 if (tMax > 0.0f && !occludedScene(shadow, tMax)) {
-                    float w = uMis ? powerHeuristic(lightPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
+                    float w = uMis ? powerHeuristic(misPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
                     RAYLAB_ADD_RADIANCE(radiance, bounce + 1, beta * f * Ll * (w / lightPdf));
                 }
             }
         }
 
-        // BSDF sample. Pure Lambert draws no lobe number, so its random stream is unchanged.
+#endif
+        // BSDF sample. Pure Lambert (f0 0, no glass) takes the short path of the foundation: the
+        // same random numbers and f·cos/pdf = ρ exactly, without the general code's cost.
         vec2 u = rngNext2(rng);
-        float uLobe = bsdfNeedsLobeChoice(bsdf) ? rngNextFloat(rng) : 0.5f;
-        BsdfSample bs = bsdfSample(bsdf, wo, vec3(u.x, u.y, uLobe));
+        BsdfSample bs;
+#ifdef RAYLAB_GENERAL_BSDF
+        if (!bsdfNeedsLobeChoice(bsdf)) {
+#else
+        {   // every material of the scene is Lambertian
+#endif
+            vec3 wi = sampleCosineHemisphere(u);
+            bs = BsdfSample(wo.z < 0.0f ? vec3(wi.x, wi.y, -wi.z) : wi, bsdf.albedo, pdfCosineHemisphere(wi.z),
+                            LOBE_DIFFUSE, false);
+        }
+#ifdef RAYLAB_GENERAL_BSDF
+        else {
+            bs = bsdfSample(bsdf, wo, vec3(u.x, u.y, rngNextFloat(rng)));
+        }
+#endif
         if (bs.lobe == LOBE_NONE) break;
         beta *= bs.weight;
         vec3 dir = frameToWorld(frame, bs.wi);

@@ -13,6 +13,11 @@ layout(std430, binding = 3) buffer CounterBuffer {
 };
 
 layout(std430, binding = 4) readonly buffer LightBuffer { GpuLight lights[]; };
+layout(binding = 4) uniform sampler2D uSkyMap;   // texture unit 4: sky.map (1×1 black without)
+// Sky map importance sampling (render/environment_distribution.h): marginal CDF over rows
+// (height + 1 floats), conditional CDFs over columns (height × (width + 1) floats).
+layout(std430, binding = 5) readonly buffer EnvMarginalBuffer { float envMarginalCdf[]; };
+layout(std430, binding = 6) readonly buffer EnvConditionalBuffer { float envConditionalCdf[]; };
 
 uniform ivec2 uImageSize;
 uniform uint uSampleStart;   // samples per pixel already in uAccum
@@ -34,6 +39,9 @@ uniform vec3 uSkyBottom;
 uniform int uLightCount;     // emissive spheres in lights[]
 uniform bool uNee;           // next-event estimation on
 uniform bool uMis;           // with uNee: power-heuristic MIS of light and BSDF samples
+uniform float uSkyMapScale;  // sky.strength for the map
+uniform float uSkyRotation;  // radians about +y
+uniform float uEnvMeanWeight; // mean texel weight of the sky map's distribution; 0 = none
 uniform bool uSkyIsLight;    // with uNee: the sky is sampled too (its radiance is not zero)
 
 #endif

@@ -6,6 +6,7 @@ RL_NAMESPACE_BEGIN
 
 const int SKY_CONSTANT = 0;
 const int SKY_GRADIENT = 1;
+const int SKY_MAP = 2;   // an equirectangular image, looked up in GLSL (integrator.glsl)
 
 struct SkyParams {
     int type;

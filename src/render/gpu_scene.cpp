@@ -1,5 +1,7 @@
 #include "render/gpu_scene.h"
 
+#include "io/image_io.h"
+#include "render/environment_distribution.h"
 #include "shaders/include/scene_types.glsl"
 
 #include <glad/gl.h>
@@ -14,6 +16,9 @@ namespace {
 constexpr GLuint kSphereBinding = 1;
 constexpr GLuint kMaterialBinding = 2;
 constexpr GLuint kLightBinding = 4;
+constexpr GLuint kSkyMapUnit = 4;   // texture unit of uSkyMap
+constexpr GLuint kEnvMarginalBinding = 5;
+constexpr GLuint kEnvConditionalBinding = 6;
 
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
@@ -27,12 +32,17 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &sphereBuffer_);
     glCreateBuffers(1, &materialBuffer_);
     glCreateBuffers(1, &lightBuffer_);
+    glCreateBuffers(1, &envMarginalBuffer_);
+    glCreateBuffers(1, &envConditionalBuffer_);
 }
 
 GpuScene::~GpuScene() {
     glDeleteBuffers(1, &sphereBuffer_);
     glDeleteBuffers(1, &materialBuffer_);
     glDeleteBuffers(1, &lightBuffer_);
+    glDeleteTextures(1, &skyMapTexture_);
+    glDeleteBuffers(1, &envMarginalBuffer_);
+    glDeleteBuffers(1, &envConditionalBuffer_);
 }
 
 void GpuScene::upload(const Scene& scene) {
@@ -53,14 +63,40 @@ void GpuScene::upload(const Scene& scene) {
     sphereCount_ = int(spheres.size());
     lightCount_ = int(lights.size());
     uploadBuffer(lightBuffer_, std::move(lights));
+    uploadSkyMap(scene.sky);
     uploadBuffer(sphereBuffer_, std::move(spheres));
     uploadBuffer(materialBuffer_, std::move(materials));
+}
+
+// The sky map as an RGBA32F texture, rows top first as in the file (v = 0 is straight up); a
+// 1×1 black texture when the sky is not a map, so the sampler is always complete.
+void GpuScene::uploadSkyMap(const Sky& sky) {
+    Image image(1, 1);
+    if (sky.type == Sky::Type::Map) image = readImage(sky.map);
+    skyMapMax_ = 0.0f;
+    for (size_t i = 0; i < image.rgba.size(); ++i)
+        if (i % 4 != 3) skyMapMax_ = std::max(skyMapMax_, image.rgba[i]);
+    glDeleteTextures(1, &skyMapTexture_);
+    glCreateTextures(GL_TEXTURE_2D, 1, &skyMapTexture_);
+    glTextureStorage2D(skyMapTexture_, 1, GL_RGBA32F, image.width, image.height);
+    glTextureSubImage2D(skyMapTexture_, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, image.rgba.data());
+    glTextureParameteri(skyMapTexture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(skyMapTexture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    // Importance sampling tables (only used for map skies).
+    EnvironmentDistribution dist;
+    if (sky.type == Sky::Type::Map) dist = EnvironmentDistribution(image);
+    skyMapMeanWeight_ = dist.meanWeight();
+    uploadBuffer(envMarginalBuffer_, dist.marginalCdf());
+    uploadBuffer(envConditionalBuffer_, dist.conditionalCdf());
 }
 
 void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSphereBinding, sphereBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, materialBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer_);
+    glBindTextureUnit(kSkyMapUnit, skyMapTexture_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvMarginalBinding, envMarginalBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvConditionalBinding, envConditionalBuffer_);
 }
 
 } // namespace raylab

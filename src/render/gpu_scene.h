@@ -17,11 +17,20 @@ public:
 
     int sphereCount() const { return sphereCount_; }
     int lightCount() const { return lightCount_; }   // emissive spheres
+    float skyMapMax() const { return skyMapMax_; }    // largest channel of the sky map, 0 without
+    float skyMapMeanWeight() const { return skyMapMeanWeight_; }   // of its sampling distribution
 
 private:
+    void uploadSkyMap(const Sky& sky);
+
     unsigned sphereBuffer_ = 0;
     unsigned materialBuffer_ = 0;
     unsigned lightBuffer_ = 0;
+    unsigned skyMapTexture_ = 0;
+    float skyMapMax_ = 0.0f;
+    float skyMapMeanWeight_ = 0.0f;
+    unsigned envMarginalBuffer_ = 0;
+    unsigned envConditionalBuffer_ = 0;
     int sphereCount_ = 0;
     int lightCount_ = 0;
 };

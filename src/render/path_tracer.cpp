@@ -12,20 +12,15 @@
 namespace raylab {
 namespace {
 
-int skyType(Sky::Type t) { return t == Sky::Type::Constant ? glsl::SKY_CONSTANT : glsl::SKY_GRADIENT; }
+int skyType(Sky::Type t) {
+    if (t == Sky::Type::Map) return glsl::SKY_MAP;
+    return t == Sky::Type::Constant ? glsl::SKY_CONSTANT : glsl::SKY_GRADIENT;
+}
 
 } // namespace
 
 PathTracer::PathTracer(TracerOptions options) : options_(options) {
-    if (options_.entry == TracerEntry::Fragment) {
-        program_ = ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag",
-                                           options_.extraDefines);
-    } else {
-        ShaderDefines defines = options_.extraDefines;
-        defines.emplace_back("LOCAL_SIZE_X", std::to_string(options_.localSizeX));
-        defines.emplace_back("LOCAL_SIZE_Y", std::to_string(options_.localSizeY));
-        program_ = ShaderProgram::compute("entry/trace.comp", defines);
-    }
+    buildProgram(Features{});
     glCreateFramebuffers(1, &framebuffer_);
     glCreateVertexArrays(1, &vertexArray_);
     glCreateBuffers(1, &counterBuffer_);
@@ -39,6 +34,30 @@ PathTracer::~PathTracer() {
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &counterBuffer_);
+}
+
+PathTracer::Features PathTracer::featuresOf(const Scene& scene) {
+    Features f;
+    f.nee = scene.render.nee;
+    for (const Material& m : scene.materials)
+        if (m.transmission > 0.0f || std::max({m.f0.r, m.f0.g, m.f0.b}) > 0.0f) f.generalBsdf = true;
+    f.skyMap = scene.sky.type == Sky::Type::Map;
+    return f;
+}
+
+void PathTracer::buildProgram(Features features) {
+    ShaderDefines defines = options_.extraDefines;
+    if (features.nee) defines.emplace_back("RAYLAB_NEE", "1");
+    if (features.generalBsdf) defines.emplace_back("RAYLAB_GENERAL_BSDF", "1");
+    if (features.skyMap) defines.emplace_back("RAYLAB_SKY_MAP", "1");
+    if (options_.entry == TracerEntry::Fragment) {
+        program_ = ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag", defines);
+    } else {
+        defines.emplace_back("LOCAL_SIZE_X", std::to_string(options_.localSizeX));
+        defines.emplace_back("LOCAL_SIZE_Y", std::to_string(options_.localSizeY));
+        program_ = ShaderProgram::compute("entry/trace.comp", defines);
+    }
+    features_ = features;
 }
 
 std::string PathTracer::variantName() const {
@@ -64,6 +83,8 @@ void PathTracer::setScene(const Scene& scene) {
     defaultRpp_ = r.rpp;
 
     gpuScene_.upload(scene);
+    // Scene features are compiled in only when used (render.nee: recompile shader).
+    if (const Features f = featuresOf(scene); !(f == features_)) buildProgram(f);
 
     const Camera& c = scene.camera;
     const auto cam = glsl::cameraBasis(c.position, c.lookAt, c.up, c.fovY,
@@ -85,7 +106,11 @@ void PathTracer::setScene(const Scene& scene) {
     p.set("uSkyColor", sky.color * sky.strength);
     p.set("uSkyTop", sky.top * sky.strength);
     p.set("uSkyBottom", sky.bottom * sky.strength);
-    const glm::vec3 skyMax = sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom);
+    p.set("uSkyMapScale", sky.strength);
+    p.set("uSkyRotation", glm::radians(sky.rotation));
+    p.set("uEnvMeanWeight", gpuScene_.skyMapMeanWeight());
+    glm::vec3 skyMax = sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom);
+    if (sky.type == Sky::Type::Map) skyMax = glm::vec3(gpuScene_.skyMapMax());
     const bool skyIsLight = sky.strength * std::max({skyMax.r, skyMax.g, skyMax.b}) > 0.0f;
     p.set("uLightCount", gpuScene_.lightCount());
     p.set("uNee", int(r.nee));

@@ -58,9 +58,19 @@ public:
 
 private:
     void allocateImage(int width, int height);
+    // The scene features compiled into the tracer (integrator.glsl): absent ones cost nothing.
+    struct Features {
+        bool nee = false;           // RAYLAB_NEE
+        bool generalBsdf = false;   // RAYLAB_GENERAL_BSDF
+        bool skyMap = false;        // RAYLAB_SKY_MAP
+        bool operator==(const Features&) const = default;
+    };
+    static Features featuresOf(const Scene& scene);
+    void buildProgram(Features features);
 
     TracerOptions options_;
     ShaderProgram program_;
+    Features features_;
     GpuScene gpuScene_;
     unsigned accumTexture_ = 0;
     unsigned framebuffer_ = 0;

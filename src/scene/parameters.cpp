@@ -123,7 +123,7 @@ std::vector<ParamSpec> buildSceneTable() {
         [](auto& s) -> auto& { return s.render.seed; });
     add(spec("render.nee", T::Bool, kAny, kAny, "",
              "Next-event estimation: each bounce also samples emissive spheres and the sky directly.",
-             G::ResetAccumulation),
+             G::RecompileShader),
         [](auto& s) -> auto& { return s.render.nee; });
     add(spec("render.mis", T::Bool, kAny, kAny, "",
              "With nee: combine light and BSDF samples by multiple importance sampling (power heuristic).",
@@ -142,10 +142,11 @@ std::vector<ParamSpec> buildSceneTable() {
 
     // --- sky ---
     add(spec("sky.type", T::Enum, kAny, kAny, "",
-             "Constant radiance, or a blend from bottom (looking down) to top (looking up).",
-             G::ResetAccumulation,
+             "Constant radiance, a blend from bottom (looking down) to top (looking up), or an HDR image (sky.map).",
+             G::ReloadScene,
              {{"constant", static_cast<int>(Sky::Type::Constant)},
-              {"gradient", static_cast<int>(Sky::Type::Gradient)}}),
+              {"gradient", static_cast<int>(Sky::Type::Gradient)},
+              {"map", static_cast<int>(Sky::Type::Map)}}),
         [](auto& s) -> auto& { return s.sky.type; });
     add(spec("sky.color", T::Rgb, atLeast(0), kAny, "radiance",
              "Constant sky: its radiance (ignored by gradient).", G::ResetAccumulation),
@@ -156,6 +157,9 @@ std::vector<ParamSpec> buildSceneTable() {
     add(spec("sky.bottom", T::Rgb, atLeast(0), kAny, "radiance",
              "Gradient sky: radiance straight down (-y).", G::ResetAccumulation),
         [](auto& s) -> auto& { return s.sky.bottom; });
+    add(spec("sky.rotation", T::Float, atLeast(-360), atMost(360), "degrees",
+             "Map sky: turns the image about the up (+y) axis.", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.sky.rotation; });
     add(spec("sky.strength", T::Float, atLeast(0), kAny, "factor", "Multiplies the sky radiance.",
              G::ResetAccumulation),
         [](auto& s) -> auto& { return s.sky.strength; });

@@ -56,8 +56,10 @@ struct Sphere {
 
 // Radiance for rays that leave the scene.
 struct Sky {
-    enum class Type { Constant, Gradient };
+    enum class Type { Constant, Gradient, Map };
     Type type = Type::Gradient;
+    std::filesystem::path map;               // Map: equirectangular HDR image (resolved path)
+    float rotation = 0.0f;                   // Map: degrees about +y
     glm::vec3 color{1.0f};                   // Constant: the radiance
     glm::vec3 top{0.5f, 0.7f, 1.0f};         // Gradient: radiance straight up (+y)
     glm::vec3 bottom{1.0f, 1.0f, 1.0f};      // Gradient: radiance straight down (-y)

@@ -346,6 +346,25 @@ void checkCamera(const Camera& c) {
                                    "; choose an up direction across the view");
 }
 
+// sky.map: a file name, relative to the scene file's directory; it must exist. sky.type "map"
+// needs one.
+void readSkyMap(const Json& root, Scene& scene) {
+    const Path sky = Path{}.key("sky");
+    if (root.contains("sky") && root["sky"].is_object() && root["sky"].contains("map")) {
+        const Json& m = root["sky"]["map"];
+        if (!m.is_string() || m.get_ref<const std::string&>().empty())
+            fail(sky.key("map"), "expected an image file name (a non-empty string), got " + typeOf(m));
+        std::filesystem::path file = m.get<std::string>();
+        if (file.is_relative()) file = scene.sourcePath.parent_path() / file;
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(file, ec))
+            fail(sky.key("map"), "cannot read " + inQuotes(file.string()) + ": no such file");
+        scene.sky.map = file;
+    }
+    if (scene.sky.type == Sky::Type::Map && scene.sky.map.empty())
+        fail(sky.key("type"), "'map' needs sky.map, an equirectangular .hdr or .exr image");
+}
+
 void validate(const Json& root, Scene& scene) {
     const Path top;
     if (!root.is_object()) fail(top, "a scene file must be a JSON object { ... }, got " + typeOf(root));
@@ -359,8 +378,11 @@ void validate(const Json& root, Scene& scene) {
 
     for (std::string_view section : {"camera", "render", "sky"}) {
         const std::string name(section);
-        if (root.contains(name)) readMembers(root[name], top.key(name), sceneParameters(), section, scene);
+        if (!root.contains(name)) continue;
+        if (section == "sky") readMembers(root[name], top.key(name), sceneParameters(), section, scene, {"map"});
+        else readMembers(root[name], top.key(name), sceneParameters(), section, scene);
     }
+    readSkyMap(root, scene);
 
     // Materials: a name -> properties map. Kept sorted by name so the order does not depend on the file.
     std::vector<Material> materials;
@@ -675,6 +697,7 @@ nlohmann::json sceneToJson(const Scene& scene) {
         materials[m.name] = mj;
     }
     j["materials"] = materials;
+    if (!scene.sky.map.empty()) j["sky"]["map"] = scene.sky.map.string();
 
     nlohmann::json objects = nlohmann::json::array();
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {

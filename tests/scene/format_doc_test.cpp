@@ -81,13 +81,13 @@ TEST(SceneFormatDoc, EveryMaterialAndObjectKeyHasATableRow) {
     for (const MaterialParamSpec& p : materialParameters()) expectRowMatches(rows, p, p.defaultValue());
     for (const SphereParamSpec& p : sphereParameters()) expectRowMatches(rows, p, p.defaultValue());
     // Keys of an object that the loader handles itself.
-    for (const char* key : {"type", "material"}) EXPECT_EQ(rows.count(key), 1u) << "`" << key << "` undocumented";
+    for (const char* key : {"type", "material", "sky.map"}) EXPECT_EQ(rows.count(key), 1u) << "`" << key << "` undocumented";
 }
 
 TEST(SceneFormatDoc, NoRowsForKeysThatDoNotExist) {
     const auto rows = keyRows(readDoc());
     for (const auto& [key, cells] : rows) {
-        const bool known = findParameter(key) != nullptr || key == "type" || key == "material" ||
+        const bool known = findParameter(key) != nullptr || key == "type" || key == "material" || key == "sky.map" ||
                            std::any_of(materialParameters().begin(), materialParameters().end(),
                                        [&](const auto& p) { return p.key == key; }) ||
                            std::any_of(sphereParameters().begin(), sphereParameters().end(),

@@ -25,7 +25,7 @@ TEST(SceneParameters, TableCoversTheSectionsWithUniqueKeys) {
         "camera.position", "camera.look_at", "camera.up",        "camera.fov",      "render.width",
         "render.height",   "render.rpp",     "render.spp",       "render.time",     "render.max_bounces",
         "render.rr_depth", "render.seed",    "render.nee",       "render.mis",      "render.exposure",  "render.tone_map", "sky.type",
-        "sky.color",       "sky.top",        "sky.bottom",       "sky.strength"};
+        "sky.color",       "sky.top",        "sky.bottom",       "sky.rotation",    "sky.strength"};
     EXPECT_EQ(keys, expected);
     EXPECT_EQ(findParameter("render.sp"), nullptr);
     EXPECT_EQ(findParameter("spp"), nullptr);

@@ -229,8 +229,8 @@ TEST(SceneLoader, UnknownKeysNameTheKeyAndSuggestTheClosest) {
               "'emission'?");
     // Nothing close: list what is allowed instead of guessing.
     EXPECT_EQ(errorOf(withObject(R"("sky": { "brightness": 2 })")),
-              "test.json:1:12: error: sky.brightness: unknown key 'brightness' in sky (known keys: type, color, "
-              "top, bottom, strength)");
+              "test.json:1:12: error: sky.brightness: unknown key 'brightness' in sky (known keys: map, type, "
+              "color, top, bottom, rotation, strength)");
 }
 
 TEST(SceneLoader, WrongTypes) {

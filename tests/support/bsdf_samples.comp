@@ -1,10 +1,13 @@
 #version 450 core
 // Test harness: draws samples with the real GLSL sampling code and stores them for χ² tests on
 // the CPU (tests/shaders/gpu_sampling_test.cpp). One invocation per sample.
-// Defines set by the host: none. Uniforms below.
+// Defines set by the host: none. Uniforms below; the output buffer is at binding 7 so that the
+// scene's bindings (sky map tables at 5 and 6) can stay bound.
 #include "random.glsl"
 #include "sampling.glsl"
 #include "bsdf.glsl"
+#include "light_sampling.glsl"
+#include "environment_sampling.glsl"   // the sky map and its tables, bound by GpuScene
 
 layout(local_size_x = 64) in;
 
@@ -12,11 +15,12 @@ struct SampleRecord {
     vec4 wiPdf;         // xyz direction (local frame), w pdf
     vec4 weightLobe;    // xyz weight, w lobe (+ 8 when delta)
 };
-layout(std430, binding = 0) writeonly buffer Samples { SampleRecord samples[]; };
+layout(std430, binding = 7) writeonly buffer Samples { SampleRecord samples[]; };
 
-uniform uint uCount;
-uniform uint uSeed;
-uniform int uMode;          // 0: cosine hemisphere, 1: bsdfSample
+uniform uint uCount;        // (uSeed comes from scene_data.glsl)
+uniform int uMode;          // 0: cosine hemisphere, 1: bsdfSample, 2: sphere cone, 3: sky map
+uniform vec3 uSphereCenter; // mode 2: the sphere, seen from the origin
+uniform float uSphereRadius;
 uniform vec3 uWo;           // local frame
 uniform vec3 uAlbedo;
 uniform vec3 uF0;
@@ -33,6 +37,18 @@ void main() {
     if (uMode == 0) {
         vec3 w = sampleCosineHemisphere(u);
         samples[i] = SampleRecord(vec4(w, pdfCosineHemisphere(w.z)), vec4(1.0, 1.0, 1.0, float(LOBE_DIFFUSE)));
+        return;
+    }
+    if (uMode == 2) {
+        vec3 w = sphereConeSample(vec3(0.0), uSphereCenter, uSphereRadius, u);
+        samples[i] = SampleRecord(vec4(w, sphereConePdf(vec3(0.0), uSphereCenter, uSphereRadius)), vec4(0.0));
+        return;
+    }
+    if (uMode == 3) {
+        float pdf;
+        vec2 uv;
+        vec3 w = sampleEnvironment(u, pdf, uv);
+        samples[i] = SampleRecord(vec4(w, pdf), vec4(uv, environmentPdf(w), 0.0));
         return;
     }
     BsdfParams m = BsdfParams(uAlbedo, uF0, uAlpha, uTransmission, uIor);

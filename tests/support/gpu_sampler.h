@@ -34,6 +34,21 @@ public:
         return run(1, count, seed, m, wo);
     }
 
+    // Directions towards a sphere (centre, radius) seen from the origin.
+    std::vector<GpuSample> sphereCone(glm::vec3 center, float radius, unsigned count, unsigned seed) const {
+        program_.set("uSphereCenter", center);
+        program_.set("uSphereRadius", radius);
+        return run(2, count, seed, {}, {});
+    }
+
+    // Directions from the sky map of a scene uploaded and bound by a GpuScene, with the rotation
+    // and mean weight uniforms the tracer would set.
+    std::vector<GpuSample> skyMap(float rotationRadians, float meanWeight, unsigned count, unsigned seed) const {
+        program_.set("uSkyRotation", rotationRadians);
+        program_.set("uEnvMeanWeight", meanWeight);
+        return run(3, count, seed, {}, {});
+    }
+
 private:
     std::vector<GpuSample> run(int mode, unsigned count, unsigned seed, const glsl::BsdfParams& m,
                                glm::vec3 wo) const {
@@ -50,7 +65,7 @@ private:
         p.set("uAlpha", m.alpha);
         p.set("uTransmission", m.transmission);
         p.set("uIor", m.ior);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, buffer);
         glUseProgram(p.id());
         glDispatchCompute((count + 63) / 64, 1, 1);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -47,6 +47,19 @@ struct LobeGrid {
         const double st = std::sin(theta);
         return glsl::frameToWorld(frame, vec3(float(st * std::cos(phi)), float(st * std::sin(phi)), float(std::cos(theta))));
     }
+    // N × ∫cell pdf over cell (ia, ip) by the midpoint rule on k × k sub-cells.
+    double integrateCell(const std::function<double(vec3)>& pdf, double n, int ia, int ip, int k) const {
+        double sum = 0.0;
+        for (int i = 0; i < k; ++i)
+            for (int j = 0; j < k; ++j) {
+                const double a = (ia + (i + 0.5) / k) / na;
+                const double phi = (ip + (j + 0.5) / k) / nphi * 2 * M_PI;
+                double jac = 0.0;
+                sum += pdf(direction(a, phi, jac)) * jac;
+            }
+        return n * sum / (double(k) * k) * (1.0 / na) * (2 * M_PI / nphi);
+    }
+
     // N × ∫cell pdf by the midpoint rule on k × k sub-cells, k doubled from 16 until the count
     // changes by less than a tenth of its Poisson standard deviation (k ≤ 256); cells that
     // straddle the horizon (where the pdf jumps to 0; found from the sign of z over the cell's
@@ -55,17 +68,6 @@ struct LobeGrid {
         std::vector<double> e(size_t(na * nphi), 0.0);
         for (int ia = 0; ia < na; ++ia)
             for (int ip = 0; ip < nphi; ++ip) {
-                auto integrate = [&](int k) {
-                    double sum = 0.0;
-                    for (int i = 0; i < k; ++i)
-                        for (int j = 0; j < k; ++j) {
-                            const double a = (ia + (i + 0.5) / k) / na;
-                            const double phi = (ip + (j + 0.5) / k) / nphi * 2 * M_PI;
-                            double jac = 0.0;
-                            sum += pdf(direction(a, phi, jac)) * jac;
-                        }
-                    return n * sum / (double(k) * k) * (1.0 / na) * (2 * M_PI / nphi);
-                };
                 bool below = false, above = false;
                 for (int i = 0; i <= 16; ++i)
                     for (int j = 0; j <= 16; ++j) {
@@ -77,16 +79,28 @@ struct LobeGrid {
                 const bool horizon = below && above;
                 int k = horizon ? 128 : 16;
                 const int kMax = horizon ? 512 : 256;
-                double v = integrate(k);
+                double v = integrateCell(pdf, n, ia, ip, k);
                 while (k < kMax) {
                     k *= 2;
-                    const double finer = integrate(k);
+                    const double finer = integrateCell(pdf, n, ia, ip, k);
                     const bool converged = std::abs(finer - v) < 0.1 * std::sqrt(std::max(finer, 1.0));
                     v = finer;
                     if (converged) break;
                 }
                 e[size_t(ia * nphi + ip)] = v;
             }
+        return e;
+    }
+
+    // The same, then cells that received samples but integrated to 0 are integrated again on a
+    // 2048 × 2048 grid: a pdf that is non-zero on a sliver thinner than the sub-cells (beyond a
+    // critical angle, say) must not turn into a false "sample where the pdf is 0".
+    std::vector<double> expected(const std::function<double(vec3)>& pdf, double n,
+                                 const std::vector<double>& observed) const {
+        std::vector<double> e = expected(pdf, n);
+        for (size_t i = 0; i < e.size(); ++i)
+            if (e[i] == 0.0 && observed[i] > 0.0)
+                e[i] = integrateCell(pdf, n, int(i) / nphi, int(i) % nphi, 2048);
         return e;
     }
 };
