@@ -28,8 +28,12 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         if (bounce >= uMaxBounces) break;
 
         // Lambert, cosine-weighted: f·cosθ/pdf = (ρ/π)·cosθ / (cosθ/π) = ρ.
+        // Sampled around the shading normal (smooth meshes), on the side the ray came from; a
+        // direction below the geometric surface ends the path (it would leak through).
         vec3 n = dot(hit.normal, ray.dir) < 0.0f ? hit.normal : -hit.normal;
-        vec3 dir = frameToWorld(frameFromNormal(n), sampleCosineHemisphere(rngNext2(rng)));
+        vec3 ns = dot(hit.shadingNormal, n) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
+        vec3 dir = frameToWorld(frameFromNormal(ns), sampleCosineHemisphere(rngNext2(rng)));
+        if (dot(dir, n) <= 0.0f) break;
         beta *= m.albedo.rgb;
 
         // Russian roulette (pbrt-v4 §14.1.4 style): survive with q = max throughput, at most

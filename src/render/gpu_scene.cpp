@@ -13,6 +13,7 @@ namespace {
 // Binding points; keep in step with shaders/include/scene_data.glsl.
 constexpr GLuint kSphereBinding = 1;
 constexpr GLuint kMaterialBinding = 2;
+constexpr GLuint kFirstGeometryBinding = 8;   // 8–12, see shaders/include/scene_geometry.glsl
 
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
@@ -25,28 +26,44 @@ void uploadBuffer(GLuint buffer, std::vector<T> data) {
 GpuScene::GpuScene() {
     glCreateBuffers(1, &sphereBuffer_);
     glCreateBuffers(1, &materialBuffer_);
+    glCreateBuffers(5, geometryBuffers_);
 }
 
 GpuScene::~GpuScene() {
     glDeleteBuffers(1, &sphereBuffer_);
     glDeleteBuffers(1, &materialBuffer_);
+    glDeleteBuffers(5, geometryBuffers_);
 }
 
 void GpuScene::upload(const Scene& scene) {
-    std::vector<glsl::GpuSphere> spheres;
-    for (const Sphere& s : scene.spheres)
-        spheres.push_back({glm::vec4(s.center, s.radius), glm::uvec4(unsigned(s.material), 0, 0, 0)});
+    geometry_ = buildSceneGeometry(scene);
+    uploadBuffer(geometryBuffers_[1], geometry_.meshNodes);
+    uploadBuffer(geometryBuffers_[3], geometry_.triangles);
+    uploadBuffer(geometryBuffers_[4], geometry_.vertices);
+    uploadTopLevel();
     std::vector<glsl::GpuMaterial> materials;
     for (const Material& m : scene.materials)
         materials.push_back({glm::vec4(m.albedo, 0.0f), glm::vec4(m.radiance(), 0.0f)});
-    sphereCount_ = int(spheres.size());
-    uploadBuffer(sphereBuffer_, std::move(spheres));
     uploadBuffer(materialBuffer_, std::move(materials));
+}
+
+void GpuScene::updateTransforms(const Scene& scene) {
+    updateTopLevel(geometry_, scene);
+    uploadTopLevel();
+}
+
+void GpuScene::uploadTopLevel() {
+    sphereCount_ = int(geometry_.spheres.size());
+    uploadBuffer(sphereBuffer_, geometry_.spheres);
+    uploadBuffer(geometryBuffers_[0], geometry_.topNodes);
+    uploadBuffer(geometryBuffers_[2], geometry_.instances);
 }
 
 void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSphereBinding, sphereBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, materialBuffer_);
+    for (GLuint i = 0; i < 5; ++i)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFirstGeometryBinding + i, geometryBuffers_[i]);
 }
 
 } // namespace raylab

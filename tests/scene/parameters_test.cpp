@@ -22,7 +22,8 @@ TEST(SceneParameters, TableCoversTheSectionsWithUniqueKeys) {
         EXPECT_EQ(findParameter(p.key), &p);
     }
     const std::set<std::string> expected = {
-        "camera.position", "camera.look_at", "camera.up",        "camera.fov",      "render.width",
+        "camera.position", "camera.look_at", "camera.up",        "camera.fov",      "camera.aperture",
+        "camera.focus_distance",                                                   "render.width",
         "render.height",   "render.rpp",     "render.spp",       "render.time",     "render.max_bounces",
         "render.rr_depth", "render.seed",    "render.exposure",  "render.tone_map", "sky.type",
         "sky.color",       "sky.top",        "sky.bottom",       "sky.strength"};
