@@ -17,10 +17,15 @@ RL_FN float safeInverse(float d) {
 
 RL_FN vec3 safeInverseDir(vec3 d) { return vec3(safeInverse(d.x), safeInverse(d.y), safeInverse(d.z)); }
 
-// Entry distance of the ray into the box within [0, tMax], or -1 for a miss.
+// Entry distance of the ray into the box within [0, tMax], or -1 for a miss. The box is closed:
+// a ray running inside a face's plane (zero direction component, origin on the plane) is inside
+// that slab. The planes are moved out by 1e-15 world units so such a difference is never an exact
+// 0 (0 × huge would give a slab of one point); with direction components of ordinary size this
+// changes t by ~1e-15 and only ever widens the box.
 RL_FN float intersectBox(vec3 origin, vec3 invDir, vec3 boxMin, vec3 boxMax, float tMax) {
-    vec3 t0 = (boxMin - origin) * invDir;
-    vec3 t1 = (boxMax - origin) * invDir;
+    const float widen = 1e-15f;
+    vec3 t0 = ((boxMin - origin) - vec3(widen)) * invDir;
+    vec3 t1 = ((boxMax - origin) + vec3(widen)) * invDir;
     vec3 tNear = min(t0, t1);
     // Rounding in the subtractions and products can put tFar below the true value: widen it by
     // 2γ(3) (Ize 2013, §3; pbrt-v4 uses 1 + 2γ(3)).

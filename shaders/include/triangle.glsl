@@ -24,6 +24,10 @@ RL_FN vec3 permuteAxes(vec3 v, int x, int y, int z) { return vec3(v[x], v[y], v[
 
 // Hit in (0, tMax) of the ray and triangle p0 p1 p2, either side; false for degenerate triangles.
 RL_FN bool intersectTriangle(Ray ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_OUT(TriangleHit) hit) {
+    // Degenerate in float (collinear or coincident vertices, e.g. a tiny triangle far from the
+    // origin whose vertices rounded together): never hit, and its normal would be NaN.
+    vec3 area = cross(p2 - p0, p1 - p0);
+    if (dot(area, area) == 0.0f) return false;
     // Vertices relative to the origin, axes permuted so that z is the ray's dominant axis.
     int kz = maxDimension(abs(ray.dir));
     int kx = kz + 1;
@@ -55,7 +59,7 @@ RL_FN bool intersectTriangle(Ray ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_
     }
     if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
     float det = e0 + e1 + e2;
-    if (det == 0.0f) return false;
+    if (!(det < 0.0f) && !(det > 0.0f)) return false;   // 0, or NaN from a NaN ray
     // Scaled distance compared against tMax·det: no division before we know it is a hit.
     a.z *= sz;
     b.z *= sz;
@@ -75,7 +79,7 @@ RL_FN bool intersectTriangle(Ray ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_
     float deltaE = 2.0f * (gammaBound(2.0f) * maxXt * maxYt + deltaY * maxXt + deltaX * maxYt);
     float maxE = max(max(abs(e0), abs(e1)), abs(e2));
     float deltaT = 3.0f * (gammaBound(3.0f) * maxE * maxZt + deltaE * maxZt + deltaZ * maxE) * abs(invDet);
-    if (t <= deltaT) return false;
+    if (!(t > deltaT)) return false;
     hit = TriangleHit(t, e0 * invDet, e1 * invDet, e2 * invDet);
     return true;
 }
