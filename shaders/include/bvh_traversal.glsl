@@ -9,6 +9,7 @@
 #ifndef RAYLAB_BVH_TRAVERSAL_GLSL
 #define RAYLAB_BVH_TRAVERSAL_GLSL
 #include "compat.glsl"
+#include "features.glsl"
 #include "ray.glsl"
 #include "aabb.glsl"
 #include "sphere.glsl"
@@ -39,6 +40,7 @@ struct TraceRecord {
 RL_FN vec3 nodeMin(GpuBvhNode n) { return vec3(n.boundsMin.x, n.boundsMin.y, n.boundsMin.z); }
 RL_FN vec3 nodeMax(GpuBvhNode n) { return vec3(n.boundsMax.x, n.boundsMax.y, n.boundsMax.z); }
 
+#ifdef RAYLAB_FEATURE_MESHES
 // Nearest triangle of one mesh in (0, rec.t), in the mesh's object space; updates rec.
 RL_FN bool traverseMesh(Ray ray, uint instance, uint root, bool anyHit, RL_INOUT(TraceRecord) rec) {
     vec3 invDir = safeInverseDir(ray.dir);
@@ -83,6 +85,7 @@ RL_FN bool traverseMesh(Ray ray, uint instance, uint root, bool anyHit, RL_INOUT
     }
     return found;
 }
+#endif
 
 // Nearest hit of the scene in (0, tMax); with anyHit, stops at the first hit found.
 RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec) {
@@ -101,6 +104,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
             if (n.info.w == 0u) {
                 for (uint i = n.info.x; i < n.info.x + n.info.y; ++i) {
                     GpuInstance inst = instanceAt(i);
+#ifdef RAYLAB_FEATURE_SPHERES
                     if (inst.info.x == INSTANCE_SPHERE) {
                         GpuSphere s = sphereAt(inst.info.y);
                         float t = intersectSphere(ray, xyzOf(s.centerRadius), s.centerRadius.w, 0.0f, rec.t);
@@ -108,7 +112,10 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
                             rec = TraceRecord(t, i, inst.info.y, 0.0f, 0.0f);
                             found = true;
                         }
-                    } else {
+                    }
+#endif
+#ifdef RAYLAB_FEATURE_MESHES
+                    if (inst.info.x == INSTANCE_MESH) {
                         // Into object space; the direction is not renormalised, so t carries over.
                         Ray local = Ray(transformPoint(inst.worldToObject0, inst.worldToObject1,
                                                        inst.worldToObject2, ray.origin),
@@ -116,6 +123,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
                                                         inst.worldToObject2, ray.dir));
                         if (traverseMesh(local, i, inst.info.y, anyHit, rec)) found = true;
                     }
+#endif
                     if (found && anyHit) break;
                 }
                 if (found && anyHit) done = true;
@@ -159,6 +167,7 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     GpuInstance inst = instanceAt(rec.instance);
     SurfaceHit s;
     s.material = inst.info.z;
+#ifdef RAYLAB_FEATURE_SPHERES
     if (inst.info.x == INSTANCE_SPHERE) {
         GpuSphere sp = sphereAt(rec.primitive);
         vec3 c = xyzOf(sp.centerRadius);
@@ -172,6 +181,8 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
                     acos(clamp(-s.normal.y, -1.0f, 1.0f)) * INV_PI);
         return s;
     }
+#endif
+#ifdef RAYLAB_FEATURE_MESHES
     GpuTriangle tri = triangleAt(rec.primitive);
     GpuVertex v0 = vertexAt(tri.vertices.x);
     GpuVertex v1 = vertexAt(tri.vertices.y);
@@ -187,13 +198,16 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     s.normal = normalize(transformNormal(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2,
                                          cross(p1 - p0, p2 - p0)));
     s.shadingNormal = s.normal;
+#ifdef RAYLAB_FEATURE_SMOOTH_NORMALS
     if ((inst.info.w & 1u) != 0u) {
         vec3 n = h.b0 * xyzOf(v0.normalV) + h.b1 * xyzOf(v1.normalV) + h.b2 * xyzOf(v2.normalV);
         vec3 nw = transformNormal(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, n);
         if (dot(nw, nw) > 0.0f) s.shadingNormal = normalize(nw);
     }
+#endif
     s.uv = h.b0 * vec2(v0.positionU.w, v0.normalV.w) + h.b1 * vec2(v1.positionU.w, v1.normalV.w) +
            h.b2 * vec2(v2.positionU.w, v2.normalV.w);
+#endif
     return s;
 }
 

@@ -3,6 +3,7 @@
 #ifndef RAYLAB_PATH_TRACER_GLSL
 #define RAYLAB_PATH_TRACER_GLSL
 #include "compat.glsl"
+#include "features.glsl"
 #include "random.glsl"
 #include "camera.glsl"
 #include "scene_data.glsl"
@@ -18,7 +19,12 @@ void tracePixelPass(ivec2 pixel) {
         Rng rng = rngCreate(uvec2(pixel), uSampleStart + uint(s), uSeed);
         // A fresh jittered position inside the pixel for every sample (box filter).
         vec2 ndc = (vec2(pixel) + rngNext2(rng)) / vec2(uImageSize) * 2.0f - 1.0f;
-        vec3 L = traceRadiance(cameraRay(cam, ndc), rng, rays);
+#ifdef RAYLAB_FEATURE_DOF
+        Ray cameraPath = cameraRayThinLens(cam, ndc, rngNext2(rng), uCamLensRadius, uCamFocusDistance);
+#else
+        Ray cameraPath = cameraRay(cam, ndc);
+#endif
+        vec3 L = traceRadiance(cameraPath, rng, rays);
 #ifdef RAYLAB_INJECT_NONFINITE
         // Tests only: every RAYLAB_INJECT_NONFINITE-th sample of a row becomes NaN or +Inf.
         uint k = uSampleStart + uint(s) + uint(pixel.x);
@@ -40,6 +46,10 @@ void tracePixelPass(ivec2 pixel) {
     imageStore(uAccum, pixel, vec4(mean, 1.0f));
     if (nonFinite > 0u) atomicAdd(nonFiniteSamples, nonFinite);
     atomicAdd(raysTraced, rays);
+#ifdef RAYLAB_COUNT_TRAVERSAL
+    atomicAdd(boxTestsTotal, gBoxTests);
+    atomicAdd(triangleTestsTotal, gTriangleTests);
+#endif
 }
 
 #endif

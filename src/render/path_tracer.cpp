@@ -16,15 +16,23 @@ int skyType(Sky::Type t) { return t == Sky::Type::Constant ? glsl::SKY_CONSTANT 
 
 } // namespace
 
+ShaderProgram PathTracer::compileVariant(const ShaderDefines& features, const void* self) {
+    const TracerOptions& o = static_cast<const PathTracer*>(self)->options_;
+    ShaderDefines defines = o.extraDefines;
+    defines.insert(defines.end(), features.begin(), features.end());
+    if (o.entry == TracerEntry::Fragment)
+        return ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag", defines);
+    defines.emplace_back("LOCAL_SIZE_X", std::to_string(o.localSizeX));
+    defines.emplace_back("LOCAL_SIZE_Y", std::to_string(o.localSizeY));
+    return ShaderProgram::compute("entry/trace.comp", defines);
+}
+
 PathTracer::PathTracer(TracerOptions options) : options_(options) {
-    if (options_.entry == TracerEntry::Fragment) {
-        program_ = ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag",
-                                           options_.extraDefines);
-    } else {
-        ShaderDefines defines = options_.extraDefines;
-        defines.emplace_back("LOCAL_SIZE_X", std::to_string(options_.localSizeX));
-        defines.emplace_back("LOCAL_SIZE_Y", std::to_string(options_.localSizeY));
-        program_ = ShaderProgram::compute("entry/trace.comp", defines);
+    for (const auto& [name, value] : options_.extraDefines) {
+        if (name != "RAYLAB_COUNT_TRAVERSAL") continue;
+        glCreateBuffers(1, &traversalBuffer_);
+        const GLuint zeros[2] = {0, 0};
+        glNamedBufferStorage(traversalBuffer_, sizeof(zeros), zeros, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
     }
     glCreateFramebuffers(1, &framebuffer_);
     glCreateVertexArrays(1, &vertexArray_);
@@ -39,11 +47,14 @@ PathTracer::~PathTracer() {
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &counterBuffer_);
+    if (traversalBuffer_) glDeleteBuffers(1, &traversalBuffer_);
 }
 
 std::string PathTracer::variantName() const {
-    if (options_.entry == TracerEntry::Fragment) return "fragment";
-    return "compute " + std::to_string(options_.localSizeX) + "x" + std::to_string(options_.localSizeY);
+    std::string entry = options_.entry == TracerEntry::Fragment
+                            ? "fragment"
+                            : "compute " + std::to_string(options_.localSizeX) + "x" + std::to_string(options_.localSizeY);
+    return entry + " [" + (options_.specialise ? featureName(features_) : "all features") + "]";
 }
 
 void PathTracer::allocateImage(int width, int height) {
@@ -64,11 +75,13 @@ void PathTracer::setScene(const Scene& scene) {
     defaultRpp_ = r.rpp;
 
     gpuScene_.upload(scene);
+    features_ = options_.specialise ? sceneFeatures(scene) : allFeatures();
+    program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
 
     const Camera& c = scene.camera;
     const auto cam = glsl::cameraBasis(c.position, c.lookAt, c.up, c.fovY,
                                        float(r.width) / float(r.height));
-    const ShaderProgram& p = program_;
+    const ShaderProgram& p = *program_;
     p.set("uImageSize", glm::ivec2(r.width, r.height));
     p.set("uSeed", unsigned(r.seed));
     p.set("uMaxBounces", r.maxBounces);
@@ -80,6 +93,10 @@ void PathTracer::setScene(const Scene& scene) {
     p.set("uCamForward", cam.forward);
     p.set("uCamTanHalfFovY", cam.tanHalfFovY);
     p.set("uCamAspect", cam.aspect);
+    p.set("uCamLensRadius", c.aperture);
+    // focus_distance 0 means "at look_at": its distance along the view axis.
+    p.set("uCamFocusDistance", c.focusDistance > 0.0f ? c.focusDistance
+                                                      : glm::dot(c.lookAt - c.position, cam.forward));
     const Sky& sky = scene.sky;
     p.set("uSkyType", skyType(sky.type));
     p.set("uSkyColor", sky.color * sky.strength);
@@ -95,20 +112,26 @@ void PathTracer::reset() {
     passes_ = 0;
     nonFinite_ = 0;
     rays_ = 0;
+    boxTests_ = 0;
+    triangleTests_ = 0;
 }
 
 void PathTracer::renderPass(int rpp) {
     if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
     if (rpp <= 0) rpp = defaultRpp_;
-    program_.set("uSampleStart", unsigned(samplesPerPixel_));
-    program_.set("uRpp", rpp);
+    program_->set("uSampleStart", unsigned(samplesPerPixel_));
+    program_->set("uRpp", rpp);
 
     const GLuint zeros[2] = {0, 0};
     glNamedBufferSubData(counterBuffer_, 0, sizeof(zeros), zeros);
     glBindImageTexture(0, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     gpuScene_.bind();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, counterBuffer_);
-    glUseProgram(program_.id());
+    if (traversalBuffer_) {
+        glNamedBufferSubData(traversalBuffer_, 0, sizeof(zeros), zeros);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 13, traversalBuffer_);
+    }
+    glUseProgram(program_->id());
     if (options_.entry == TracerEntry::Fragment) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
         glViewport(0, 0, width_, height_);
@@ -126,6 +149,11 @@ void PathTracer::renderPass(int rpp) {
     glGetNamedBufferSubData(counterBuffer_, 0, sizeof(counters), counters);   // waits for the pass
     nonFinite_ += counters[0];
     rays_ += counters[1];
+    if (traversalBuffer_) {
+        glGetNamedBufferSubData(traversalBuffer_, 0, sizeof(counters), counters);
+        boxTests_ += counters[0];
+        triangleTests_ += counters[1];
+    }
     samplesPerPixel_ += std::uint64_t(rpp);
     ++passes_;
 }

@@ -1,0 +1,48 @@
+#include "render/shader_variant.h"
+
+namespace raylab {
+
+SceneFeatures sceneFeatures(const Scene& scene) {
+    SceneFeatures f;
+    f.spheres = !scene.spheres.empty();
+    f.meshes = !scene.meshes.empty();
+    f.smoothNormals = false;
+    for (const Mesh& m : scene.meshes) f.smoothNormals |= !m.normals.empty();
+    f.depthOfField = scene.camera.aperture > 0.0f;
+    return f;
+}
+
+SceneFeatures allFeatures() { return SceneFeatures{}; }
+
+ShaderDefines featureDefines(const SceneFeatures& f) {
+    ShaderDefines d = {{"RAYLAB_FEATURES_SPECIALISED", "1"}};
+    if (f.spheres) d.emplace_back("RAYLAB_FEATURE_SPHERES", "1");
+    if (f.meshes) d.emplace_back("RAYLAB_FEATURE_MESHES", "1");
+    if (f.smoothNormals) d.emplace_back("RAYLAB_FEATURE_SMOOTH_NORMALS", "1");
+    if (f.depthOfField) d.emplace_back("RAYLAB_FEATURE_DOF", "1");
+    return d;
+}
+
+std::string featureName(const SceneFeatures& f) {
+    std::string name;
+    auto add = [&name](bool on, const char* part) {
+        if (!on) return;
+        if (!name.empty()) name += "+";
+        name += part;
+    };
+    add(f.spheres, "spheres");
+    add(f.meshes, "meshes");
+    add(f.smoothNormals, "smooth");
+    add(f.depthOfField, "dof");
+    return name.empty() ? "none" : name;
+}
+
+const ShaderProgram& ShaderVariantCache::get(const ShaderDefines& defines, Compile compile, const void* context) {
+    std::string key;
+    for (const auto& [name, value] : defines) key += name + "=" + value + ";";
+    auto it = programs_.find(key);
+    if (it == programs_.end()) it = programs_.emplace(key, compile(defines, context)).first;
+    return it->second;
+}
+
+} // namespace raylab

@@ -1,0 +1,70 @@
+// Per-scene specialisation: the feature set, the variant cache, and that the all-features shader
+// computes the same thing.
+#include "render/shader_variant.h"
+#include "render_helpers.h"
+#include "support/gl_test.h"
+
+using namespace raylab;
+
+TEST(ShaderVariant, FeaturesComeFromTheScene) {
+    const Scene spheres = loadScene(test::scenePath("default.json"));
+    EXPECT_EQ(featureName(sceneFeatures(spheres)), "spheres");
+    Scene s = spheres;
+    s.meshes.push_back(Mesh{});
+    s.meshes[0].normals.push_back(glm::vec3(0, 0, 1));
+    s.camera.aperture = 0.1f;
+    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof");
+    const ShaderDefines d = featureDefines(sceneFeatures(spheres));
+    ASSERT_EQ(d.size(), 2u);
+    EXPECT_EQ(d[0].first, "RAYLAB_FEATURES_SPECIALISED");
+    EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
+    EXPECT_EQ(featureDefines(allFeatures()).size(), 5u);
+}
+
+class ShaderVariantTest : public test::GlTest {};
+
+TEST_F(ShaderVariantTest, VariantsAreNamedCompiledOnceAndReused) {
+    const Scene spheres = loadScene(test::scenePath("furnace.json"));
+    Scene lens = spheres;
+    lens.camera.aperture = 0.01f;
+    PathTracer tracer;
+    EXPECT_EQ(tracer.compileSeconds(), 0.0);
+    tracer.setScene(spheres);
+    EXPECT_EQ(tracer.variantName(), "fragment [spheres]");
+    const double first = tracer.compileSeconds();
+    EXPECT_GT(first, 0.0);
+    tracer.setScene(lens);
+    EXPECT_EQ(tracer.variantName(), "fragment [spheres+dof]");
+    tracer.setScene(spheres);
+    EXPECT_EQ(tracer.compileSeconds(), first) << "the cached program, not a new compile";
+    TracerOptions all;
+    all.specialise = false;
+    PathTracer unspecialised(all);
+    unspecialised.setScene(spheres);
+    EXPECT_EQ(unspecialised.variantName(), "fragment [all features]");
+}
+
+TEST_F(ShaderVariantTest, AllFeaturesShaderPassesTheFurnaceExactly) {
+    const Scene scene = loadScene(test::scenePath("furnace.json"));
+    TracerOptions all;
+    all.specialise = false;
+    const Image image = test::render(scene, all);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) ASSERT_NEAR(image.rgb(x, y)[0], 0.5f, 1e-6f);
+}
+
+TEST_F(ShaderVariantTest, TraversalCountersCountBoxesAndTriangles) {
+    TracerOptions counting;
+    counting.extraDefines = {{"RAYLAB_COUNT_TRAVERSAL", "1"}};
+    Scene scene = loadScene(test::scenePath("furnace.json"), {"render.spp=1"});
+    PathTracer tracer(counting);
+    tracer.setScene(scene);
+    tracer.renderPass();
+    EXPECT_GE(tracer.boxTests(), tracer.raysTraced()) << "at least the root per ray";
+    EXPECT_EQ(tracer.triangleTests(), 0u) << "spheres only";
+    scene.meshes.push_back(parseScene(R"({ "objects": [ { "type": "mesh", "positions": [-50,-50,3, 50,-50,3, 0,50,3],
+        "indices": [0, 1, 2] } ] })", "tri.json").meshes[0]);
+    tracer.setScene(scene);
+    tracer.renderPass();
+    EXPECT_GT(tracer.triangleTests(), 0u) << "bounce rays towards +z meet the triangle behind the camera";
+}
