@@ -161,12 +161,14 @@ struct SurfaceHit {
     vec3 error;
     vec2 uv;
     uint material;
+    float lodBase;   // ½·log2(uv area / world area) around the hit, for ray-cone texture LOD
 };
 
 RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     GpuInstance inst = instanceAt(rec.instance);
     SurfaceHit s;
     s.material = inst.info.z;
+    s.lodBase = 0.0f;
 #ifdef RAYLAB_FEATURE_SPHERES
     if (inst.info.x == INSTANCE_SPHERE) {
         GpuSphere sp = sphereAt(rec.primitive);
@@ -179,6 +181,9 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
         // Equirectangular uv: u around +y from +x, v from the bottom pole.
         s.uv = vec2(0.5f + atan(s.normal.z, s.normal.x) * (0.5f * INV_PI),
                     acos(clamp(-s.normal.y, -1.0f, 1.0f)) * INV_PI);
+        // du·dv = dθ·dφ / (2π²) against dA = r²·sinθ·dθ·dφ.
+        float sinTheta = max(sqrt(max(0.0f, 1.0f - s.normal.y * s.normal.y)), 1e-6f);
+        s.lodBase = 0.5f * log2(1.0f / (2.0f * PI * PI * r * r * sinTheta));
         return s;
     }
 #endif
@@ -205,8 +210,15 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
         if (dot(nw, nw) > 0.0f) s.shadingNormal = normalize(nw);
     }
 #endif
-    s.uv = h.b0 * vec2(v0.positionU.w, v0.normalV.w) + h.b1 * vec2(v1.positionU.w, v1.normalV.w) +
-           h.b2 * vec2(v2.positionU.w, v2.normalV.w);
+    vec2 t0 = vec2(v0.positionU.w, v0.normalV.w);
+    vec2 t1 = vec2(v1.positionU.w, v1.normalV.w);
+    vec2 t2 = vec2(v2.positionU.w, v2.normalV.w);
+    s.uv = h.b0 * t0 + h.b1 * t1 + h.b2 * t2;
+    // Ray Tracing Gems ch. 20, eq. 34: texel-to-world area ratio of the triangle (world edges).
+    vec3 w1 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p1 - p0);
+    vec3 w2 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p2 - p0);
+    float uvArea = abs((t1.x - t0.x) * (t2.y - t0.y) - (t2.x - t0.x) * (t1.y - t0.y));
+    s.lodBase = 0.5f * log2(max(uvArea, 1e-30f) / max(length(cross(w1, w2)), 1e-30f));
 #endif
     return s;
 }

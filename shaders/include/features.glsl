@@ -7,6 +7,7 @@
 //   RAYLAB_FEATURE_MESHES          the scene has triangle meshes
 //   RAYLAB_FEATURE_SMOOTH_NORMALS  some mesh has per-vertex normals
 //   RAYLAB_FEATURE_DOF             the camera has a lens (camera.aperture > 0)
+//   RAYLAB_FEATURE_TEXTURES        some material has an image texture
 #ifndef RAYLAB_FEATURES_GLSL
 #define RAYLAB_FEATURES_GLSL
 #ifndef RAYLAB_FEATURES_SPECIALISED
@@ -14,5 +15,6 @@
 #define RAYLAB_FEATURE_MESHES 1
 #define RAYLAB_FEATURE_SMOOTH_NORMALS 1
 #define RAYLAB_FEATURE_DOF 1
+#define RAYLAB_FEATURE_TEXTURES 1
 #endif
 #endif

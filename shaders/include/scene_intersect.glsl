@@ -16,6 +16,7 @@ struct Hit {
     uint material;
     vec3 shadingNormal;   // interpolated vertex normal (smooth shading); = normal without one
     vec2 uv;
+    float lodBase;        // ½·log2(uv area / world area), for texture LOD (texture.glsl)
 };
 
 bool intersectScene(Ray ray, out Hit hit) {
@@ -29,6 +30,7 @@ bool intersectScene(Ray ray, out Hit hit) {
     hit.material = s.material;
     hit.shadingNormal = s.shadingNormal;
     hit.uv = s.uv;
+    hit.lodBase = s.lodBase;
     return true;
 }
 

@@ -27,12 +27,14 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &sphereBuffer_);
     glCreateBuffers(1, &materialBuffer_);
     glCreateBuffers(5, geometryBuffers_);
+    glCreateBuffers(2, textureBuffers_);
 }
 
 GpuScene::~GpuScene() {
     glDeleteBuffers(1, &sphereBuffer_);
     glDeleteBuffers(1, &materialBuffer_);
     glDeleteBuffers(5, geometryBuffers_);
+    glDeleteBuffers(2, textureBuffers_);
 }
 
 void GpuScene::upload(const Scene& scene) {
@@ -45,6 +47,19 @@ void GpuScene::upload(const Scene& scene) {
     for (const Material& m : scene.materials)
         materials.push_back({glm::vec4(m.albedo, 0.0f), glm::vec4(m.radiance(), 0.0f)});
     uploadBuffer(materialBuffer_, std::move(materials));
+
+    // Textures: all levels of all textures in one texel array; see shaders/include/scene_textures.glsl.
+    std::vector<glm::vec4> texels;
+    std::vector<glm::uvec4> info;
+    info.emplace_back(unsigned(scene.materials.size()), 0u, 0u, 0u);
+    for (const Material& m : scene.materials) info.emplace_back(unsigned(m.albedoTextureIndex + 1), 0u, 0u, 0u);
+    for (const Texture& t : scene.textures) {
+        info.emplace_back(unsigned(texels.size()), unsigned(t.levels[0].width), unsigned(t.levels[0].height),
+                          unsigned(t.levels.size()));
+        for (const MipLevel& l : t.levels) texels.insert(texels.end(), l.texels.begin(), l.texels.end());
+    }
+    uploadBuffer(textureBuffers_[0], std::move(texels));
+    uploadBuffer(textureBuffers_[1], std::move(info));
 }
 
 void GpuScene::updateTransforms(const Scene& scene) {
@@ -64,6 +79,8 @@ void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, materialBuffer_);
     for (GLuint i = 0; i < 5; ++i)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFirstGeometryBinding + i, geometryBuffers_[i]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, textureBuffers_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, textureBuffers_[1]);
 }
 
 } // namespace raylab

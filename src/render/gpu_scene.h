@@ -29,6 +29,7 @@ private:
     unsigned geometryBuffers_[5] = {};   // bindings 8–12: top nodes, mesh nodes, instances,
                                          // triangles, vertices
     void uploadTopLevel();
+    unsigned textureBuffers_[2] = {};    // bindings 14–15: texels, texture info
 };
 
 } // namespace raylab

@@ -6,6 +6,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -94,6 +95,8 @@ void PathTracer::setScene(const Scene& scene) {
     p.set("uCamTanHalfFovY", cam.tanHalfFovY);
     p.set("uCamAspect", cam.aspect);
     p.set("uCamLensRadius", c.aperture);
+    // Ray-cone spread of one pixel (Ray Tracing Gems ch. 20, eq. 30).
+    p.set("uCamPixelSpread", std::atan(2.0f * cam.tanHalfFovY / float(r.height)));
     // focus_distance 0 means "at look_at": its distance along the view axis.
     p.set("uCamFocusDistance", c.focusDistance > 0.0f ? c.focusDistance
                                                       : glm::dot(c.lookAt - c.position, cam.forward));

@@ -9,6 +9,8 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.smoothNormals = false;
     for (const Mesh& m : scene.meshes) f.smoothNormals |= !m.normals.empty();
     f.depthOfField = scene.camera.aperture > 0.0f;
+    f.textures = !scene.textures.empty();
+    f.showMipLevel = f.textures && scene.render.showMipLevel != 0;
     return f;
 }
 
@@ -20,6 +22,8 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     if (f.meshes) d.emplace_back("RAYLAB_FEATURE_MESHES", "1");
     if (f.smoothNormals) d.emplace_back("RAYLAB_FEATURE_SMOOTH_NORMALS", "1");
     if (f.depthOfField) d.emplace_back("RAYLAB_FEATURE_DOF", "1");
+    if (f.textures) d.emplace_back("RAYLAB_FEATURE_TEXTURES", "1");
+    if (f.showMipLevel) d.emplace_back("RAYLAB_SHOW_MIP_LEVEL", "1");
     return d;
 }
 
@@ -34,6 +38,8 @@ std::string featureName(const SceneFeatures& f) {
     add(f.meshes, "meshes");
     add(f.smoothNormals, "smooth");
     add(f.depthOfField, "dof");
+    add(f.textures, "textures");
+    add(f.showMipLevel, "mip-view");
     return name.empty() ? "none" : name;
 }
 

@@ -16,6 +16,8 @@ struct SceneFeatures {
     bool meshes = true;
     bool smoothNormals = true;
     bool depthOfField = true;
+    bool textures = true;
+    bool showMipLevel = false;   // debug view (render.show_mip_level), never part of "all features"
     bool operator==(const SceneFeatures&) const = default;
 };
 

@@ -138,6 +138,10 @@ std::vector<ParamSpec> buildSceneTable() {
               {"aces", static_cast<int>(ToneMap::AcesFit)},
               {"none", static_cast<int>(ToneMap::Clamp), true}}),
         [](auto& s) -> auto& { return s.render.toneMap; });
+    add(spec("render.show_mip_level", T::Int, atLeast(0), atMost(1), "",
+             "1 = textured surfaces show the mip level chosen by ray cones (blue 0, green 4, red 8+).",
+             G::RecompileShader),
+        [](auto& s) -> auto& { return s.render.showMipLevel; });
 
     // --- sky ---
     add(spec("sky.type", T::Enum, kAny, kAny, "",
@@ -271,6 +275,11 @@ const std::vector<TransformParamSpec>& transformParameters() {
 
 const std::vector<std::string_view>& meshKeys() {
     static const std::vector<std::string_view> keys = {"file", "positions", "indices", "normals", "uvs"};
+    return keys;
+}
+
+const std::vector<std::string_view>& materialFileKeys() {
+    static const std::vector<std::string_view> keys = {"albedo_texture"};
     return keys;
 }
 

@@ -91,6 +91,8 @@ const std::vector<SphereParamSpec>& sphereParameters();
 const std::vector<TransformParamSpec>& transformParameters();
 // Keys of a mesh object that the loader reads itself (arrays and the OBJ path), for FORMAT.md.
 const std::vector<std::string_view>& meshKeys();
+// Keys of a material that name files (image textures), read by the loader itself.
+const std::vector<std::string_view>& materialFileKeys();
 
 // Range/finiteness check of one number (one component for Vec3/Rgb). Returns the complaint without
 // location, e.g. "must be > 0, got -1", or nullopt when the value is acceptable. Integer types also

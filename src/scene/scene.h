@@ -1,6 +1,8 @@
 #pragma once
 // The in-memory scene: what a scene file describes, after validation. Plain data; the loader
 // (scene_loader.h) fills it, the renderer reads it. Units and ranges are in scenes/FORMAT.md.
+#include "texture/texture.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -34,6 +36,7 @@ struct RenderSettings {
     std::uint32_t seed = 1;      // sampler seed: same seed, same image bit for bit
     float exposure = 0.0f;       // EV stops: display value = linear × 2^exposure
     ToneMap toneMap = ToneMap::AcesFit;
+    int showMipLevel = 0;        // 1: textured surfaces show their mip level as colours (debug)
 };
 
 struct Material {
@@ -41,6 +44,8 @@ struct Material {
     glm::vec3 albedo{0.8f};          // diffuse reflectance, each channel in [0, 1]
     glm::vec3 emission{0.0f};        // emitted radiance colour
     float emissionStrength = 0.0f;   // multiplies emission; radiance = emission × strength
+    std::string albedoTexture;       // image file as written in the scene ("" = none); multiplies albedo
+    int albedoTextureIndex = -1;     // into Scene::textures
     glm::vec3 radiance() const { return emission * emissionStrength; }
 };
 
@@ -89,6 +94,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Sphere> spheres;
     std::vector<Mesh> meshes;
+    std::vector<Texture> textures;   // loaded images, referenced by Material::albedoTextureIndex
 };
 
 } // namespace raylab

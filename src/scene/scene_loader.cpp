@@ -330,6 +330,27 @@ struct PendingMesh {
     std::string material;
 };
 
+// An image file for a material (relative to the scene's directory), loaded once per path.
+int readTexture(const Json& v, const Path& p, const std::filesystem::path& sceneDir, std::vector<Texture>& textures,
+                std::string& given) {
+    if (!v.is_string() || v.get_ref<const std::string&>().empty())
+        fail(p, "expected the path of an image file (a string), got " + typeOf(v));
+    given = v.get<std::string>();
+    const std::filesystem::path path =
+        std::filesystem::path(given).is_absolute() ? std::filesystem::path(given) : sceneDir / given;
+    for (std::size_t i = 0; i < textures.size(); ++i)
+        if (textures[i].file == given) return int(i);
+    if (!std::filesystem::is_regular_file(path)) fail(p, path.string() + ": cannot read: no such file");
+    try {
+        Texture t = loadTexture(path);
+        t.file = given;
+        textures.push_back(std::move(t));
+    } catch (const TextureError& e) {
+        fail(p, e.what());
+    }
+    return int(textures.size() - 1);
+}
+
 // "transform": { "translation", "rotation", "scale" }; scale may be one number for all axes.
 Transform readTransform(const Json& o, const Path& p) {
     Transform t;
@@ -474,7 +495,11 @@ void validate(const Json& root, Scene& scene) {
             if (name.empty()) fail(p.key(name), "a material name must not be empty", true);
             Material mat;
             mat.name = name;
-            readMembers(m, p.key(name), materialParameters(), "", mat);
+            readMembers(m, p.key(name), materialParameters(), "", mat, materialFileKeys());
+            if (m.contains("albedo_texture"))
+                mat.albedoTextureIndex = readTexture(m["albedo_texture"], p.key(name).key("albedo_texture"),
+                                                     scene.sourcePath.parent_path(), scene.textures,
+                                                     mat.albedoTexture);
             materials.push_back(std::move(mat));
         }
     }
@@ -822,6 +847,7 @@ nlohmann::json sceneToJson(const Scene& scene) {
     for (const Material& m : scene.materials) {
         nlohmann::json mj = nlohmann::json::object();
         for (const MaterialParamSpec& spec : materialParameters()) mj[std::string(spec.key)] = valueJson(spec, m);
+        if (!m.albedoTexture.empty()) mj["albedo_texture"] = m.albedoTexture;
         materials[m.name] = mj;
     }
     j["materials"] = materials;

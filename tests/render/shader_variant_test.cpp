@@ -18,7 +18,7 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     ASSERT_EQ(d.size(), 2u);
     EXPECT_EQ(d[0].first, "RAYLAB_FEATURES_SPECIALISED");
     EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
-    EXPECT_EQ(featureDefines(allFeatures()).size(), 5u);
+    EXPECT_EQ(featureDefines(allFeatures()).size(), 6u);
 }
 
 class ShaderVariantTest : public test::GlTest {};

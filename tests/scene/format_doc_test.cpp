@@ -84,6 +84,7 @@ TEST(SceneFormatDoc, EveryMaterialAndObjectKeyHasATableRow) {
     // Keys of an object that the loader handles itself.
     for (const char* key : {"type", "material"}) EXPECT_EQ(rows.count(key), 1u) << "`" << key << "` undocumented";
     for (std::string_view key : meshKeys()) EXPECT_EQ(rows.count(std::string(key)), 1u) << "`" << key << "` undocumented";
+    for (std::string_view key : materialFileKeys()) EXPECT_EQ(rows.count(std::string(key)), 1u) << "`" << key << "` undocumented";
 }
 
 TEST(SceneFormatDoc, NoRowsForKeysThatDoNotExist) {
@@ -97,6 +98,8 @@ TEST(SceneFormatDoc, NoRowsForKeysThatDoNotExist) {
                            std::any_of(transformParameters().begin(), transformParameters().end(),
                                        [&](const auto& p) { return p.key == key; }) ||
                            std::any_of(meshKeys().begin(), meshKeys().end(),
+                                       [&](std::string_view k) { return k == key; }) ||
+                           std::any_of(materialFileKeys().begin(), materialFileKeys().end(),
                                        [&](std::string_view k) { return k == key; });
         EXPECT_TRUE(known) << "FORMAT.md documents `" << key << "`, which the loader does not know";
     }

@@ -1,0 +1,93 @@
+// Image textures through the whole path: a scene file names a PNG, the loader reads it, the GPU
+// samples it at the hit's uv.
+#include "render_helpers.h"
+#include "support/gl_test.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace raylab;
+namespace fs = std::filesystem;
+
+namespace {
+
+// 8×8 RGB PNG, top row first as files store it: blue | white over red | green.
+void writeQuadrantsPng(const fs::path& path) {
+    std::vector<unsigned char> px;
+    for (int row = 0; row < 8; ++row)
+        for (int x = 0; x < 8; ++x) {
+            const bool top = row < 4, left = x < 4;
+            const unsigned char r = (!top && left) || (top && !left) ? 255 : 0;
+            const unsigned char g = (!top && !left) || (top && !left) ? 255 : 0;
+            const unsigned char b = top ? 255 : 0;
+            px.insert(px.end(), {r, g, b});
+        }
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(path.string(), OIIO::ImageSpec(8, 8, 3, OIIO::TypeDesc::UINT8)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px.data()));
+    out->close();
+}
+
+fs::path scratch() {
+    const fs::path dir = fs::temp_directory_path() / ("raylab_texture_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir / "textures");
+    return dir;
+}
+
+constexpr const char* kQuadScene = R"({
+  "camera": { "position": [0, 0, 2], "look_at": [0, 0, 0], "fov": 40 },
+  "render": { "width": 16, "height": 16, "spp": 4, "max_bounces": 1, "rr_depth": 100, "tone_map": "clamp" },
+  "sky": { "type": "constant", "color": 1 },
+  "materials": { "checker": { "albedo": 1, "albedo_texture": "textures/quadrants.png" } },
+  "objects": [ { "type": "mesh", "material": "checker",
+    "positions": [-1,-1,0, 1,-1,0, 1,1,0, -1,1,0], "indices": [0,1,2, 0,2,3], "uvs": [0,0, 1,0, 1,1, 0,1] } ] })";
+
+} // namespace
+
+class TextureRenderTest : public test::GlTest {};
+
+TEST_F(TextureRenderTest, UvCheckerLandsWhereExpectedOnAQuad) {
+    const fs::path dir = scratch();
+    writeQuadrantsPng(dir / "textures" / "quadrants.png");
+    std::ofstream(dir / "quad.json") << kQuadScene;
+    const Scene scene = loadScene(dir / "quad.json");
+    ASSERT_EQ(scene.textures.size(), 1u);
+    // The quad fills the view (it spans ±1 at distance 2; the view ±0.73). One bounce reaches the
+    // sky (radiance 1), so a pixel is exactly the texture's linear colour there.
+    const Image image = test::render(scene);
+    // Pixel centres well inside each quadrant (away from the bilinear seams), image top row first.
+    const struct { int x, y; glm::vec3 colour; } probes[] = {
+        {3, 3, {0, 0, 1}}, {12, 3, {1, 1, 1}}, {3, 12, {1, 0, 0}}, {12, 12, {0, 1, 0}}};
+    for (const auto& p : probes)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(image.rgb(p.x, p.y)[c], p.colour[c], 1e-5f) << p.x << "," << p.y << " channel " << c;
+    fs::remove_all(dir);
+}
+
+TEST_F(TextureRenderTest, MissingAndBrokenImagesAreLocatedErrors) {
+    const fs::path dir = scratch();
+    std::ofstream(dir / "quad.json") << kQuadScene;
+    try {
+        loadScene(dir / "quad.json");
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), (dir / "quad.json").string() +
+                                             ":5:62: error: materials.checker.albedo_texture: " +
+                                             (dir / "textures" / "quadrants.png").string() +
+                                             ": cannot read: no such file");
+    }
+    std::ofstream(dir / "textures" / "quadrants.png") << "not a png";
+    try {
+        loadScene(dir / "quad.json");
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("materials.checker.albedo_texture: " +
+                                             (dir / "textures" / "quadrants.png").string() + ": "),
+                  std::string::npos)
+            << e.what();
+    }
+    fs::remove_all(dir);
+}
