@@ -4,6 +4,7 @@
 // includer first defines the accessors
 //   GpuBvhNode topNode(uint i); GpuBvhNode meshNode(uint i); GpuInstance instanceAt(uint i);
 //   GpuTriangle triangleAt(uint i); GpuVertex vertexAt(uint i); GpuSphere sphereAt(uint i);
+//   uint instanceCount();
 // (GLSL: scene_geometry.glsl reads buffers; C++: accel/cpu_traversal.h reads vectors), and may
 // define RL_COUNT_BOX() / RL_COUNT_TRIANGLE() to count tests (heat maps).
 #ifndef RAYLAB_BVH_TRAVERSAL_GLSL
@@ -87,11 +88,46 @@ RL_FN bool traverseMesh(Ray ray, uint instance, uint root, bool anyHit, RL_INOUT
 }
 #endif
 
+// One object of the top level: a world-space sphere, or a mesh traversed in its object space.
+RL_FN bool intersectInstance(Ray ray, uint i, bool anyHit, RL_INOUT(TraceRecord) rec) {
+    bool found = false;
+    GpuInstance inst = instanceAt(i);
+#ifdef RAYLAB_FEATURE_SPHERES
+    if (inst.info.x == INSTANCE_SPHERE) {
+        GpuSphere s = sphereAt(inst.info.y);
+        float t = intersectSphere(ray, xyzOf(s.centerRadius), s.centerRadius.w, 0.0f, rec.t);
+        if (t > 0.0f) {
+            rec = TraceRecord(t, i, inst.info.y, 0.0f, 0.0f);
+            found = true;
+        }
+    }
+#endif
+#ifdef RAYLAB_FEATURE_MESHES
+    if (inst.info.x == INSTANCE_MESH) {
+        // Into object space; the direction is not renormalised, so t carries over.
+        Ray local = Ray(transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin),
+                        transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir));
+        if (traverseMesh(local, i, inst.info.y, anyHit, rec)) found = true;
+    }
+#endif
+    return found;
+}
+
 // Nearest hit of the scene in (0, tMax); with anyHit, stops at the first hit found.
 RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec) {
     rec = TraceRecord(tMax, 0u, 0u, 0.0f, 0.0f);
-    vec3 invDir = safeInverseDir(ray.dir);
     bool found = false;
+#ifdef RAYLAB_TOP_LEVEL_LINEAR
+    // Few objects: a plain loop beats the top-level traversal's stack and box tests (measured
+    // in bench/geometry.md); the loop bound is the buffer's length, the same in every lane.
+    uint count = instanceCount();
+    for (uint i = 0u; i < count; ++i) {
+        if (intersectInstance(ray, i, anyHit, rec)) found = true;
+        if (found && anyHit) break;
+    }
+    return found;
+#else
+    vec3 invDir = safeInverseDir(ray.dir);
     uint stack[BVH_STACK_SIZE];
     int sp = 0;
     uint node = 0u;
@@ -103,27 +139,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
         if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t) >= 0.0f) {
             if (n.info.w == 0u) {
                 for (uint i = n.info.x; i < n.info.x + n.info.y; ++i) {
-                    GpuInstance inst = instanceAt(i);
-#ifdef RAYLAB_FEATURE_SPHERES
-                    if (inst.info.x == INSTANCE_SPHERE) {
-                        GpuSphere s = sphereAt(inst.info.y);
-                        float t = intersectSphere(ray, xyzOf(s.centerRadius), s.centerRadius.w, 0.0f, rec.t);
-                        if (t > 0.0f) {
-                            rec = TraceRecord(t, i, inst.info.y, 0.0f, 0.0f);
-                            found = true;
-                        }
-                    }
-#endif
-#ifdef RAYLAB_FEATURE_MESHES
-                    if (inst.info.x == INSTANCE_MESH) {
-                        // Into object space; the direction is not renormalised, so t carries over.
-                        Ray local = Ray(transformPoint(inst.worldToObject0, inst.worldToObject1,
-                                                       inst.worldToObject2, ray.origin),
-                                        transformVector(inst.worldToObject0, inst.worldToObject1,
-                                                        inst.worldToObject2, ray.dir));
-                        if (traverseMesh(local, i, inst.info.y, anyHit, rec)) found = true;
-                    }
-#endif
+                    if (intersectInstance(ray, i, anyHit, rec)) found = true;
                     if (found && anyHit) break;
                 }
                 if (found && anyHit) done = true;
@@ -142,6 +158,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
         }
     }
     return found;
+#endif
 }
 
 // Is anything in (0, tMax) along the ray? For shadow rays: tMax is the light's distance (in units
@@ -179,11 +196,14 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
         s.shadingNormal = s.normal;
         s.error = sphereHitError(c, r);
         // Equirectangular uv: u around +y from +x, v from the bottom pole.
+        s.uv = vec2(0.0f);
+#ifdef RAYLAB_FEATURE_TEXTURES   // uv and its footprint only where something reads them
         s.uv = vec2(0.5f + atan(s.normal.z, s.normal.x) * (0.5f * INV_PI),
                     acos(clamp(-s.normal.y, -1.0f, 1.0f)) * INV_PI);
         // du·dv = dθ·dφ / (2π²) against dA = r²·sinθ·dθ·dφ.
         float sinTheta = max(sqrt(max(0.0f, 1.0f - s.normal.y * s.normal.y)), 1e-6f);
         s.lodBase = 0.5f * log2(1.0f / (2.0f * PI * PI * r * r * sinTheta));
+#endif
         return s;
     }
 #endif
@@ -214,11 +234,13 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     vec2 t1 = vec2(v1.positionU.w, v1.normalV.w);
     vec2 t2 = vec2(v2.positionU.w, v2.normalV.w);
     s.uv = h.b0 * t0 + h.b1 * t1 + h.b2 * t2;
+#ifdef RAYLAB_FEATURE_TEXTURES
     // Ray Tracing Gems ch. 20, eq. 34: texel-to-world area ratio of the triangle (world edges).
     vec3 w1 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p1 - p0);
     vec3 w2 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p2 - p0);
     float uvArea = abs((t1.x - t0.x) * (t2.y - t0.y) - (t2.x - t0.x) * (t1.y - t0.y));
     s.lodBase = 0.5f * log2(max(uvArea, 1e-30f) / max(length(cross(w1, w2)), 1e-30f));
+#endif
 #endif
     return s;
 }

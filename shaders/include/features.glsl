@@ -8,6 +8,7 @@
 //   RAYLAB_FEATURE_SMOOTH_NORMALS  some mesh has per-vertex normals
 //   RAYLAB_FEATURE_DOF             the camera has a lens (camera.aperture > 0)
 //   RAYLAB_FEATURE_TEXTURES        some material has an image texture
+//   RAYLAB_TOP_LEVEL_LINEAR        few objects: loop over them instead of the top-level BVH
 #ifndef RAYLAB_FEATURES_GLSL
 #define RAYLAB_FEATURES_GLSL
 #ifndef RAYLAB_FEATURES_SPECIALISED

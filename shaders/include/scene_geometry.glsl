@@ -20,6 +20,7 @@ GpuInstance instanceAt(uint i) { return instances[i]; }
 GpuTriangle triangleAt(uint i) { return triangles[i]; }
 GpuVertex vertexAt(uint i) { return vertices[i]; }
 GpuSphere sphereAt(uint i) { return spheres[i]; }
+uint instanceCount() { return uint(instances.length()); }
 
 #ifdef RAYLAB_COUNT_TRAVERSAL
 layout(std430, binding = 13) buffer TraversalCounters {

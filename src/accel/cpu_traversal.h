@@ -21,6 +21,7 @@ inline GpuInstance instanceAt(uint i) { return cpuTraversal.geometry->instances[
 inline GpuTriangle triangleAt(uint i) { return cpuTraversal.geometry->triangles[i]; }
 inline GpuVertex vertexAt(uint i) { return cpuTraversal.geometry->vertices[i]; }
 inline GpuSphere sphereAt(uint i) { return cpuTraversal.geometry->spheres[i]; }
+inline uint instanceCount() { return uint(cpuTraversal.geometry->instances.size()); }
 
 } // namespace raylab::glsl
 

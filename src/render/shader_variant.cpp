@@ -10,6 +10,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     for (const Mesh& m : scene.meshes) f.smoothNormals |= !m.normals.empty();
     f.depthOfField = scene.camera.aperture > 0.0f;
     f.textures = !scene.textures.empty();
+    f.linearTopLevel = scene.spheres.size() + scene.meshes.size() <= kLinearTopLevelMax;
     f.showMipLevel = f.textures && scene.render.showMipLevel != 0;
     return f;
 }
@@ -23,6 +24,7 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     if (f.smoothNormals) d.emplace_back("RAYLAB_FEATURE_SMOOTH_NORMALS", "1");
     if (f.depthOfField) d.emplace_back("RAYLAB_FEATURE_DOF", "1");
     if (f.textures) d.emplace_back("RAYLAB_FEATURE_TEXTURES", "1");
+    if (f.linearTopLevel) d.emplace_back("RAYLAB_TOP_LEVEL_LINEAR", "1");
     if (f.showMipLevel) d.emplace_back("RAYLAB_SHOW_MIP_LEVEL", "1");
     return d;
 }
@@ -39,6 +41,7 @@ std::string featureName(const SceneFeatures& f) {
     add(f.smoothNormals, "smooth");
     add(f.depthOfField, "dof");
     add(f.textures, "textures");
+    add(f.linearTopLevel, "few-objects");
     add(f.showMipLevel, "mip-view");
     return name.empty() ? "none" : name;
 }

@@ -17,9 +17,13 @@ struct SceneFeatures {
     bool smoothNormals = true;
     bool depthOfField = true;
     bool textures = true;
+    bool linearTopLevel = false; // at most kLinearTopLevelMax objects: no top-level BVH
     bool showMipLevel = false;   // debug view (render.show_mip_level), never part of "all features"
     bool operator==(const SceneFeatures&) const = default;
 };
+
+// Up to this many objects the top level is a plain loop (bench/geometry.md measured it faster).
+constexpr std::size_t kLinearTopLevelMax = 16;
 
 SceneFeatures sceneFeatures(const Scene& scene);   // what this scene needs
 SceneFeatures allFeatures();                       // the unspecialised tracer
