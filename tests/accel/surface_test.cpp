@@ -43,3 +43,22 @@ TEST(SurfaceAt, TransformedQuadGivesWorldNormalsSmoothNormalsAndUvs) {
     EXPECT_NEAR(s.uv.y, 0.25f, 1e-5f);
     glsl::cpuTraversal.geometry = nullptr;
 }
+
+TEST(SurfaceAt, SphereUvIsLongitudeAndLatitude) {
+    const Scene scene = parseScene(R"({ "objects": [ { "type": "sphere", "center": [1, 2, 3], "radius": 2 } ] })", "s.json");
+    const SceneGeometry g = buildSceneGeometry(scene);
+    glsl::cpuTraversal.geometry = &g;
+    const glm::vec3 c(1, 2, 3);
+    const struct { glm::vec3 side; glm::vec2 uv; } cases[] = {
+        {{1, 0, 0}, {0.5f, 0.5f}}, {{0, 0, 1}, {0.75f, 0.5f}}, {{0, 0, -1}, {0.25f, 0.5f}},
+        {{0, 1, 0}, {0.5f, 1.0f}}, {{0, -1, 0}, {0.5f, 0.0f}}};
+    for (const auto& k : cases) {
+        const glsl::Ray ray(c + 10.0f * k.side + glm::vec3(1e-4f, 0, 0) * std::abs(k.side.y), -k.side);
+        glsl::TraceRecord rec{};
+        ASSERT_TRUE(glsl::traceScene(ray, glsl::FLOAT_MAX, false, rec));
+        const glsl::SurfaceHit s = glsl::surfaceAt(ray, rec);
+        if (std::abs(k.side.y) < 0.5f) EXPECT_NEAR(s.uv.x, k.uv.x, 1e-4f) << k.side.x << k.side.y << k.side.z;
+        EXPECT_NEAR(s.uv.y, k.uv.y, 1e-3f) << k.side.x << k.side.y << k.side.z;
+    }
+    glsl::cpuTraversal.geometry = nullptr;
+}
