@@ -4,7 +4,8 @@
 set -eu
 PACKAGES="cmake g++ make pkg-config python3-glad
   libglm-dev libopenimageio-dev openimageio-tools libosmesa6-dev libegl-dev libegl-mesa0
-  nlohmann-json3-dev libcli11-dev libgtest-dev libtinyobjloader-dev"
+  nlohmann-json3-dev libcli11-dev libgtest-dev libtinyobjloader-dev
+  libtinygltf-dev"
 missing=""
 for p in $PACKAGES; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -1,6 +1,7 @@
 #include "scene/scene_loader.h"
 
 #include "scene/json_locator.h"
+#include "scene/gltf_loader.h"
 #include "scene/obj_loader.h"
 #include "scene/parameters.h"
 
@@ -401,13 +402,17 @@ Mesh readMesh(const Json& o, const Path& p, const std::filesystem::path& sceneDi
                 fail(p.key(inline_), "a mesh takes either \"file\" or inline arrays, not both", true);
         const Json& f = o["file"];
         if (!f.is_string() || f.get_ref<const std::string&>().empty())
-            fail(p.key("file"), "expected the path of an OBJ file (a string), got " + typeOf(f));
+            fail(p.key("file"), "expected the path of an OBJ or glTF file (a string), got " + typeOf(f));
         const std::string given = f.get<std::string>();
         const std::filesystem::path path = std::filesystem::path(given).is_absolute() ? std::filesystem::path(given)
                                                                                      : sceneDir / given;
+        std::string ext = path.extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
         try {
-            mesh = loadObj(path);
+            mesh = (ext == ".gltf" || ext == ".glb") ? loadGltf(path) : loadObj(path);
         } catch (const ObjError& e) {
+            fail(p.key("file"), e.what());
+        } catch (const GltfError& e) {
             fail(p.key("file"), e.what());
         }
         mesh.file = given;
