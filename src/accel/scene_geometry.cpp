@@ -71,7 +71,9 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
         inst.info = glm::uvec4(glsl::INSTANCE_SPHERE, unsigned(g.spheres.size()), unsigned(s.material), 0u);
         g.spheres.push_back({glm::vec4(w.center, w.radius), glm::uvec4(unsigned(s.material), 0u, 0u, 0u)});
         objects.push_back(inst);
-        bounds.push_back(Aabb{w.center - glm::vec3(w.radius), w.center + glm::vec3(w.radius)});
+        // Widened by a few ulps: the rounded c ± r may fall just inside the sphere's extent.
+        const glm::vec3 slack = 4.0f * 5.9604645e-8f * (glm::abs(w.center) + glm::vec3(w.radius));
+        bounds.push_back(Aabb{w.center - glm::vec3(w.radius) - slack, w.center + glm::vec3(w.radius) + slack});
     }
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];

@@ -108,6 +108,11 @@ void PathTracer::setScene(const Scene& scene) {
     reset();
 }
 
+void PathTracer::updateTransforms(const Scene& scene) {
+    gpuScene_.updateTransforms(scene);
+    reset();
+}
+
 void PathTracer::reset() {
     const float zero[4] = {0, 0, 0, 0};
     if (accumTexture_) glClearTexImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, zero);

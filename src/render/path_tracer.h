@@ -33,6 +33,9 @@ public:
 
     // Uploads the scene (geometry, materials, camera, sky, settings) and restarts accumulation.
     void setScene(const Scene& scene);
+    // Objects moved (transforms, sphere centres; same meshes and materials): re-uploads only the
+    // top level (the meshes' BVHs stay) and restarts accumulation.
+    void updateTransforms(const Scene& scene);
     // Drops the accumulated samples; the next pass starts a new mean.
     void reset();
     // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them.

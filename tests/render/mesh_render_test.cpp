@@ -45,7 +45,13 @@ TEST_F(MeshRenderTest, MovingTheMeshKeepsItsBvhAndTheRenderFollows) {
     scene.meshes[0].transform.translation.x = 100.0f;   // out of view
     gpu.updateTransforms(scene);
     EXPECT_EQ(gpu.geometry().meshNodes.size(), nodes);
-    // Rendered out of view, the image is the sky.
-    const Image image = test::render(scene);
-    EXPECT_NEAR(image.rgb(16, 16)[0], 1.0f, 1e-6f);
+    // Through the tracer: moved out of view, the image is the sky.
+    PathTracer tracer;
+    tracer.setScene(parseScene(kCubeFurnace, "cube_furnace.json"));
+    tracer.renderPass();
+    EXPECT_NEAR(tracer.readImage().rgb(16, 16)[0], 0.5f, 1e-6f);
+    tracer.updateTransforms(scene);
+    EXPECT_EQ(tracer.samplesPerPixel(), 0u);
+    tracer.renderPass();
+    EXPECT_NEAR(tracer.readImage().rgb(16, 16)[0], 1.0f, 1e-6f);
 }
