@@ -5,6 +5,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <array>
+
 #include <filesystem>
 #include <fstream>
 
@@ -88,6 +90,50 @@ TEST_F(TextureRenderTest, MissingAndBrokenImagesAreLocatedErrors) {
                                              (dir / "textures" / "quadrants.png").string() + ": "),
                   std::string::npos)
             << e.what();
+    }
+    fs::remove_all(dir);
+}
+
+TEST_F(TextureRenderTest, ManyTexturesOfDifferentSizes) {
+    // Two quads side by side, each with its own texture (5×3 magenta, 2×7 cyan: odd sizes, so
+    // every mip level has a different shape), plus the 8×8 one unused by any object: each quad
+    // must find its own texels in the shared buffer.
+    const fs::path dir = scratch();
+    auto uniform = [&](const std::string& name, int w, int h, std::array<unsigned char, 3> rgb) {
+        std::vector<unsigned char> px;
+        for (int i = 0; i < w * h; ++i) px.insert(px.end(), rgb.begin(), rgb.end());
+        auto out = OIIO::ImageOutput::create((dir / "textures" / name).string());
+        ASSERT_TRUE(out);
+        ASSERT_TRUE(out->open((dir / "textures" / name).string(), OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::UINT8)));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px.data()));
+        out->close();
+    };
+    writeQuadrantsPng(dir / "textures" / "quadrants.png");
+    uniform("magenta.png", 5, 3, {255, 0, 255});
+    uniform("cyan.png", 2, 7, {0, 255, 255});
+    std::ofstream(dir / "two.json") << R"({
+      "camera": { "position": [0, 0, 2], "look_at": [0, 0, 0], "fov": 40 },
+      "render": { "width": 16, "height": 16, "spp": 4, "max_bounces": 1, "rr_depth": 100, "tone_map": "clamp" },
+      "sky": { "type": "constant", "color": 1 },
+      "materials": { "a": { "albedo": 1, "albedo_texture": "textures/quadrants.png" },
+                     "b": { "albedo": 1, "albedo_texture": "textures/magenta.png" },
+                     "c": { "albedo": [1, 0.5, 1], "albedo_texture": "textures/cyan.png" } },
+      "objects": [
+        { "type": "mesh", "material": "b", "positions": [-1,-1,0, 0,-1,0, 0,1,0, -1,1,0],
+          "indices": [0,1,2, 0,2,3], "uvs": [0,0, 1,0, 1,1, 0,1] },
+        { "type": "mesh", "material": "c", "positions": [0,-1,0, 1,-1,0, 1,1,0, 0,1,0],
+          "indices": [0,1,2, 0,2,3], "uvs": [0,0, 1,0, 1,1, 0,1] },
+        { "type": "sphere", "center": [0, 0, 50], "radius": 1, "material": "a" } ] })";
+    const Scene scene = loadScene(dir / "two.json");
+    ASSERT_EQ(scene.textures.size(), 3u);
+    const Image image = test::render(scene);
+    for (int y : {2, 8, 13}) {
+        EXPECT_NEAR(image.rgb(3, y)[0], 1.0f, 1e-5f);
+        EXPECT_NEAR(image.rgb(3, y)[1], 0.0f, 1e-5f);
+        EXPECT_NEAR(image.rgb(3, y)[2], 1.0f, 1e-5f);
+        EXPECT_NEAR(image.rgb(12, y)[0], 0.0f, 1e-5f);
+        EXPECT_NEAR(image.rgb(12, y)[1], 0.5f, 1e-5f) << "albedo multiplies the texture";
+        EXPECT_NEAR(image.rgb(12, y)[2], 1.0f, 1e-5f);
     }
     fs::remove_all(dir);
 }
