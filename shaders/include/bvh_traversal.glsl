@@ -42,8 +42,9 @@ RL_FN vec3 nodeMin(GpuBvhNode n) { return vec3(n.boundsMin.x, n.boundsMin.y, n.b
 RL_FN vec3 nodeMax(GpuBvhNode n) { return vec3(n.boundsMax.x, n.boundsMax.y, n.boundsMax.z); }
 
 #ifdef RAYLAB_FEATURE_MESHES
-// Nearest triangle of one mesh in (0, rec.t), in the mesh's object space; updates rec.
-RL_FN bool traverseMesh(Ray ray, uint instance, uint root, bool anyHit, RL_INOUT(TraceRecord) rec) {
+// Nearest triangle of one mesh in (0, rec.t), in the mesh's object space; updates rec. The
+// object-space ray starts tOffset further along than the world ray (see intersectInstance).
+RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool anyHit, RL_INOUT(TraceRecord) rec) {
     vec3 invDir = safeInverseDir(ray.dir);
     bool found = false;
     uint stack[BVH_STACK_SIZE];
@@ -54,7 +55,7 @@ RL_FN bool traverseMesh(Ray ray, uint instance, uint root, bool anyHit, RL_INOUT
         GpuBvhNode n = meshNode(node);
         RL_COUNT_BOX();
         bool descended = false;
-        if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t) >= 0.0f) {
+        if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t - tOffset) >= 0.0f) {
             if (n.info.w == 0u) {
                 for (uint i = n.info.x; i < n.info.x + n.info.y; ++i) {
                     GpuTriangle tri = triangleAt(i);
@@ -62,8 +63,8 @@ RL_FN bool traverseMesh(Ray ray, uint instance, uint root, bool anyHit, RL_INOUT
                     TriangleHit h;
                     if (intersectTriangle(ray, xyzOf(vertexAt(tri.vertices.x).positionU),
                                           xyzOf(vertexAt(tri.vertices.y).positionU),
-                                          xyzOf(vertexAt(tri.vertices.z).positionU), rec.t, h)) {
-                        rec = TraceRecord(h.t, instance, i, h.b1, h.b2);
+                                          xyzOf(vertexAt(tri.vertices.z).positionU), rec.t - tOffset, h)) {
+                        rec = TraceRecord(h.t + tOffset, instance, i, h.b1, h.b2);
                         found = true;
                         if (anyHit) break;
                     }
@@ -104,10 +105,16 @@ RL_FN bool intersectInstance(Ray ray, uint i, bool anyHit, RL_INOUT(TraceRecord)
 #endif
 #ifdef RAYLAB_FEATURE_MESHES
     if (inst.info.x == INSTANCE_MESH) {
-        // Into object space; the direction is not renormalised, so t carries over.
-        Ray local = Ray(transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin),
-                        transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir));
-        if (traverseMesh(local, i, inst.info.y, anyHit, rec)) found = true;
+        // Into object space; the direction is not renormalised, so t carries over. The transformed
+        // origin is only known within its rounding error: move it forward along the ray to the
+        // edge of that error box, so a surface the world ray starts on is not met again, and
+        // shorten the interval by as much (pbrt-v4 Transform::operator()(Ray), §6.8.6).
+        vec3 o = transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin);
+        vec3 d = transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir);
+        vec3 oError = transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin,
+                                          vec3(0.0f));
+        float dt = dot(abs(d), oError) / dot(d, d);
+        if (dt < rec.t && traverseMesh(Ray(o + dt * d, d), dt, i, inst.info.y, anyHit, rec)) found = true;
     }
 #endif
     return found;
@@ -219,7 +226,11 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     vec3 pObj = triangleHitPoint(h, p0, p1, p2);
     vec3 eObj = triangleHitError(h, p0, p1, p2);
     s.position = transformPoint(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, pObj);
-    s.error = transformPointError(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, pObj, eObj);
+    // A ray leaving this point is transformed back into object space (intersectInstance), which
+    // rounds its origin again; the bound includes that error too, so the offset clears both.
+    vec3 eBack = transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, s.position,
+                                     vec3(0.0f));
+    s.error = transformPointError(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, pObj, eObj + eBack);
     s.normal = normalize(transformNormal(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2,
                                          cross(p1 - p0, p2 - p0)));
     s.shadingNormal = s.normal;

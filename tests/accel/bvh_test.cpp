@@ -96,15 +96,20 @@ Reference bruteForce(const SceneGeometry& g, const Scene& scene, glsl::Ray ray, 
             continue;
         }
         const std::size_t m = std::size_t(std::find(g.meshRoot.begin(), g.meshRoot.end(), inst.info.y) - g.meshRoot.begin());
-        const glsl::Ray local(glsl::transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin),
-                              glsl::transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir));
+        // The same object-space ray as the traversal: origin moved past its rounding error by dt.
+        const glm::vec3 o = glsl::transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin);
+        const glm::vec3 d = glsl::transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir);
+        const glm::vec3 oError = glsl::transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2,
+                                                          ray.origin, glm::vec3(0.0f));
+        const float dt = glm::dot(glm::abs(d), oError) / glm::dot(d, d);
+        const glsl::Ray local(o + dt * d, d);
         for (std::uint32_t k = 0; k < scene.meshes[m].triangles.size(); ++k) {
             const std::uint32_t ti = firstTriangle[m] + k;
             const glm::uvec4 v = g.triangles[ti].vertices;
             glsl::TriangleHit h{};
             if (glsl::intersectTriangle(local, glm::vec3(g.vertices[v.x].positionU), glm::vec3(g.vertices[v.y].positionU),
-                                        glm::vec3(g.vertices[v.z].positionU), r.rec.t, h)) {
-                r.rec = glsl::TraceRecord(h.t, i, ti, h.b1, h.b2);
+                                        glm::vec3(g.vertices[v.z].positionU), r.rec.t - dt, h)) {
+                r.rec = glsl::TraceRecord(h.t + dt, i, ti, h.b1, h.b2);
                 r.hit = true;
             }
         }
