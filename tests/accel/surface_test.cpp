@@ -57,7 +57,9 @@ TEST(SurfaceAt, SphereUvIsLongitudeAndLatitude) {
         glsl::TraceRecord rec{};
         ASSERT_TRUE(glsl::traceScene(ray, glsl::FLOAT_MAX, false, rec));
         const glsl::SurfaceHit s = glsl::surfaceAt(ray, rec);
-        if (std::abs(k.side.y) < 0.5f) EXPECT_NEAR(s.uv.x, k.uv.x, 1e-4f) << k.side.x << k.side.y << k.side.z;
+        if (std::abs(k.side.y) < 0.5f) {   // at the poles u is arbitrary
+            EXPECT_NEAR(s.uv.x, k.uv.x, 1e-4f) << k.side.x << k.side.y << k.side.z;
+        }
         EXPECT_NEAR(s.uv.y, k.uv.y, 1e-3f) << k.side.x << k.side.y << k.side.z;
     }
     glsl::cpuTraversal.geometry = nullptr;
