@@ -186,6 +186,7 @@ struct SurfaceHit {
     vec2 uv;
     uint material;
     float lodBase;   // ½·log2(uv area / world area) around the hit, for ray-cone texture LOD
+    vec3 tangent;    // ∂p/∂u in world space (normal maps' tangent frame); 0 where undefined
 };
 
 RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
@@ -193,6 +194,7 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     SurfaceHit s;
     s.material = inst.info.z;
     s.lodBase = 0.0f;
+    s.tangent = vec3(0.0f);
 #ifdef RAYLAB_FEATURE_SPHERES
     if (inst.info.x == INSTANCE_SPHERE) {
         GpuSphere sp = sphereAt(rec.primitive);
@@ -210,6 +212,7 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
         // du·dv = dθ·dφ / (2π²) against dA = r²·sinθ·dθ·dφ.
         float sinTheta = max(sqrt(max(0.0f, 1.0f - s.normal.y * s.normal.y)), 1e-6f);
         s.lodBase = 0.5f * log2(1.0f / (2.0f * PI * PI * r * r * sinTheta));
+        s.tangent = vec3(-s.normal.z, 0.0f, s.normal.x);   // direction of growing u (longitude)
 #endif
         return s;
     }
@@ -251,6 +254,11 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     vec3 w2 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p2 - p0);
     float uvArea = abs((t1.x - t0.x) * (t2.y - t0.y) - (t2.x - t0.x) * (t1.y - t0.y));
     s.lodBase = 0.5f * log2(max(uvArea, 1e-30f) / max(length(cross(w1, w2)), 1e-30f));
+    // ∂p/∂u from the uv differences of the edges (pbrt-v4 Triangle::InteractionFromIntersection).
+    vec2 duv1 = t1 - t0;
+    vec2 duv2 = t2 - t0;
+    float uvDet = duv1.x * duv2.y - duv1.y * duv2.x;
+    if (uvDet != 0.0f) s.tangent = (duv2.y * w1 - duv1.y * w2) / uvDet;
 #endif
 #endif
     return s;

@@ -50,6 +50,19 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             albedo *= sampleTexture(tex, hit.uv, lod).rgb;
 #endif
         }
+        uint normalTexture = materialNormalTexture(hit.material);
+        if (normalTexture > 0u) {
+            // Tangent-space normal map: rgb in [0, 1] encodes (x, y, z) in [-1, 1] in the frame
+            // (∂p/∂u, bitangent, shading normal), ∂p/∂u made orthogonal to the normal first.
+            GpuTexture tex = textureRecord(normalTexture - 1u);
+            float cosine = dot(hit.normal, ray.dir) / length(ray.dir);
+            vec3 m = 2.0f * sampleTexture(tex, hit.uv, rayConeLod(tex, hit.lodBase, coneWidth, cosine)).rgb - 1.0f;
+            vec3 t = hit.tangent - dot(hit.tangent, hit.shadingNormal) * hit.shadingNormal;
+            if (dot(t, t) > 0.0f && dot(m, m) > 0.0f) {
+                t = normalize(t);
+                hit.shadingNormal = normalize(m.x * t + m.y * cross(hit.shadingNormal, t) + m.z * hit.shadingNormal);
+            }
+        }
 #endif
 
         // Lambert, cosine-weighted: f·cosθ/pdf = (ρ/π)·cosθ / (cosθ/π) = ρ.

@@ -17,6 +17,7 @@ struct Hit {
     vec3 shadingNormal;   // interpolated vertex normal (smooth shading); = normal without one
     vec2 uv;
     float lodBase;        // ½·log2(uv area / world area), for texture LOD (texture.glsl)
+    vec3 tangent;         // ∂p/∂u, world space (normal maps)
 };
 
 bool intersectScene(Ray ray, out Hit hit) {
@@ -31,6 +32,7 @@ bool intersectScene(Ray ray, out Hit hit) {
     hit.shadingNormal = s.shadingNormal;
     hit.uv = s.uv;
     hit.lodBase = s.lodBase;
+    hit.tangent = s.tangent;
     return true;
 }
 

@@ -4,7 +4,8 @@
 #define RAYLAB_SCENE_TEXTURES_GLSL
 
 layout(std430, binding = 14) readonly buffer TextureTexelBuffer { vec4 textureTexels[]; };
-// [0].x = number of materials M; [1 + m].x = material m's albedo texture + 1 (0 = none);
+// [0].x = number of materials M; [1 + m].x = material m's albedo texture + 1 (0 = none), .y its
+// normal map + 1;
 // [1 + M + k] = texture k (GpuTexture.info: offset, width, height, levels).
 layout(std430, binding = 15) readonly buffer TextureInfoBuffer { uvec4 textureInfo[]; };
 
@@ -14,6 +15,8 @@ vec4 texelAt(uint i) { return textureTexels[i]; }
 
 // 0 when the material has no albedo texture, else the texture's index + 1.
 uint materialAlbedoTexture(uint material) { return textureInfo[1u + material].x; }
+
+uint materialNormalTexture(uint material) { return textureInfo[1u + material].y; }
 
 GpuTexture textureRecord(uint k) { return GpuTexture(textureInfo[1u + textureInfo[0].x + k]); }
 

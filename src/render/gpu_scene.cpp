@@ -52,7 +52,8 @@ void GpuScene::upload(const Scene& scene) {
     std::vector<glm::vec4> texels;
     std::vector<glm::uvec4> info;
     info.emplace_back(unsigned(scene.materials.size()), 0u, 0u, 0u);
-    for (const Material& m : scene.materials) info.emplace_back(unsigned(m.albedoTextureIndex + 1), 0u, 0u, 0u);
+    for (const Material& m : scene.materials)
+        info.emplace_back(unsigned(m.albedoTextureIndex + 1), unsigned(m.normalTextureIndex + 1), 0u, 0u);
     for (const Texture& t : scene.textures) {
         info.emplace_back(unsigned(texels.size()), unsigned(t.levels[0].width), unsigned(t.levels[0].height),
                           unsigned(t.levels.size()));

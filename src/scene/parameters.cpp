@@ -279,7 +279,7 @@ const std::vector<std::string_view>& meshKeys() {
 }
 
 const std::vector<std::string_view>& materialFileKeys() {
-    static const std::vector<std::string_view> keys = {"albedo_texture"};
+    static const std::vector<std::string_view> keys = {"albedo_texture", "normal_texture"};
     return keys;
 }
 

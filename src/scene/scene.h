@@ -46,6 +46,8 @@ struct Material {
     float emissionStrength = 0.0f;   // multiplies emission; radiance = emission × strength
     std::string albedoTexture;       // image file as written in the scene ("" = none); multiplies albedo
     int albedoTextureIndex = -1;     // into Scene::textures
+    std::string normalTexture;       // tangent-space normal map ("" = none), read as linear data
+    int normalTextureIndex = -1;     // into Scene::textures
     glm::vec3 radiance() const { return emission * emissionStrength; }
 };
 

@@ -333,18 +333,19 @@ struct PendingMesh {
 
 // An image file for a material (relative to the scene's directory), loaded once per path.
 int readTexture(const Json& v, const Path& p, const std::filesystem::path& sceneDir, std::vector<Texture>& textures,
-                std::string& given) {
+                std::string& given, bool linearData = false) {
     if (!v.is_string() || v.get_ref<const std::string&>().empty())
         fail(p, "expected the path of an image file (a string), got " + typeOf(v));
     given = v.get<std::string>();
     const std::filesystem::path path =
         std::filesystem::path(given).is_absolute() ? std::filesystem::path(given) : sceneDir / given;
+    const std::string key = (linearData ? "linear:" : "srgb:") + given;   // one file, two decodings
     for (std::size_t i = 0; i < textures.size(); ++i)
-        if (textures[i].file == given) return int(i);
+        if (textures[i].file == key) return int(i);
     if (!std::filesystem::is_regular_file(path)) fail(p, path.string() + ": cannot read: no such file");
     try {
-        Texture t = loadTexture(path);
-        t.file = given;
+        Texture t = loadTexture(path, linearData);
+        t.file = key;
         textures.push_back(std::move(t));
     } catch (const TextureError& e) {
         fail(p, e.what());
@@ -505,6 +506,10 @@ void validate(const Json& root, Scene& scene) {
                 mat.albedoTextureIndex = readTexture(m["albedo_texture"], p.key(name).key("albedo_texture"),
                                                      scene.sourcePath.parent_path(), scene.textures,
                                                      mat.albedoTexture);
+            if (m.contains("normal_texture"))
+                mat.normalTextureIndex = readTexture(m["normal_texture"], p.key(name).key("normal_texture"),
+                                                     scene.sourcePath.parent_path(), scene.textures,
+                                                     mat.normalTexture, true);
             materials.push_back(std::move(mat));
         }
     }
@@ -853,6 +858,7 @@ nlohmann::json sceneToJson(const Scene& scene) {
         nlohmann::json mj = nlohmann::json::object();
         for (const MaterialParamSpec& spec : materialParameters()) mj[std::string(spec.key)] = valueJson(spec, m);
         if (!m.albedoTexture.empty()) mj["albedo_texture"] = m.albedoTexture;
+        if (!m.normalTexture.empty()) mj["normal_texture"] = m.normalTexture;
         materials[m.name] = mj;
     }
     j["materials"] = materials;

@@ -39,7 +39,7 @@ std::vector<MipLevel> buildMipPyramid(MipLevel base) {
     return levels;
 }
 
-Texture loadTexture(const std::filesystem::path& path) {
+Texture loadTexture(const std::filesystem::path& path, bool linearData) {
     using namespace OIIO;
     const std::string name = path.string();
     auto in = ImageInput::open(name);
@@ -54,7 +54,7 @@ Texture loadTexture(const std::filesystem::path& path) {
     std::vector<float> raw(std::size_t(w) * std::size_t(h) * std::size_t(c));
     if (!in->read_image(0, 0, 0, c, TypeDesc::FLOAT, raw.data()))
         throw TextureError(name + ": " + in->geterror());
-    const bool encoded = !spec.format.is_floating_point();
+    const bool encoded = !linearData && !spec.format.is_floating_point();
     MipLevel base;
     base.width = w;
     base.height = h;

@@ -23,12 +23,13 @@ struct MipLevel {
 };
 
 struct Texture {
-    std::string file;               // as written in the scene
+    std::string file;               // "srgb:" or "linear:" + the path as written in the scene
     std::vector<MipLevel> levels;   // levels[0] is the image
 };
 
-// Reads the file; the message of a TextureError starts with the path.
-Texture loadTexture(const std::filesystem::path& path);
+// Reads the file; the message of a TextureError starts with the path. `linearData`: 8/16-bit
+// values are taken as they are (normal maps), not decoded from sRGB.
+Texture loadTexture(const std::filesystem::path& path, bool linearData = false);
 // Builds the pyramid from one level (used by loadTexture; public for tests and generated textures).
 std::vector<MipLevel> buildMipPyramid(MipLevel base);
 

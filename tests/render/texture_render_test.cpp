@@ -2,6 +2,7 @@
 // samples it at the hit's uv.
 #include "render_helpers.h"
 #include "support/gl_test.h"
+#include "support/statistics.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -135,5 +136,47 @@ TEST_F(TextureRenderTest, ManyTexturesOfDifferentSizes) {
         EXPECT_NEAR(image.rgb(12, y)[1], 0.5f, 1e-5f) << "albedo multiplies the texture";
         EXPECT_NEAR(image.rgb(12, y)[2], 1.0f, 1e-5f);
     }
+    fs::remove_all(dir);
+}
+
+TEST_F(TextureRenderTest, NormalMapChangesShadingAsPredicted) {
+    // A quad facing the camera (+z) under a sky whose radiance is (d.y + 1) / 2, albedo 1, one
+    // bounce. A normal map tilting every normal towards +v (= +y) by asin 0.6 makes the cosine
+    // lobe look up: the pixel value is ∫ cosθ'/π · [d.z > 0] · (d.y + 1)/2 dω around the tilted
+    // normal (directions under the quad end the path), integrated numerically here.
+    const fs::path dir = scratch();
+    {
+        std::vector<float> px;
+        for (int i = 0; i < 4 * 4; ++i) px.insert(px.end(), {0.5f, 0.8f, 0.9f});   // n = (0, 0.6, 0.8)
+        auto out = OIIO::ImageOutput::create((dir / "textures" / "tilt.exr").string());
+        ASSERT_TRUE(out);
+        ASSERT_TRUE(out->open((dir / "textures" / "tilt.exr").string(), OIIO::ImageSpec(4, 4, 3, OIIO::TypeDesc::FLOAT)));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+        out->close();
+    }
+    std::ofstream(dir / "nm.json") << R"({
+      "camera": { "position": [0, 0, 2], "look_at": [0, 0, 0], "fov": 40 },
+      "render": { "width": 16, "height": 16, "spp": 256, "max_bounces": 1, "rr_depth": 100, "tone_map": "clamp" },
+      "sky": { "type": "gradient", "top": 1, "bottom": 0 },
+      "materials": { "bumpy": { "albedo": 1, "normal_texture": "textures/tilt.exr" } },
+      "objects": [ { "type": "mesh", "material": "bumpy",
+        "positions": [-1,-1,0, 1,-1,0, 1,1,0, -1,1,0], "indices": [0,1,2, 0,2,3], "uvs": [0,0, 1,0, 1,1, 0,1] } ] })";
+    const Scene scene = loadScene(dir / "nm.json");
+    const Image image = test::render(scene);
+    // Prediction: midpoint rule over (θ', φ') around n = (0, 0.6, 0.8).
+    const glm::dvec3 n(0.0, 0.6, 0.8), t(1.0, 0.0, 0.0), b = glm::cross(n, t);
+    double expected = 0.0;
+    const int steps = 1000;
+    for (int i = 0; i < steps; ++i)
+        for (int j = 0; j < steps; ++j) {
+            const double th = (i + 0.5) * (M_PI / 2) / steps, ph = (j + 0.5) * 2 * M_PI / steps;
+            const glm::dvec3 d = std::sin(th) * std::cos(ph) * t + std::sin(th) * std::sin(ph) * b + std::cos(th) * n;
+            if (d.z <= 0.0) continue;
+            expected += std::cos(th) / M_PI * (d.y + 1.0) / 2.0 * std::sin(th) * (M_PI / 2 / steps) * (2 * M_PI / steps);
+        }
+    const std::vector<double> v = test::channel(image, 1);
+    const double m = test::mean(v), se = test::standardError(v);
+    EXPECT_NEAR(m, expected, 4.0 * se) << "expected " << expected;
+    EXPECT_GT(expected - 0.5, 20.0 * se) << "the map must make a visible difference from the flat 0.5";
     fs::remove_all(dir);
 }
