@@ -4,7 +4,7 @@
 set -eu
 PACKAGES="cmake g++ make pkg-config python3-glad
   libglm-dev libopenimageio-dev openimageio-tools libosmesa6-dev libegl-dev libegl-mesa0
-  nlohmann-json3-dev libcli11-dev libgtest-dev libmd4c-dev
+  nlohmann-json3-dev libcli11-dev libgtest-dev libmd4c-dev libtinyobjloader-dev libtinygltf-dev
   libglfw3-dev libimgui-dev xvfb"
 missing=""
 for p in $PACKAGES; do

@@ -1,10 +1,13 @@
 #version 450 core
 // Compute entry of the path tracer: one invocation per pixel.
 // Defines set by the host: LOCAL_SIZE_X, LOCAL_SIZE_Y (work-group size; llvmpipe runs 8 lanes
-// along x, so LOCAL_SIZE_X should be a multiple of 8).
+// along x, so LOCAL_SIZE_X should be a multiple of 8); RAYLAB_FEATURES_SPECIALISED and the scene's
+// RAYLAB_FEATURE_SPHERES, RAYLAB_FEATURE_MESHES, RAYLAB_FEATURE_SMOOTH_NORMALS, RAYLAB_FEATURE_DOF
+// (render/shader_variant.cpp, include/features.glsl).
 // Optional, set by the host from the scene: RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (a
 // material has f0 > 0 or transmission > 0), RAYLAB_SKY_MAP (sky.type map); see integrator.glsl.
 // Optional, tests only: RAYLAB_INJECT_NONFINITE=N (every N-th sample becomes NaN or Inf).
+// Optional, debug: RAYLAB_COUNT_TRAVERSAL (boxes and triangles tested, include/scene_geometry.glsl).
 #include "../include/path_tracer.glsl"
 
 layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y) in;

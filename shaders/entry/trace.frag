@@ -1,10 +1,13 @@
 #version 450 core
 // Fragment entry of the path tracer: a full-screen triangle, one fragment per pixel, drawn into
 // a framebuffer with no attachments; results go to uAccum by imageStore.
-// Defines set by the host: none (the scene's data arrives in buffers and uniforms).
-// Optional, set by the host from the scene: RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (a
-// material has f0 > 0 or transmission > 0), RAYLAB_SKY_MAP (sky.type map); see integrator.glsl.
+// Defines set by the host: RAYLAB_FEATURES_SPECIALISED and the scene's RAYLAB_FEATURE_SPHERES,
+// RAYLAB_FEATURE_MESHES, RAYLAB_FEATURE_SMOOTH_NORMALS, RAYLAB_FEATURE_DOF
+// (render/shader_variant.cpp, include/features.glsl); the scene's data arrives in buffers and uniforms.
+// Also from the scene: RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (a material has f0 > 0 or
+// transmission > 0), RAYLAB_SKY_MAP (sky.type map); see integrator.glsl.
 // Optional, tests only: RAYLAB_INJECT_NONFINITE=N (every N-th sample becomes NaN or Inf).
+// Optional, debug: RAYLAB_COUNT_TRAVERSAL (boxes and triangles tested, include/scene_geometry.glsl).
 #include "../include/path_tracer.glsl"
 
 void main() {

@@ -13,6 +13,10 @@
 #include "scene_data.glsl"
 #include "environment_sampling.glsl"
 #include "scene_intersect.glsl"
+#include "features.glsl"
+#ifdef RAYLAB_FEATURE_TEXTURES
+#include "scene_textures.glsl"
+#endif
 
 // Radiance from the sky along a unit direction: the image texel it falls in (nearest, so the
 // radiance is piecewise constant over texels), or the analytic skies.
@@ -86,6 +90,11 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
     float prevPdf = 0.0f;      // BSDF density of the direction just followed
     bool prevDelta = true;     // camera rays and delta bounces: light sampling could not help
     vec3 prevPos = vec3(0.0f);
+#ifdef RAYLAB_FEATURE_TEXTURES
+    // Ray cone (Ray Tracing Gems ch. 20, §20.3.4): width grows by the pixel's spread angle per
+    // unit distance; diffuse bounces keep that spread (a simplification that under-blurs).
+    float coneWidth = 0.0f;
+#endif
     for (int bounce = 0;; ++bounce) {
         Hit hit;
         ++rays;
@@ -114,10 +123,45 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
         }
         if (bounce >= uMaxBounces) break;
+        vec3 albedo = m.albedo.rgb;
+#ifdef RAYLAB_FEATURE_TEXTURES
+        coneWidth += uCamPixelSpread * hit.t * length(ray.dir);
+        uint albedoTexture = materialAlbedoTexture(hit.material);
+        if (albedoTexture > 0u) {
+            GpuTexture tex = textureRecord(albedoTexture - 1u);
+            float cosine = dot(hit.normal, ray.dir) / length(ray.dir);
+            float lod = rayConeLod(tex, hit.lodBase, coneWidth, cosine);
+#ifdef RAYLAB_SHOW_MIP_LEVEL
+            // Debug view: the level as a colour ramp (0 blue, 4 green, 8+ red).
+            albedo = clamp(vec3(lod / 4.0f - 1.0f, 1.0f - abs(lod / 4.0f - 1.0f), 1.0f - lod / 4.0f), 0.0f, 1.0f);
+#else
+            albedo *= sampleTexture(tex, hit.uv, lod).rgb;
+#endif
+        }
+        uint normalTexture = materialNormalTexture(hit.material);
+        if (normalTexture > 0u) {
+            // Tangent-space normal map: rgb in [0, 1] encodes (x, y, z) in [-1, 1] in the frame
+            // (∂p/∂u, bitangent, shading normal), ∂p/∂u made orthogonal to the normal first.
+            GpuTexture tex = textureRecord(normalTexture - 1u);
+            float cosine = dot(hit.normal, ray.dir) / length(ray.dir);
+            vec3 m = 2.0f * sampleTexture(tex, hit.uv, rayConeLod(tex, hit.lodBase, coneWidth, cosine)).rgb - 1.0f;
+            vec3 t = hit.tangent - dot(hit.tangent, hit.shadingNormal) * hit.shadingNormal;
+            if (dot(t, t) > 0.0f && dot(m, m) > 0.0f) {
+                t = normalize(t);
+                hit.shadingNormal = normalize(m.x * t + m.y * cross(hit.shadingNormal, t) + m.z * hit.shadingNormal);
+            }
+        }
+#endif
 
         BsdfParams bsdf = materialBsdf(m);
-        Frame frame = frameFromNormal(hit.normal);   // outward normal: the BSDF tells the sides
+        bsdf.albedo = albedo;   // textured
+        // The BSDF works in the shading frame (smooth or normal-mapped normals), turned to the
+        // geometric normal's side; it tells inside from outside by the sign of wo.z.
+        vec3 ns = dot(hit.shadingNormal, hit.normal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
+        Frame frame = frameFromNormal(ns);
         vec3 wo = frameToLocal(frame, -normalize(ray.dir));
+        // Which side of the true (geometric) surface the path arrived on.
+        float arrivalSide = dot(-ray.dir, hit.normal);
 
 #ifdef RAYLAB_NEE
         // Next-event estimation: one light, picked uniformly, sampled by solid angle.
@@ -152,6 +196,9 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             misPdf /= float(lightCount);
             vec3 wiL = frameToLocal(frame, wiW);
             vec3 f = lightPdf > 0.0f ? bsdfEval(bsdf, wo, wiL) : vec3(0.0f);
+            // A direction the shading frame calls reflected but the geometry calls transmitted
+            // (or the reverse) would leak light through the surface: drop it.
+            if ((wiL.z * wo.z > 0.0f) != (dot(wiW, hit.normal) * arrivalSide > 0.0f)) f = vec3(0.0f);
             if (max(f.r, max(f.g, f.b)) > 0.0f) {
                 vec3 side = dot(wiW, hit.normal) > 0.0f ? hit.normal : -hit.normal;
                 Ray shadow = Ray(offsetRayOrigin(hit.position, side, hit.error), wiW);
@@ -162,7 +209,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                     tMax = t > 0.0f ? t * (1.0f - 1e-4f) : -1.0f;
                 }
                 ++rays;
-                if (tMax > 0.0f && !occludedScene(shadow, tMax)) {
+                if (tMax > 0.0f && !occluded(shadow, tMax)) {
                     float w = uMis ? powerHeuristic(misPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
                     RAYLAB_ADD_RADIANCE(radiance, bounce + 1, beta * f * Ll * (w / lightPdf));
                 }
@@ -189,8 +236,10 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         }
 #endif
         if (bs.lobe == LOBE_NONE) break;
-        beta *= bs.weight;
         vec3 dir = frameToWorld(frame, bs.wi);
+        // As for light samples: the geometric surface must agree with the lobe's side.
+        if ((bs.wi.z * wo.z > 0.0f) != (dot(dir, hit.normal) * arrivalSide > 0.0f)) break;
+        beta *= bs.weight;
         prevPdf = bs.pdf;
         prevDelta = bs.delta;
         prevPos = hit.position;

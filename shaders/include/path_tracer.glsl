@@ -3,6 +3,7 @@
 #ifndef RAYLAB_PATH_TRACER_GLSL
 #define RAYLAB_PATH_TRACER_GLSL
 #include "compat.glsl"
+#include "features.glsl"
 #include "random.glsl"
 #include "camera.glsl"
 #include "scene_data.glsl"
@@ -24,10 +25,15 @@ void tracePixelPass(ivec2 pixel) {
         Rng rng = rngCreate(uvec2(pixel), uSampleStart + uint(s), uSeed);
         // A fresh jittered position inside the pixel for every sample (box filter).
         vec2 ndc = (vec2(pixel) + rngNext2(rng)) / vec2(uImageSize) * 2.0f - 1.0f;
-#ifdef RAYLAB_DEBUG_VIEWS
-        vec3 L = debugSample(cameraRay(cam, ndc), rng, rays);
+#ifdef RAYLAB_FEATURE_DOF
+        Ray cameraPath = cameraRayThinLens(cam, ndc, rngNext2(rng), uCamLensRadius, uCamFocusDistance);
 #else
-        vec3 L = traceRadiance(cameraRay(cam, ndc), rng, rays);
+        Ray cameraPath = cameraRay(cam, ndc);
+#endif
+#ifdef RAYLAB_DEBUG_VIEWS
+        vec3 L = debugSample(cameraPath, rng, rays);
+#else
+        vec3 L = traceRadiance(cameraPath, rng, rays);
 #endif
 #ifdef RAYLAB_INJECT_NONFINITE
         // Tests only: every RAYLAB_INJECT_NONFINITE-th sample of a row becomes NaN or +Inf.
@@ -56,6 +62,10 @@ void tracePixelPass(ivec2 pixel) {
 #endif
     if (nonFinite > 0u) atomicAdd(nonFiniteSamples, nonFinite);
     atomicAdd(raysTraced, rays);
+#ifdef RAYLAB_COUNT_TRAVERSAL
+    atomicAdd(boxTestsTotal, gBoxTests);
+    atomicAdd(triangleTestsTotal, gTriangleTests);
+#endif
 }
 
 #endif

@@ -32,6 +32,9 @@ uniform vec3 uCamUp;
 uniform vec3 uCamForward;
 uniform float uCamTanHalfFovY;
 uniform float uCamAspect;
+uniform float uCamLensRadius;      // thin lens (RAYLAB_FEATURE_DOF): lens radius, world units
+uniform float uCamFocusDistance;   // distance of the sharp plane along the view axis
+uniform float uCamPixelSpread;     // angle one pixel subtends (ray-cone texture LOD), radians
 uniform int uSkyType;
 uniform vec3 uSkyColor;
 uniform vec3 uSkyTop;

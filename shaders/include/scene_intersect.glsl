@@ -1,46 +1,42 @@
-// Nearest hit of a ray against the scene's geometry. GLSL only.
+// Nearest hit of a ray against the scene's geometry, and shadow-ray occlusion, through the
+// two-level BVH (bvh_traversal.glsl). GLSL only.
 #ifndef RAYLAB_SCENE_INTERSECT_GLSL
 #define RAYLAB_SCENE_INTERSECT_GLSL
 #include "compat.glsl"
 #include "ray.glsl"
-#include "sphere.glsl"
 #include "scene_data.glsl"
+#include "scene_geometry.glsl"
+#include "bvh_traversal.glsl"
 
 struct Hit {
     float t;
-    vec3 position;   // on the surface
-    vec3 normal;     // geometric, unit, pointing out of the object
-    vec3 error;      // bound on the position's rounding error, per coordinate
+    vec3 position;        // on the surface
+    vec3 normal;          // geometric, unit, pointing out of the object (sphere) / e01 × e02 side
+    vec3 error;           // bound on the position's rounding error, per coordinate
     uint material;
+    vec3 shadingNormal;   // interpolated vertex normal (smooth shading); = normal without one
+    vec2 uv;
+    float lodBase;        // ½·log2(uv area / world area), for texture LOD (texture.glsl)
+    vec3 tangent;         // ∂p/∂u, world space (normal maps)
 };
 
 bool intersectScene(Ray ray, out Hit hit) {
-    hit.t = FLOAT_MAX;
-    int nearest = -1;
-    for (int i = 0; i < uSphereCount; ++i) {
-        vec4 s = spheres[i].centerRadius;
-        float t = intersectSphere(ray, s.xyz, s.w, 0.0f, hit.t);
-        if (t > 0.0f) {
-            hit.t = t;
-            nearest = i;
-        }
-    }
-    if (nearest < 0) return false;
-    vec4 s = spheres[nearest].centerRadius;
-    hit.position = sphereSurfacePoint(rayAt(ray, hit.t), s.xyz, s.w);
-    hit.normal = normalize(hit.position - s.xyz);
-    hit.error = sphereHitError(s.xyz, s.w);
-    hit.material = spheres[nearest].info.x;
+    TraceRecord rec;
+    if (!traceScene(ray, FLOAT_MAX, false, rec)) return false;
+    SurfaceHit s = surfaceAt(ray, rec);
+    hit.t = rec.t;
+    hit.position = s.position;
+    hit.normal = s.normal;
+    hit.error = s.error;
+    hit.material = s.material;
+    hit.shadingNormal = s.shadingNormal;
+    hit.uv = s.uv;
+    hit.lodBase = s.lodBase;
+    hit.tangent = s.tangent;
     return true;
 }
 
-// Any-hit query for shadow rays: is there geometry along the ray strictly before tMax?
-bool occludedScene(Ray ray, float tMax) {
-    for (int i = 0; i < uSphereCount; ++i) {
-        vec4 s = spheres[i].centerRadius;
-        if (intersectSphere(ray, s.xyz, s.w, 0.0f, tMax) > 0.0f) return true;
-    }
-    return false;
-}
+// Shadow rays: is there any surface in (0, tMax) along the ray (t in units of |ray.dir|)?
+bool occluded(Ray ray, float tMax) { return occludedBvh(ray, tMax); }
 
 #endif

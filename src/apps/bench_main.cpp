@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
     std::string results = "bench/throughput.md";
     std::string variants = "all";
     std::string gl = "auto";
+    std::string specialise = "on";
     int width = 640, height = 360, spp = 8, repeat = 5;
     app.add_option("--scene", scenePath, "Scene file")->capture_default_str();
     app.add_option("--width", width, "Image width")->check(CLI::Range(1, 16384))->capture_default_str();
@@ -63,6 +64,9 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"all", "fragment", "compute"}))->capture_default_str();
     app.add_option("--results", results, "Markdown file the results are appended to ('' = none)")
         ->capture_default_str();
+    app.add_option("--specialise", specialise,
+                   "Shader compiled for the scene's features (on), with every feature (off), or both")
+        ->check(CLI::IsMember({"on", "off", "both"}))->capture_default_str();
     app.add_option("--gl", gl, "OpenGL context: auto, osmesa or egl")
         ->check(CLI::IsMember({"auto", "osmesa", "egl"}))->capture_default_str();
     ConvergenceOptions conv;
@@ -129,12 +133,22 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    std::vector<Variant> list;
-    if (variants != "compute") list.push_back({"fragment", {TracerEntry::Fragment, 8, 8, {}}});
+    std::vector<Variant> entries;
+    if (variants != "compute") entries.push_back({"fragment", {TracerEntry::Fragment, 8, 8, {}}});
     if (variants != "fragment")
         for (auto [x, y] : {std::pair{8, 8}, {16, 8}, {32, 4}})
-            list.push_back({"compute " + std::to_string(x) + "x" + std::to_string(y),
-                            {TracerEntry::Compute, x, y, {}}});
+            entries.push_back({"compute " + std::to_string(x) + "x" + std::to_string(y),
+                               {TracerEntry::Compute, x, y, {}}});
+    std::vector<Variant> list;
+    for (const Variant& e : entries) {
+        if (specialise != "off") list.push_back(e);
+        if (specialise != "on") {
+            Variant all = e;
+            all.label += " all-features";
+            all.options.specialise = false;
+            list.push_back(all);
+        }
+    }
 
     std::ostringstream table;
     std::string glDescription;
@@ -143,7 +157,7 @@ int main(int argc, char** argv) {
         glDescription = context->description();
         std::cerr << "GL: " << glDescription << "\n";
         table << "| variant | Mpaths/s | Mrays/s | ms/pass (rpp " << scene.render.rpp
-              << ") | runs |\n|---|---|---|---|---|\n";
+              << ") | runs | shader (compile s) |\n|---|---|---|---|---|---|\n";
         for (const Variant& v : list) {
             PathTracer tracer(v.options);
             tracer.setScene(scene);
@@ -156,9 +170,10 @@ int main(int argc, char** argv) {
                 rays.push_back(o.last.mraysPerSecond);
                 msPerPass.push_back(1e3 * o.last.elapsed / double(tracer.passes()));
             }
-            char row[256];
-            std::snprintf(row, sizeof row, "| %s | %.2f | %.2f | %.1f | %d |\n", v.label.c_str(),
-                          median(paths), median(rays), median(msPerPass), repeat);
+            char row[512];
+            std::snprintf(row, sizeof row, "| %s | %.2f | %.2f | %.1f | %d | %s (%.2f) |\n", v.label.c_str(),
+                          median(paths), median(rays), median(msPerPass), repeat, tracer.variantName().c_str(),
+                          tracer.compileSeconds());
             table << row;
             std::cerr << row;
         }

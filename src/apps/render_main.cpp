@@ -126,6 +126,9 @@ int main(int argc, char** argv) {
         std::cerr << "raylab-render: error: " << e.what() << "\n";
         return 3;
     }
+    if (!quiet)
+        std::fprintf(stderr, "shader: %s, compiled in %.2f s\n", tracer->variantName().c_str(),
+                     tracer->compileSeconds());
 
     std::signal(SIGINT, onSigint);
     const bool tty = ::isatty(STDERR_FILENO);

@@ -29,11 +29,11 @@ Scene randomSpheres(int n, int width, int height) {
     ball.name = "ball";
     ball.albedo = glm::vec3(0.7f, 0.4f, 0.3f);
     s.materials = {ground, ball};
-    s.spheres.push_back({{0.0f, -1000.0f, 0.0f}, 1000.0f, 0});
+    s.spheres.push_back({{0.0f, -1000.0f, 0.0f}, 1000.0f, 0, {}});
     glsl::Rng rng = glsl::rngCreate(glm::uvec2(1, 2), 3u, 4u);
     for (int i = 1; i < n; ++i) {
         const glm::vec2 u = glsl::rngNext2(rng);
-        s.spheres.push_back({{20.0f * u.x - 10.0f, 0.3f, 20.0f * u.y - 10.0f}, 0.3f, 1});
+        s.spheres.push_back({{20.0f * u.x - 10.0f, 0.3f, 20.0f * u.y - 10.0f}, 0.3f, 1, {}});
     }
     return s;
 }

@@ -19,6 +19,7 @@ constexpr GLuint kLightBinding = 4;
 constexpr GLuint kSkyMapUnit = 4;   // texture unit of uSkyMap
 constexpr GLuint kEnvMarginalBinding = 5;
 constexpr GLuint kEnvConditionalBinding = 6;
+constexpr GLuint kFirstGeometryBinding = 8;   // 8–12, see shaders/include/scene_geometry.glsl
 
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
@@ -34,6 +35,8 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &lightBuffer_);
     glCreateBuffers(1, &envMarginalBuffer_);
     glCreateBuffers(1, &envConditionalBuffer_);
+    glCreateBuffers(5, geometryBuffers_);
+    glCreateBuffers(2, textureBuffers_);
 }
 
 GpuScene::~GpuScene() {
@@ -43,29 +46,59 @@ GpuScene::~GpuScene() {
     glDeleteTextures(1, &skyMapTexture_);
     glDeleteBuffers(1, &envMarginalBuffer_);
     glDeleteBuffers(1, &envConditionalBuffer_);
+    glDeleteBuffers(5, geometryBuffers_);
+    glDeleteBuffers(2, textureBuffers_);
 }
 
 void GpuScene::upload(const Scene& scene) {
-    std::vector<glsl::GpuSphere> spheres;
-    for (const Sphere& s : scene.spheres)
-        spheres.push_back({glm::vec4(s.center, s.radius), glm::uvec4(unsigned(s.material), 0, 0, 0)});
+    geometry_ = buildSceneGeometry(scene);
+    uploadBuffer(geometryBuffers_[1], geometry_.meshNodes);
+    uploadBuffer(geometryBuffers_[3], geometry_.triangles);
+    uploadBuffer(geometryBuffers_[4], geometry_.vertices);
     std::vector<glsl::GpuMaterial> materials;
     for (const Material& m : scene.materials)
         materials.push_back({glm::vec4(m.albedo, m.roughness), glm::vec4(m.radiance(), m.transmission),
                              glm::vec4(m.f0, m.ior)});
-    // Emissive spheres, for next-event estimation.
-    std::vector<glsl::GpuLight> lights;
-    for (const Sphere& s : scene.spheres) {
-        const glm::vec3 radiance = scene.materials[size_t(s.material)].radiance();
-        if (std::max({radiance.r, radiance.g, radiance.b}) > 0.0f)
-            lights.push_back({glm::vec4(s.center, s.radius), glm::vec4(radiance, 0.0f)});
+    materialRadiance_.clear();
+    for (const Material& m : scene.materials) materialRadiance_.push_back(m.radiance());
+    uploadSkyMap(scene.sky);
+    uploadBuffer(materialBuffer_, std::move(materials));
+
+    // Textures: all levels of all textures in one texel array; see shaders/include/scene_textures.glsl.
+    std::vector<glm::vec4> texels;
+    std::vector<glm::uvec4> info;
+    info.emplace_back(unsigned(scene.materials.size()), 0u, 0u, 0u);
+    for (const Material& m : scene.materials)
+        info.emplace_back(unsigned(m.albedoTextureIndex + 1), unsigned(m.normalTextureIndex + 1), 0u, 0u);
+    for (const Texture& t : scene.textures) {
+        info.emplace_back(unsigned(texels.size()), unsigned(t.levels[0].width), unsigned(t.levels[0].height),
+                          unsigned(t.levels.size()));
+        for (const MipLevel& l : t.levels) texels.insert(texels.end(), l.texels.begin(), l.texels.end());
     }
-    sphereCount_ = int(spheres.size());
+    uploadBuffer(textureBuffers_[0], std::move(texels));
+    uploadBuffer(textureBuffers_[1], std::move(info));
+    uploadTopLevel();   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
+}
+
+void GpuScene::updateTransforms(const Scene& scene) {
+    updateTopLevel(geometry_, scene);
+    uploadTopLevel();
+}
+
+void GpuScene::uploadTopLevel() {
+    sphereCount_ = int(geometry_.spheres.size());
+    uploadBuffer(sphereBuffer_, geometry_.spheres);
+    // Emissive spheres, in world space, for next-event estimation.
+    std::vector<glsl::GpuLight> lights;
+    for (const glsl::GpuSphere& s : geometry_.spheres) {
+        const glm::vec3 radiance = materialRadiance_[s.info.x];
+        if (std::max({radiance.r, radiance.g, radiance.b}) > 0.0f)
+            lights.push_back({s.centerRadius, glm::vec4(radiance, 0.0f)});
+    }
     lightCount_ = int(lights.size());
     uploadBuffer(lightBuffer_, std::move(lights));
-    uploadSkyMap(scene.sky);
-    uploadBuffer(sphereBuffer_, std::move(spheres));
-    uploadBuffer(materialBuffer_, std::move(materials));
+    uploadBuffer(geometryBuffers_[0], geometry_.topNodes);
+    uploadBuffer(geometryBuffers_[2], geometry_.instances);
 }
 
 // The sky map as an RGBA32F texture, rows top first as in the file (v = 0 is straight up); a
@@ -97,6 +130,10 @@ void GpuScene::bind() const {
     glBindTextureUnit(kSkyMapUnit, skyMapTexture_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvMarginalBinding, envMarginalBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvConditionalBinding, envConditionalBuffer_);
+    for (GLuint i = 0; i < 5; ++i)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFirstGeometryBinding + i, geometryBuffers_[i]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, textureBuffers_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, textureBuffers_[1]);
 }
 
 } // namespace raylab

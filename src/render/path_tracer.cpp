@@ -6,6 +6,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -19,8 +20,24 @@ int skyType(Sky::Type t) {
 
 } // namespace
 
+ShaderProgram PathTracer::compileVariant(const ShaderDefines& features, const void* self) {
+    const TracerOptions& o = static_cast<const PathTracer*>(self)->options_;
+    ShaderDefines defines = o.extraDefines;
+    defines.insert(defines.end(), features.begin(), features.end());
+    if (o.entry == TracerEntry::Fragment)
+        return ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag", defines);
+    defines.emplace_back("LOCAL_SIZE_X", std::to_string(o.localSizeX));
+    defines.emplace_back("LOCAL_SIZE_Y", std::to_string(o.localSizeY));
+    return ShaderProgram::compute("entry/trace.comp", defines);
+}
+
 PathTracer::PathTracer(TracerOptions options) : options_(options) {
-    buildProgram(Features{});
+    for (const auto& [name, value] : options_.extraDefines) {
+        if (name != "RAYLAB_COUNT_TRAVERSAL") continue;
+        glCreateBuffers(1, &traversalBuffer_);
+        const GLuint zeros[2] = {0, 0};
+        glNamedBufferStorage(traversalBuffer_, sizeof(zeros), zeros, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+    }
     glCreateFramebuffers(1, &framebuffer_);
     glCreateVertexArrays(1, &vertexArray_);
     glCreateBuffers(1, &counterBuffer_);
@@ -34,35 +51,14 @@ PathTracer::~PathTracer() {
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &counterBuffer_);
-}
-
-PathTracer::Features PathTracer::featuresOf(const Scene& scene) {
-    Features f;
-    f.nee = scene.render.nee;
-    for (const Material& m : scene.materials)
-        if (m.transmission > 0.0f || std::max({m.f0.r, m.f0.g, m.f0.b}) > 0.0f) f.generalBsdf = true;
-    f.skyMap = scene.sky.type == Sky::Type::Map;
-    return f;
-}
-
-void PathTracer::buildProgram(Features features) {
-    ShaderDefines defines = options_.extraDefines;
-    if (features.nee) defines.emplace_back("RAYLAB_NEE", "1");
-    if (features.generalBsdf) defines.emplace_back("RAYLAB_GENERAL_BSDF", "1");
-    if (features.skyMap) defines.emplace_back("RAYLAB_SKY_MAP", "1");
-    if (options_.entry == TracerEntry::Fragment) {
-        program_ = ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag", defines);
-    } else {
-        defines.emplace_back("LOCAL_SIZE_X", std::to_string(options_.localSizeX));
-        defines.emplace_back("LOCAL_SIZE_Y", std::to_string(options_.localSizeY));
-        program_ = ShaderProgram::compute("entry/trace.comp", defines);
-    }
-    features_ = features;
+    if (traversalBuffer_) glDeleteBuffers(1, &traversalBuffer_);
 }
 
 std::string PathTracer::variantName() const {
-    if (options_.entry == TracerEntry::Fragment) return "fragment";
-    return "compute " + std::to_string(options_.localSizeX) + "x" + std::to_string(options_.localSizeY);
+    std::string entry = options_.entry == TracerEntry::Fragment
+                            ? "fragment"
+                            : "compute " + std::to_string(options_.localSizeX) + "x" + std::to_string(options_.localSizeY);
+    return entry + " [" + (options_.specialise ? featureName(features_) : "all features") + "]";
 }
 
 void PathTracer::allocateImage(int width, int height) {
@@ -83,13 +79,13 @@ void PathTracer::setScene(const Scene& scene) {
     defaultRpp_ = r.rpp;
 
     gpuScene_.upload(scene);
-    // Scene features are compiled in only when used (render.nee: recompile shader).
-    if (const Features f = featuresOf(scene); !(f == features_)) buildProgram(f);
+    features_ = options_.specialise ? sceneFeatures(scene) : allFeatures();
+    program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
 
     const Camera& c = scene.camera;
     const auto cam = glsl::cameraBasis(c.position, c.lookAt, c.up, c.fovY,
                                        float(r.width) / float(r.height));
-    const ShaderProgram& p = program_;
+    const ShaderProgram& p = *program_;
     p.set("uImageSize", glm::ivec2(r.width, r.height));
     p.set("uSeed", unsigned(r.seed));
     p.set("uMaxBounces", r.maxBounces);
@@ -101,6 +97,12 @@ void PathTracer::setScene(const Scene& scene) {
     p.set("uCamForward", cam.forward);
     p.set("uCamTanHalfFovY", cam.tanHalfFovY);
     p.set("uCamAspect", cam.aspect);
+    p.set("uCamLensRadius", c.aperture);
+    // Ray-cone spread of one pixel (Ray Tracing Gems ch. 20, eq. 30).
+    p.set("uCamPixelSpread", std::atan(2.0f * cam.tanHalfFovY / float(r.height)));
+    // focus_distance 0 means "at look_at": its distance along the view axis.
+    p.set("uCamFocusDistance", c.focusDistance > 0.0f ? c.focusDistance
+                                                      : glm::dot(c.lookAt - c.position, cam.forward));
     const Sky& sky = scene.sky;
     p.set("uSkyType", skyType(sky.type));
     p.set("uSkyColor", sky.color * sky.strength);
@@ -119,6 +121,11 @@ void PathTracer::setScene(const Scene& scene) {
     reset();
 }
 
+void PathTracer::updateTransforms(const Scene& scene) {
+    gpuScene_.updateTransforms(scene);
+    reset();
+}
+
 void PathTracer::reset() {
     const float zero[4] = {0, 0, 0, 0};
     if (accumTexture_) glClearTexImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, zero);
@@ -126,6 +133,8 @@ void PathTracer::reset() {
     passes_ = 0;
     nonFinite_ = 0;
     rays_ = 0;
+    boxTests_ = 0;
+    triangleTests_ = 0;
 }
 
 void PathTracer::renderPass(int rpp) {
@@ -136,15 +145,19 @@ void PathTracer::renderPass(int rpp) {
 
 void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
     if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
-    program_.set("uSampleStart", unsigned(samplesPerPixel_ + std::uint64_t(sampleOffset)));
-    program_.set("uRpp", rpp);
+    program_->set("uSampleStart", unsigned(samplesPerPixel_ + std::uint64_t(sampleOffset)));
+    program_->set("uRpp", rpp);
 
     const GLuint zeros[2] = {0, 0};
     glNamedBufferSubData(counterBuffer_, 0, sizeof(zeros), zeros);
     glBindImageTexture(0, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     gpuScene_.bind();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, counterBuffer_);
-    glUseProgram(program_.id());
+    if (traversalBuffer_) {
+        glNamedBufferSubData(traversalBuffer_, 0, sizeof(zeros), zeros);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 13, traversalBuffer_);
+    }
+    glUseProgram(program_->id());
     if (options_.entry == TracerEntry::Fragment) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
         glViewport(0, 0, width_, height_);
@@ -168,6 +181,11 @@ void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
     glGetNamedBufferSubData(counterBuffer_, 0, sizeof(counters), counters);   // waits for the pass
     nonFinite_ += counters[0];
     rays_ += counters[1];
+    if (traversalBuffer_) {
+        glGetNamedBufferSubData(traversalBuffer_, 0, sizeof(counters), counters);
+        boxTests_ += counters[0];
+        triangleTests_ += counters[1];
+    }
 }
 
 void PathTracer::finishPass(int rpp) {

@@ -4,6 +4,7 @@
 // context (see gl/gl_context.h). Both programs, the headless CLI and the viewer, drive this class.
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
+#include "render/shader_variant.h"
 #include "render/image.h"
 #include "scene/scene.h"
 
@@ -20,6 +21,7 @@ struct TracerOptions {
     int localSizeX = 8;   // compute only
     int localSizeY = 8;   // compute only
     ShaderDefines extraDefines;   // e.g. RAYLAB_INJECT_NONFINITE for tests of the NaN guard
+    bool specialise = true;       // compile for the scene's features (false: all features on)
 };
 
 class PathTracer {
@@ -31,6 +33,9 @@ public:
 
     // Uploads the scene (geometry, materials, camera, sky, settings) and restarts accumulation.
     void setScene(const Scene& scene);
+    // Objects moved (transforms, sphere centres; same meshes and materials): re-uploads only the
+    // top level (the meshes' BVHs stay) and restarts accumulation.
+    void updateTransforms(const Scene& scene);
     // Drops the accumulated samples; the next pass starts a new mean.
     void reset();
     // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them.
@@ -42,35 +47,36 @@ public:
     void traceBand(int y, int rows, int sampleOffset, int rpp);
     void finishPass(int rpp);
     unsigned accumulationTexture() const { return accumTexture_; }   // RGBA32F, bottom row first
-    const ShaderProgram& program() const { return program_; }   // for uniforms of host extensions
+    const ShaderProgram& program() const { return *program_; }   // for uniforms of host extensions (after setScene)
 
     std::uint64_t samplesPerPixel() const { return samplesPerPixel_; }
     std::uint64_t passes() const { return passes_; }
     std::uint64_t nonFiniteSamples() const { return nonFinite_; }   // replaced by 0, counted
     std::uint64_t raysTraced() const { return rays_; }
+    // With RAYLAB_COUNT_TRAVERSAL in extraDefines: BVH boxes and triangles tested (else 0).
+    std::uint64_t boxTests() const { return boxTests_; }
+    std::uint64_t triangleTests() const { return triangleTests_; }
     std::uint64_t pathsTraced() const { return samplesPerPixel_ * std::uint64_t(width_) * height_; }
     int width() const { return width_; }
     int height() const { return height_; }
 
     Image readImage() const;
-    double compileSeconds() const { return program_.compileSeconds(); }
+    // Compile time of the running variant (0 before setScene; a cached variant reports the time
+    // it took when first compiled), and its name: entry point and scene features.
+    double compileSeconds() const { return program_ ? program_->compileSeconds() : 0.0; }
     std::string variantName() const;
+    const SceneFeatures& features() const { return features_; }
+    const GpuScene& gpuScene() const { return gpuScene_; }
 
 private:
     void allocateImage(int width, int height);
-    // The scene features compiled into the tracer (integrator.glsl): absent ones cost nothing.
-    struct Features {
-        bool nee = false;           // RAYLAB_NEE
-        bool generalBsdf = false;   // RAYLAB_GENERAL_BSDF
-        bool skyMap = false;        // RAYLAB_SKY_MAP
-        bool operator==(const Features&) const = default;
-    };
-    static Features featuresOf(const Scene& scene);
-    void buildProgram(Features features);
+
+    static ShaderProgram compileVariant(const ShaderDefines& features, const void* self);
 
     TracerOptions options_;
-    ShaderProgram program_;
-    Features features_;
+    ShaderVariantCache variants_;
+    const ShaderProgram* program_ = nullptr;   // the variant for the current scene
+    SceneFeatures features_;
     GpuScene gpuScene_;
     unsigned accumTexture_ = 0;
     unsigned framebuffer_ = 0;
@@ -83,6 +89,9 @@ private:
     std::uint64_t passes_ = 0;
     std::uint64_t nonFinite_ = 0;
     std::uint64_t rays_ = 0;
+    unsigned traversalBuffer_ = 0;   // binding 13, only when counting traversal
+    std::uint64_t boxTests_ = 0;
+    std::uint64_t triangleTests_ = 0;
 };
 
 } // namespace raylab

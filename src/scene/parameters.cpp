@@ -94,6 +94,13 @@ std::vector<ParamSpec> buildSceneTable() {
     add(spec("camera.fov", T::Float, above(0), below(180), "degrees", "Vertical field of view.",
              G::ResetAccumulation),
         [](auto& s) -> auto& { return s.camera.fovY; });
+    add(spec("camera.aperture", T::Float, atLeast(0), kAny, "world units",
+             "Lens radius of the thin-lens camera; 0 = pinhole (everything sharp).", G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.camera.aperture; });
+    add(spec("camera.focus_distance", T::Float, atLeast(0), kAny, "world units",
+             "Distance along the view axis that is in focus; 0 = the distance to look_at.",
+             G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.camera.focusDistance; });
 
     // --- render ---
     add(spec("render.width", T::Int, atLeast(1), atMost(16384), "pixels",
@@ -139,6 +146,10 @@ std::vector<ParamSpec> buildSceneTable() {
               {"aces", static_cast<int>(ToneMap::AcesFit)},
               {"none", static_cast<int>(ToneMap::Clamp), true}}),
         [](auto& s) -> auto& { return s.render.toneMap; });
+    add(spec("render.show_mip_level", T::Int, atLeast(0), atMost(1), "",
+             "1 = textured surfaces show the mip level chosen by ray cones (blue 0, green 4, red 8+).",
+             G::RecompileShader),
+        [](auto& s) -> auto& { return s.render.showMipLevel; });
 
     // --- sky ---
     add(spec("sky.type", T::Enum, kAny, kAny, "",
@@ -265,6 +276,38 @@ const ParamSpec* findParameter(std::string_view dottedKey) {
 const std::vector<MaterialParamSpec>& materialParameters() {
     static const std::vector<MaterialParamSpec> table = buildMaterialTable();
     return table;
+}
+
+static std::vector<TransformParamSpec> buildTransformTable() {
+    using T = ParamType;
+    std::vector<TransformParamSpec> t;
+    auto add = [&t](ValueSpec v, auto ref) { t.push_back(makeField<Transform>(std::move(v), ref)); };
+    add(spec("transform.translation", T::Vec3, kAny, kAny, "world units",
+             "Moves the object (applied last).", Trigger::ReloadScene),
+        [](auto& x) -> auto& { return x.translation; });
+    add(spec("transform.rotation", T::Vec3, kAny, kAny, "degrees",
+             "Rotation about x, then y, then z (world axes), after scaling.", Trigger::ReloadScene),
+        [](auto& x) -> auto& { return x.rotation; });
+    add(spec("transform.scale", T::Vec3, above(0), kAny, "factor",
+             "Scale per axis, or one number for all three (applied first); spheres need all three equal.",
+             Trigger::ReloadScene),
+        [](auto& x) -> auto& { return x.scale; });
+    return t;
+}
+
+const std::vector<TransformParamSpec>& transformParameters() {
+    static const std::vector<TransformParamSpec> table = buildTransformTable();
+    return table;
+}
+
+const std::vector<std::string_view>& meshKeys() {
+    static const std::vector<std::string_view> keys = {"file", "positions", "indices", "normals", "uvs"};
+    return keys;
+}
+
+const std::vector<std::string_view>& materialFileKeys() {
+    static const std::vector<std::string_view> keys = {"albedo_texture", "normal_texture"};
+    return keys;
 }
 
 const std::vector<SphereParamSpec>& sphereParameters() {

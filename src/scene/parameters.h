@@ -78,6 +78,7 @@ struct FieldSpec : ValueSpec {
 using ParamSpec = FieldSpec<Scene>;
 using MaterialParamSpec = FieldSpec<Material>;
 using SphereParamSpec = FieldSpec<Sphere>;
+using TransformParamSpec = FieldSpec<Transform>;
 
 // camera.*, render.*, sky.* in file-format order.
 const std::vector<ParamSpec>& sceneParameters();
@@ -87,6 +88,12 @@ const ParamSpec* findParameter(std::string_view dottedKey);
 const std::vector<MaterialParamSpec>& materialParameters();
 // Keys of a sphere in "objects" besides "type" and "material" (center, radius).
 const std::vector<SphereParamSpec>& sphereParameters();
+// Keys of an object's "transform" (transform.translation, transform.rotation, transform.scale).
+const std::vector<TransformParamSpec>& transformParameters();
+// Keys of a mesh object that the loader reads itself (arrays and the OBJ path), for FORMAT.md.
+const std::vector<std::string_view>& meshKeys();
+// Keys of a material that name files (image textures), read by the loader itself.
+const std::vector<std::string_view>& materialFileKeys();
 
 // Range/finiteness check of one number (one component for Vec3/Rgb). Returns the complaint without
 // location, e.g. "must be > 0, got -1", or nullopt when the value is acceptable. Integer types also

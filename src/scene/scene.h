@@ -1,6 +1,8 @@
 #pragma once
 // The in-memory scene: what a scene file describes, after validation. Plain data; the loader
 // (scene_loader.h) fills it, the renderer reads it. Units and ranges are in scenes/FORMAT.md.
+#include "texture/texture.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -10,12 +12,14 @@
 
 namespace raylab {
 
-// Pinhole camera (thin lens comes later). Right-handed, y up by default.
+// Thin-lens camera (a pinhole when aperture is 0). Right-handed, y up by default.
 struct Camera {
     glm::vec3 position{0.0f, 1.0f, 6.0f}; // eye point, world units
     glm::vec3 lookAt{0.0f, 1.0f, 0.0f};   // point the view centre passes through
     glm::vec3 up{0.0f, 1.0f, 0.0f};       // approximate up; must not be parallel to the view axis
     float fovY = 40.0f;                   // vertical field of view, degrees, (0, 180)
+    float aperture = 0.0f;                // lens radius, world units; 0 = pinhole
+    float focusDistance = 0.0f;           // world units; 0 = the distance to lookAt
 };
 
 // How the linear image is turned into display values for PNG (EXR stays linear).
@@ -34,6 +38,7 @@ struct RenderSettings {
     bool mis = true;             // with nee: weight light and BSDF samples by the power heuristic
     float exposure = 0.0f;       // EV stops: display value = linear × 2^exposure
     ToneMap toneMap = ToneMap::AcesFit;
+    int showMipLevel = 0;        // 1: textured surfaces show their mip level as colours (debug)
 };
 
 struct Material {
@@ -45,13 +50,38 @@ struct Material {
     float ior = 1.5f;                // index of refraction inside / outside, > 0
     glm::vec3 emission{0.0f};        // emitted radiance colour
     float emissionStrength = 0.0f;   // multiplies emission; radiance = emission × strength
+    std::string albedoTexture;       // image file as written in the scene ("" = none); multiplies albedo
+    int albedoTextureIndex = -1;     // into Scene::textures
+    std::string normalTexture;       // tangent-space normal map ("" = none), read as linear data
+    int normalTextureIndex = -1;     // into Scene::textures
     glm::vec3 radiance() const { return emission * emissionStrength; }
+};
+
+// Placement of an object: world = translate · Rz · Ry · Rx · scale · local (scene/transform.h).
+struct Transform {
+    glm::vec3 translation{0.0f};   // world units
+    glm::vec3 rotation{0.0f};      // degrees about x, then y, then z (extrinsic)
+    glm::vec3 scale{1.0f};         // per axis, each > 0
+    bool operator==(const Transform&) const = default;
 };
 
 struct Sphere {
     glm::vec3 center{0.0f};
     float radius = 1.0f;   // world units, > 0
     int material = 0;      // index into Scene::materials
+    Transform transform;   // scale must be uniform: a sphere stays a sphere
+};
+
+// A triangle mesh in its own (object) space, placed by `transform`. Normals and uvs are per
+// vertex and either empty or as many as positions.
+struct Mesh {
+    std::string file;                    // OBJ path as written in the scene ("" = inline)
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;      // smooth shading when given
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::uvec3> triangles;   // indices into positions (and normals, uvs)
+    int material = 0;                    // index into Scene::materials
+    Transform transform;
 };
 
 // Radiance for rays that leave the scene.
@@ -73,6 +103,8 @@ struct Scene {
     Sky sky;
     std::vector<Material> materials;
     std::vector<Sphere> spheres;
+    std::vector<Mesh> meshes;
+    std::vector<Texture> textures;   // loaded images, referenced by Material::albedoTextureIndex
 };
 
 } // namespace raylab

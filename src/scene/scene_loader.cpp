@@ -1,6 +1,8 @@
 #include "scene/scene_loader.h"
 
 #include "scene/json_locator.h"
+#include "scene/gltf_loader.h"
+#include "scene/obj_loader.h"
 #include "scene/parameters.h"
 
 #include <glm/geometric.hpp>
@@ -28,7 +30,7 @@ using Json = nlohmann::ordered_json;
 
 constexpr std::string_view kDefaultMaterial = "default";
 constexpr std::string_view kSectionKeys[] = {"camera", "render", "sky", "materials", "objects"};
-constexpr std::string_view kObjectTypes[] = {"sphere"};
+constexpr std::string_view kObjectTypes[] = {"sphere", "mesh"};
 
 // ------------------------------------------------------------------------------------------------
 // Paths: a value's place in the document, shown as objects[2].radius and as JSON pointer.
@@ -327,6 +329,135 @@ struct PendingSphere {
     std::string material;
 };
 
+struct PendingMesh {
+    Mesh mesh;
+    std::string material;
+};
+
+// An image file for a material (relative to the scene's directory), loaded once per path.
+int readTexture(const Json& v, const Path& p, const std::filesystem::path& sceneDir, std::vector<Texture>& textures,
+                std::string& given, bool linearData = false) {
+    if (!v.is_string() || v.get_ref<const std::string&>().empty())
+        fail(p, "expected the path of an image file (a string), got " + typeOf(v));
+    given = v.get<std::string>();
+    const std::filesystem::path path =
+        std::filesystem::path(given).is_absolute() ? std::filesystem::path(given) : sceneDir / given;
+    const std::string key = (linearData ? "linear:" : "srgb:") + given;   // one file, two decodings
+    for (std::size_t i = 0; i < textures.size(); ++i)
+        if (textures[i].file == key) return int(i);
+    if (!std::filesystem::is_regular_file(path)) fail(p, path.string() + ": cannot read: no such file");
+    try {
+        Texture t = loadTexture(path, linearData);
+        t.file = key;
+        textures.push_back(std::move(t));
+    } catch (const TextureError& e) {
+        fail(p, e.what());
+    }
+    return int(textures.size() - 1);
+}
+
+// "transform": { "translation", "rotation", "scale" }; scale may be one number for all axes.
+Transform readTransform(const Json& o, const Path& p) {
+    Transform t;
+    if (!o.contains("transform")) return t;
+    const Path tp = p.key("transform");
+    Json copy = o["transform"];
+    if (copy.is_object() && copy.contains("scale") && copy["scale"].is_number()) {
+        const Json s = copy["scale"];
+        copy["scale"] = Json::array({s, s, s});
+        const ValueSpec& spec = transformParameters().back();
+        readScalar(spec, s, tp.key("scale"));   // a bad single number is reported as itself
+    }
+    readMembers(copy, tp, transformParameters(), "transform", t);
+    return t;
+}
+
+// A flat array of numbers (finite, single precision) whose length is a multiple of `group`.
+std::vector<double> readNumbers(const Json& o, const char* key, const Path& p, std::size_t group,
+                                bool integers) {
+    const Path kp = p.key(key);
+    const Json& v = o[key];
+    if (!v.is_array())
+        fail(kp, std::string("expected a flat array of ") + (integers ? "integers" : "numbers") + ", got " + typeOf(v));
+    if (v.size() % group != 0)
+        fail(kp, "expected a multiple of " + std::to_string(group) + " numbers, got " + std::to_string(v.size()));
+    ValueSpec spec;
+    spec.key = key;
+    spec.type = integers ? ParamType::UInt : ParamType::Float;
+    std::vector<double> out;
+    out.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(readScalar(spec, v[i], kp.index(i)));
+    return out;
+}
+
+// A mesh object: inline arrays, or "file" (OBJ, relative to the scene file's directory).
+Mesh readMesh(const Json& o, const Path& p, const std::filesystem::path& sceneDir) {
+    std::vector<std::string_view> known = {"type", "material", "transform"};
+    for (std::string_view k : meshKeys()) known.push_back(k);
+    for (const auto& [k, v] : o.items()) {
+        (void)v;
+        if (std::find(known.begin(), known.end(), k) == known.end())
+            fail(p.key(k), "unknown key " + inQuotes(k) + " " + inWhere(p) + suggestion(k, known, "known keys"), true);
+    }
+    Mesh mesh;
+    if (o.contains("file")) {
+        for (const char* inline_ : {"positions", "indices", "normals", "uvs"})
+            if (o.contains(inline_))
+                fail(p.key(inline_), "a mesh takes either \"file\" or inline arrays, not both", true);
+        const Json& f = o["file"];
+        if (!f.is_string() || f.get_ref<const std::string&>().empty())
+            fail(p.key("file"), "expected the path of an OBJ or glTF file (a string), got " + typeOf(f));
+        const std::string given = f.get<std::string>();
+        const std::filesystem::path path = std::filesystem::path(given).is_absolute() ? std::filesystem::path(given)
+                                                                                     : sceneDir / given;
+        std::string ext = path.extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        try {
+            mesh = (ext == ".gltf" || ext == ".glb") ? loadGltf(path) : loadObj(path);
+        } catch (const ObjError& e) {
+            fail(p.key("file"), e.what());
+        } catch (const GltfError& e) {
+            fail(p.key("file"), e.what());
+        }
+        mesh.file = given;
+        return mesh;
+    }
+    for (const char* required : {"positions", "indices"})
+        if (!o.contains(required))
+            fail(p, std::string("a mesh needs \"") + required + "\" (or \"file\" with an OBJ path)");
+    const std::vector<double> pos = readNumbers(o, "positions", p, 3, false);
+    const std::vector<double> idx = readNumbers(o, "indices", p, 3, true);
+    for (std::size_t i = 0; i < pos.size(); i += 3)
+        mesh.positions.emplace_back(float(pos[i]), float(pos[i + 1]), float(pos[i + 2]));
+    if (mesh.positions.empty()) fail(p.key("positions"), "a mesh needs at least one vertex");
+    if (idx.empty()) fail(p.key("indices"), "a mesh needs at least one triangle");
+    for (std::size_t i = 0; i < idx.size(); ++i)
+        if (idx[i] >= double(mesh.positions.size()))
+            fail(p.key("indices").index(i), "vertex index " + formatNumber(idx[i]) + " is out of range (" +
+                                                 std::to_string(mesh.positions.size()) + " vertices)");
+    for (std::size_t i = 0; i < idx.size(); i += 3)
+        mesh.triangles.emplace_back(unsigned(idx[i]), unsigned(idx[i + 1]), unsigned(idx[i + 2]));
+    if (o.contains("normals")) {
+        const std::vector<double> n = readNumbers(o, "normals", p, 3, false);
+        if (n.size() != pos.size())
+            fail(p.key("normals"), "expected one normal per vertex (" + std::to_string(pos.size()) +
+                                       " numbers), got " + std::to_string(n.size()) + " numbers");
+        for (std::size_t i = 0; i < n.size(); i += 3) {
+            const glm::vec3 v(float(n[i]), float(n[i + 1]), float(n[i + 2]));
+            if (!(glm::length(v) > 0.0f)) fail(p.key("normals").index(i), "a normal must not be zero");
+            mesh.normals.push_back(glm::normalize(v));
+        }
+    }
+    if (o.contains("uvs")) {
+        const std::vector<double> uv = readNumbers(o, "uvs", p, 2, false);
+        if (uv.size() / 2 != mesh.positions.size())
+            fail(p.key("uvs"), "expected one uv pair per vertex (" + std::to_string(2 * mesh.positions.size()) +
+                                   " numbers), got " + std::to_string(uv.size()) + " numbers");
+        for (std::size_t i = 0; i < uv.size(); i += 2) mesh.uvs.emplace_back(float(uv[i]), float(uv[i + 1]));
+    }
+    return mesh;
+}
+
 void checkCamera(const Camera& c) {
     const Path camera = Path{}.key("camera");
     const glm::vec3 view = c.lookAt - c.position;
@@ -395,7 +526,15 @@ void validate(const Json& root, Scene& scene) {
             if (name.empty()) fail(p.key(name), "a material name must not be empty", true);
             Material mat;
             mat.name = name;
-            readMembers(m, p.key(name), materialParameters(), "", mat);
+            readMembers(m, p.key(name), materialParameters(), "", mat, materialFileKeys());
+            if (m.contains("albedo_texture"))
+                mat.albedoTextureIndex = readTexture(m["albedo_texture"], p.key(name).key("albedo_texture"),
+                                                     scene.sourcePath.parent_path(), scene.textures,
+                                                     mat.albedoTexture);
+            if (m.contains("normal_texture"))
+                mat.normalTextureIndex = readTexture(m["normal_texture"], p.key(name).key("normal_texture"),
+                                                     scene.sourcePath.parent_path(), scene.textures,
+                                                     mat.normalTexture, true);
             materials.push_back(std::move(mat));
         }
     }
@@ -412,37 +551,54 @@ void validate(const Json& root, Scene& scene) {
     if (!objects.is_array()) fail(objectsPath, "expected an array [ { ... }, ... ], got " + typeOf(objects));
     if (objects.empty()) fail(objectsPath, "a scene needs at least one object, got an empty array");
     std::vector<PendingSphere> spheres;
+    std::vector<PendingMesh> meshes;
+    const std::filesystem::path sceneDir = scene.sourcePath.parent_path();
     const std::vector<std::string_view> types(std::begin(kObjectTypes), std::end(kObjectTypes));
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const Path p = objectsPath.index(i);
         const Json& o = objects[i];
         if (!o.is_object()) fail(p, "expected an object { \"type\": \"sphere\", ... }, got " + typeOf(o));
+        bool isMesh = false;
         if (o.contains("type")) {
             const Json& t = o["type"];
             if (!t.is_string()) fail(p.key("type"), "expected a string (" + joinNames(types) + "), got " + typeOf(t));
             const std::string& ts = t.get_ref<const std::string&>();
             if (std::find(types.begin(), types.end(), ts) == types.end())
                 fail(p.key("type"), "unknown object type " + inQuotes(ts) + suggestion(ts, types, "known types"));
+            isMesh = ts == "mesh";
         }
-        PendingSphere s;
-        readMembers(o, p, sphereParameters(), "", s.sphere, {"type", "material"});
-        s.material = std::string(kDefaultMaterial);
+        std::string material = std::string(kDefaultMaterial);
         if (o.contains("material")) {
             const Json& m = o["material"];
             if (!m.is_string()) fail(p.key("material"), "expected a material name (a string), got " + typeOf(m));
-            s.material = m.get<std::string>();
+            material = m.get<std::string>();
         }
-        const bool known = std::find(materialNames.begin(), materialNames.end(), s.material) != materialNames.end();
-        if (!known && s.material != kDefaultMaterial) {
-            fail(p.key("material"), "unknown material " + inQuotes(s.material) +
-                                        suggestion(s.material, materialNames, "defined materials"));
+        const bool known = std::find(materialNames.begin(), materialNames.end(), material) != materialNames.end();
+        if (!known && material != kDefaultMaterial) {
+            fail(p.key("material"), "unknown material " + inQuotes(material) +
+                                        suggestion(material, materialNames, "defined materials"));
         }
+        if (isMesh) {
+            PendingMesh m{readMesh(o, p, sceneDir), material};
+            m.mesh.transform = readTransform(o, p);
+            meshes.push_back(std::move(m));
+            continue;
+        }
+        PendingSphere s;
+        readMembers(o, p, sphereParameters(), "", s.sphere, {"type", "material", "transform"});
+        s.sphere.transform = readTransform(o, p);
+        const glm::vec3 sc = s.sphere.transform.scale;
+        if (sc.x != sc.y || sc.x != sc.z)
+            fail(p.key("transform").key("scale"), "a sphere needs a uniform scale (one number or three equal ones), got " +
+                                                      formatValue(transformParameters().back(), sc));
+        s.material = material;
         spheres.push_back(std::move(s));
     }
 
     // "default" is built in (albedo 0.8 grey) unless the file defines it.
-    const bool needDefault = std::any_of(spheres.begin(), spheres.end(),
-                                         [](const PendingSphere& s) { return s.material == kDefaultMaterial; });
+    const bool needDefault =
+        std::any_of(spheres.begin(), spheres.end(), [](const PendingSphere& s) { return s.material == kDefaultMaterial; }) ||
+        std::any_of(meshes.begin(), meshes.end(), [](const PendingMesh& m) { return m.material == kDefaultMaterial; });
     if (needDefault && !haveDefault) {
         Material d;
         d.name = std::string(kDefaultMaterial);
@@ -458,6 +614,11 @@ void validate(const Json& root, Scene& scene) {
     for (PendingSphere& s : spheres) {
         s.sphere.material = indexOf.at(s.material);
         scene.spheres.push_back(s.sphere);
+    }
+    scene.meshes.clear();
+    for (PendingMesh& m : meshes) {
+        m.mesh.material = indexOf.at(m.material);
+        scene.meshes.push_back(std::move(m.mesh));
     }
 
     checkCamera(scene.camera);
@@ -635,6 +796,34 @@ nlohmann::json valueJson(const FieldSpec<Target>& spec, const Target& source) {
     return i;
 }
 
+nlohmann::json transformJson(const Transform& t) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const TransformParamSpec& spec : transformParameters()) j[std::string(spec.name())] = valueJson(spec, t);
+    return j;
+}
+
+nlohmann::json meshJson(const Mesh& m, const std::string& material) {
+    nlohmann::json o = nlohmann::json::object();
+    o["type"] = "mesh";
+    if (!m.file.empty()) {
+        o["file"] = m.file;
+    } else {
+        auto flat = [](const auto& items, int n) {
+            nlohmann::json a = nlohmann::json::array();
+            for (const auto& v : items)
+                for (int k = 0; k < n; ++k) a.push_back(v[k]);
+            return a;
+        };
+        o["positions"] = flat(m.positions, 3);
+        o["indices"] = flat(m.triangles, 3);
+        if (!m.normals.empty()) o["normals"] = flat(m.normals, 3);
+        if (!m.uvs.empty()) o["uvs"] = flat(m.uvs, 2);
+    }
+    o["transform"] = transformJson(m.transform);
+    o["material"] = material;
+    return o;
+}
+
 } // namespace
 
 Scene parseScene(std::string_view text, const std::string& fileName, const std::vector<std::string>& overrides) {
@@ -694,6 +883,8 @@ nlohmann::json sceneToJson(const Scene& scene) {
     for (const Material& m : scene.materials) {
         nlohmann::json mj = nlohmann::json::object();
         for (const MaterialParamSpec& spec : materialParameters()) mj[std::string(spec.key)] = valueJson(spec, m);
+        if (!m.albedoTexture.empty()) mj["albedo_texture"] = m.albedoTexture;
+        if (!m.normalTexture.empty()) mj["normal_texture"] = m.normalTexture;
         materials[m.name] = mj;
     }
     j["materials"] = materials;
@@ -710,8 +901,18 @@ nlohmann::json sceneToJson(const Scene& scene) {
         nlohmann::json o = nlohmann::json::object();
         o["type"] = "sphere";
         for (const SphereParamSpec& spec : sphereParameters()) o[std::string(spec.key)] = valueJson(spec, s);
+        o["transform"] = transformJson(s.transform);
         o["material"] = scene.materials[static_cast<std::size_t>(s.material)].name;
         objects.push_back(o);
+    }
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh& m = scene.meshes[i];
+        if (m.material < 0 || static_cast<std::size_t>(m.material) >= scene.materials.size()) {
+            throw SceneError("sceneToJson: error: objects[" + std::to_string(scene.spheres.size() + i) +
+                             "].material: index " + std::to_string(m.material) + " is out of range (" +
+                             std::to_string(scene.materials.size()) + " materials)");
+        }
+        objects.push_back(meshJson(m, scene.materials[static_cast<std::size_t>(m.material)].name));
     }
     j["objects"] = objects;
     return j;

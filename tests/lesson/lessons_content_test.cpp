@@ -37,12 +37,6 @@ struct NeedsOtherBranch {
     const char* branch;   // the branch that brings it
 };
 const std::vector<NeedsOtherBranch> kNeedsOtherBranches = {
-    {"04-ray-triangle.md", "scenes/cornell_box.json", "issue-geometry"},
-    {"04-ray-triangle.md", "scenes/displaced_terrain.json", "issue-geometry"},
-    {"05-ray-box-bvh.md", "scenes/displaced_terrain.json", "issue-geometry"},
-    {"10-camera-depth-of-field.md", "camera.aperture", "issue-geometry"},
-    {"10-camera-depth-of-field.md", "camera.focus_distance", "issue-geometry"},
-    {"10-camera-depth-of-field.md", "scenes/depth_of_field.json", "issue-geometry"},
 };
 
 bool keyMatches(const std::string& pattern, const std::string& key) {

@@ -80,8 +80,11 @@ TEST(SceneFormatDoc, EveryMaterialAndObjectKeyHasATableRow) {
     const auto rows = keyRows(readDoc());
     for (const MaterialParamSpec& p : materialParameters()) expectRowMatches(rows, p, p.defaultValue());
     for (const SphereParamSpec& p : sphereParameters()) expectRowMatches(rows, p, p.defaultValue());
+    for (const TransformParamSpec& p : transformParameters()) expectRowMatches(rows, p, p.defaultValue());
     // Keys of an object that the loader handles itself.
     for (const char* key : {"type", "material", "sky.map"}) EXPECT_EQ(rows.count(key), 1u) << "`" << key << "` undocumented";
+    for (std::string_view key : meshKeys()) EXPECT_EQ(rows.count(std::string(key)), 1u) << "`" << key << "` undocumented";
+    for (std::string_view key : materialFileKeys()) EXPECT_EQ(rows.count(std::string(key)), 1u) << "`" << key << "` undocumented";
 }
 
 TEST(SceneFormatDoc, NoRowsForKeysThatDoNotExist) {
@@ -91,7 +94,13 @@ TEST(SceneFormatDoc, NoRowsForKeysThatDoNotExist) {
                            std::any_of(materialParameters().begin(), materialParameters().end(),
                                        [&](const auto& p) { return p.key == key; }) ||
                            std::any_of(sphereParameters().begin(), sphereParameters().end(),
-                                       [&](const auto& p) { return p.key == key; });
+                                       [&](const auto& p) { return p.key == key; }) ||
+                           std::any_of(transformParameters().begin(), transformParameters().end(),
+                                       [&](const auto& p) { return p.key == key; }) ||
+                           std::any_of(meshKeys().begin(), meshKeys().end(),
+                                       [&](std::string_view k) { return k == key; }) ||
+                           std::any_of(materialFileKeys().begin(), materialFileKeys().end(),
+                                       [&](std::string_view k) { return k == key; });
         EXPECT_TRUE(known) << "FORMAT.md documents `" << key << "`, which the loader does not know";
     }
 }

@@ -22,7 +22,8 @@ TEST(SceneParameters, TableCoversTheSectionsWithUniqueKeys) {
         EXPECT_EQ(findParameter(p.key), &p);
     }
     const std::set<std::string> expected = {
-        "camera.position", "camera.look_at", "camera.up",        "camera.fov",      "render.width",
+        "camera.position", "camera.look_at", "camera.up",        "camera.fov",      "camera.aperture",
+        "camera.focus_distance", "render.show_mip_level",                          "render.width",
         "render.height",   "render.rpp",     "render.spp",       "render.time",     "render.max_bounces",
         "render.rr_depth", "render.seed",    "render.nee",       "render.mis",      "render.exposure",  "render.tone_map", "sky.type",
         "sky.color",       "sky.top",        "sky.bottom",       "sky.rotation",    "sky.strength"};
@@ -53,7 +54,7 @@ TEST(SceneParameters, AccessorsReachTheirOwnField) {
         switch (p.type) {
         case ParamType::Int:
         case ParamType::UInt:
-            v = std::int64_t(p.key == "render.max_bounces" ? 7 : 17);
+            v = std::int64_t(p.key == "render.max_bounces" ? 7 : p.key == "render.show_mip_level" ? 1 : 17);
             json = formatValue(p, v);
             break;
         case ParamType::Float:

@@ -88,7 +88,7 @@ TEST(SceneLoader, EveryShippedSceneLoads) {
         Scene s;
         ASSERT_NO_THROW(s = loadScene(f));
         EXPECT_EQ(s.sourcePath, f);
-        EXPECT_FALSE(s.spheres.empty());
+        EXPECT_FALSE(s.spheres.empty() && s.meshes.empty());
     }
 }
 
@@ -348,7 +348,7 @@ TEST(SceneLoader, UnknownMaterialsAndObjectTypes) {
     EXPECT_EQ(errorOf(R"({ "objects": [ {}, { "type": "sphre" } ] })"),
               "test.json:1:30: error: objects[1].type: unknown object type 'sphre'; did you mean 'sphere'?");
     EXPECT_EQ(errorOf(R"({ "objects": [ { "type": "cube" } ] })"),
-              "test.json:1:26: error: objects[0].type: unknown object type 'cube' (known types: sphere)");
+              "test.json:1:26: error: objects[0].type: unknown object type 'cube' (known types: sphere, mesh)");
     EXPECT_EQ(errorOf(R"({ "materials": { "": {} }, "objects": [ {} ] })"),
               "test.json:1:18: error: materials[\"\"]: a material name must not be empty");
 }

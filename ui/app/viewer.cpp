@@ -129,6 +129,9 @@ std::unique_ptr<PathTracer> Viewer::compileVariant(Variant v) {
     if (v == kMoments) o.extraDefines.emplace_back("RAYLAB_DEBUG_MOMENTS", "1");
     if (v == kViews) o.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
     auto tracer = std::make_unique<PathTracer>(o);
+    // The tracer compiles its program for a scene's features: do it here, so a shader error
+    // surfaces while the previous tracer still runs.
+    if (hasScene_) tracer->setScene(tracedScene());
     stats_.shaderCompileSeconds = tracer->compileSeconds();
     return tracer;
 }

@@ -1,0 +1,268 @@
+// Two-level BVH traversal: a top-level BVH over objects (world-space spheres and mesh instances),
+// each mesh with its own BVH in object space. Nearest child first with a small stack (pbrt-v4
+// BVHAggregate::Intersect), any-hit early exit for shadow rays. Shared by C++ and GLSL: the
+// includer first defines the accessors
+//   GpuBvhNode topNode(uint i); GpuBvhNode meshNode(uint i); GpuInstance instanceAt(uint i);
+//   GpuTriangle triangleAt(uint i); GpuVertex vertexAt(uint i); GpuSphere sphereAt(uint i);
+//   uint instanceCount();
+// (GLSL: scene_geometry.glsl reads buffers; C++: accel/cpu_traversal.h reads vectors), and may
+// define RL_COUNT_BOX() / RL_COUNT_TRIANGLE() to count tests (heat maps).
+#ifndef RAYLAB_BVH_TRAVERSAL_GLSL
+#define RAYLAB_BVH_TRAVERSAL_GLSL
+#include "compat.glsl"
+#include "features.glsl"
+#include "ray.glsl"
+#include "aabb.glsl"
+#include "sphere.glsl"
+#include "triangle.glsl"
+#include "instance_transform.glsl"
+#include "scene_types.glsl"
+#include "geometry_types.glsl"
+#ifndef RL_COUNT_BOX
+#define RL_COUNT_BOX()
+#endif
+#ifndef RL_COUNT_TRIANGLE
+#define RL_COUNT_TRIANGLE()
+#endif
+RL_NAMESPACE_BEGIN
+
+// Depth bound of both levels: the builder splits at the median below depth 40 (accel/bvh.h).
+const int BVH_STACK_SIZE = 64;
+
+// What traversal found: enough to build the surface record afterwards (scene_surface.glsl).
+struct TraceRecord {
+    float t;
+    uint instance;
+    uint primitive;   // sphere index, or triangle index (global)
+    float b1;         // barycentrics of the triangle's second and third vertex
+    float b2;
+};
+
+RL_FN vec3 nodeMin(GpuBvhNode n) { return vec3(n.boundsMin.x, n.boundsMin.y, n.boundsMin.z); }
+RL_FN vec3 nodeMax(GpuBvhNode n) { return vec3(n.boundsMax.x, n.boundsMax.y, n.boundsMax.z); }
+
+#ifdef RAYLAB_FEATURE_MESHES
+// Nearest triangle of one mesh in (0, rec.t), in the mesh's object space; updates rec. The
+// object-space ray starts tOffset further along than the world ray (see intersectInstance).
+RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool anyHit, RL_INOUT(TraceRecord) rec) {
+    vec3 invDir = safeInverseDir(ray.dir);
+    bool found = false;
+    uint stack[BVH_STACK_SIZE];
+    int sp = 0;
+    uint node = root;
+    bool done = false;
+    while (!done) {
+        GpuBvhNode n = meshNode(node);
+        RL_COUNT_BOX();
+        bool descended = false;
+        if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t - tOffset) >= 0.0f) {
+            if (n.info.w == 0u) {
+                for (uint i = n.info.x; i < n.info.x + n.info.y; ++i) {
+                    GpuTriangle tri = triangleAt(i);
+                    RL_COUNT_TRIANGLE();
+                    TriangleHit h;
+                    if (intersectTriangle(ray, xyzOf(vertexAt(tri.vertices.x).positionU),
+                                          xyzOf(vertexAt(tri.vertices.y).positionU),
+                                          xyzOf(vertexAt(tri.vertices.z).positionU), rec.t - tOffset, h)) {
+                        rec = TraceRecord(h.t + tOffset, instance, i, h.b1, h.b2);
+                        found = true;
+                        if (anyHit) break;
+                    }
+                }
+                if (found && anyHit) done = true;
+            } else {
+                // Visit the child on the near side of the split plane first.
+                bool dirNeg = ray.dir[int(n.info.z)] < 0.0f;
+                uint first = node + 1u;
+                uint second = n.info.x;
+                if (sp < BVH_STACK_SIZE) stack[sp++] = dirNeg ? first : second;
+                node = dirNeg ? second : first;
+                descended = true;
+            }
+        }
+        if (!descended && !done) {
+            if (sp == 0) done = true;
+            else node = stack[--sp];
+        }
+    }
+    return found;
+}
+#endif
+
+// One object of the top level: a world-space sphere, or a mesh traversed in its object space.
+RL_FN bool intersectInstance(Ray ray, uint i, bool anyHit, RL_INOUT(TraceRecord) rec) {
+    bool found = false;
+    GpuInstance inst = instanceAt(i);
+#ifdef RAYLAB_FEATURE_SPHERES
+    if (inst.info.x == INSTANCE_SPHERE) {
+        GpuSphere s = sphereAt(inst.info.y);
+        float t = intersectSphere(ray, xyzOf(s.centerRadius), s.centerRadius.w, 0.0f, rec.t);
+        if (t > 0.0f) {
+            rec = TraceRecord(t, i, inst.info.y, 0.0f, 0.0f);
+            found = true;
+        }
+    }
+#endif
+#ifdef RAYLAB_FEATURE_MESHES
+    if (inst.info.x == INSTANCE_MESH) {
+        // Into object space; the direction is not renormalised, so t carries over. The transformed
+        // origin is only known within its rounding error: move it forward along the ray to the
+        // edge of that error box, so a surface the world ray starts on is not met again, and
+        // shorten the interval by as much (pbrt-v4 Transform::operator()(Ray), §6.8.6).
+        vec3 o = transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin);
+        vec3 d = transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir);
+        vec3 oError = transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin,
+                                          vec3(0.0f));
+        float dt = dot(abs(d), oError) / dot(d, d);
+        if (dt < rec.t && traverseMesh(Ray(o + dt * d, d), dt, i, inst.info.y, anyHit, rec)) found = true;
+    }
+#endif
+    return found;
+}
+
+// Nearest hit of the scene in (0, tMax); with anyHit, stops at the first hit found.
+RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec) {
+    rec = TraceRecord(tMax, 0u, 0u, 0.0f, 0.0f);
+    bool found = false;
+#ifdef RAYLAB_TOP_LEVEL_LINEAR
+    // Few objects: a plain loop beats the top-level traversal's stack and box tests (measured
+    // in bench/geometry.md); the loop bound is the buffer's length, the same in every lane.
+    uint count = instanceCount();
+    for (uint i = 0u; i < count; ++i) {
+        if (intersectInstance(ray, i, anyHit, rec)) found = true;
+        if (found && anyHit) break;
+    }
+    return found;
+#else
+    vec3 invDir = safeInverseDir(ray.dir);
+    uint stack[BVH_STACK_SIZE];
+    int sp = 0;
+    uint node = 0u;
+    bool done = false;
+    while (!done) {
+        GpuBvhNode n = topNode(node);
+        RL_COUNT_BOX();
+        bool descended = false;
+        if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t) >= 0.0f) {
+            if (n.info.w == 0u) {
+                for (uint i = n.info.x; i < n.info.x + n.info.y; ++i) {
+                    if (intersectInstance(ray, i, anyHit, rec)) found = true;
+                    if (found && anyHit) break;
+                }
+                if (found && anyHit) done = true;
+            } else {
+                bool dirNeg = ray.dir[int(n.info.z)] < 0.0f;
+                uint first = node + 1u;
+                uint second = n.info.x;
+                if (sp < BVH_STACK_SIZE) stack[sp++] = dirNeg ? first : second;
+                node = dirNeg ? second : first;
+                descended = true;
+            }
+        }
+        if (!descended && !done) {
+            if (sp == 0) done = true;
+            else node = stack[--sp];
+        }
+    }
+    return found;
+#endif
+}
+
+// Is anything in (0, tMax) along the ray? For shadow rays: tMax is the light's distance (in units
+// of |dir|), so a light's own surface should lie beyond the interval.
+RL_FN bool occludedBvh(Ray ray, float tMax) {
+    TraceRecord rec;
+    return traceScene(ray, tMax, true, rec);
+}
+
+// The surface at a record: position from barycentrics (triangles) or re-projected (spheres),
+// with its error bound; geometric normal (unit, pointing out of a sphere / along e01 × e02 of a
+// triangle); shading normal (interpolated vertex normals, else the geometric one); uv.
+struct SurfaceHit {
+    vec3 position;
+    vec3 normal;
+    vec3 shadingNormal;
+    vec3 error;
+    vec2 uv;
+    uint material;
+    float lodBase;   // ½·log2(uv area / world area) around the hit, for ray-cone texture LOD
+    vec3 tangent;    // ∂p/∂u in world space (normal maps' tangent frame); 0 where undefined
+};
+
+RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
+    GpuInstance inst = instanceAt(rec.instance);
+    SurfaceHit s;
+    s.material = inst.info.z;
+    s.lodBase = 0.0f;
+    s.tangent = vec3(0.0f);
+#ifdef RAYLAB_FEATURE_SPHERES
+    if (inst.info.x == INSTANCE_SPHERE) {
+        GpuSphere sp = sphereAt(rec.primitive);
+        vec3 c = xyzOf(sp.centerRadius);
+        float r = sp.centerRadius.w;
+        s.position = sphereSurfacePoint(rayAt(ray, rec.t), c, r);
+        s.normal = normalize(s.position - c);
+        s.shadingNormal = s.normal;
+        s.error = sphereHitError(c, r);
+        // Equirectangular uv: u around +y from +x, v from the bottom pole.
+        s.uv = vec2(0.0f);
+#ifdef RAYLAB_FEATURE_TEXTURES   // uv and its footprint only where something reads them
+        s.uv = vec2(0.5f + atan(s.normal.z, s.normal.x) * (0.5f * INV_PI),
+                    acos(clamp(-s.normal.y, -1.0f, 1.0f)) * INV_PI);
+        // du·dv = dθ·dφ / (2π²) against dA = r²·sinθ·dθ·dφ.
+        float sinTheta = max(sqrt(max(0.0f, 1.0f - s.normal.y * s.normal.y)), 1e-6f);
+        s.lodBase = 0.5f * log2(1.0f / (2.0f * PI * PI * r * r * sinTheta));
+        s.tangent = vec3(-s.normal.z, 0.0f, s.normal.x);   // direction of growing u (longitude)
+#endif
+        return s;
+    }
+#endif
+#ifdef RAYLAB_FEATURE_MESHES
+    GpuTriangle tri = triangleAt(rec.primitive);
+    GpuVertex v0 = vertexAt(tri.vertices.x);
+    GpuVertex v1 = vertexAt(tri.vertices.y);
+    GpuVertex v2 = vertexAt(tri.vertices.z);
+    vec3 p0 = xyzOf(v0.positionU);
+    vec3 p1 = xyzOf(v1.positionU);
+    vec3 p2 = xyzOf(v2.positionU);
+    TriangleHit h = TriangleHit(rec.t, 1.0f - rec.b1 - rec.b2, rec.b1, rec.b2);
+    vec3 pObj = triangleHitPoint(h, p0, p1, p2);
+    vec3 eObj = triangleHitError(h, p0, p1, p2);
+    s.position = transformPoint(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, pObj);
+    // A ray leaving this point is transformed back into object space (intersectInstance), which
+    // rounds its origin again; the bound includes that error too, so the offset clears both.
+    vec3 eBack = transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, s.position,
+                                     vec3(0.0f));
+    s.error = transformPointError(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, pObj, eObj + eBack);
+    s.normal = normalize(transformNormal(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2,
+                                         cross(p1 - p0, p2 - p0)));
+    s.shadingNormal = s.normal;
+#ifdef RAYLAB_FEATURE_SMOOTH_NORMALS
+    if ((inst.info.w & 1u) != 0u) {
+        vec3 n = h.b0 * xyzOf(v0.normalV) + h.b1 * xyzOf(v1.normalV) + h.b2 * xyzOf(v2.normalV);
+        vec3 nw = transformNormal(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, n);
+        if (dot(nw, nw) > 0.0f) s.shadingNormal = normalize(nw);
+    }
+#endif
+    vec2 t0 = vec2(v0.positionU.w, v0.normalV.w);
+    vec2 t1 = vec2(v1.positionU.w, v1.normalV.w);
+    vec2 t2 = vec2(v2.positionU.w, v2.normalV.w);
+    s.uv = h.b0 * t0 + h.b1 * t1 + h.b2 * t2;
+#ifdef RAYLAB_FEATURE_TEXTURES
+    // Ray Tracing Gems ch. 20, eq. 34: texel-to-world area ratio of the triangle (world edges).
+    vec3 w1 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p1 - p0);
+    vec3 w2 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p2 - p0);
+    float uvArea = abs((t1.x - t0.x) * (t2.y - t0.y) - (t2.x - t0.x) * (t1.y - t0.y));
+    s.lodBase = 0.5f * log2(max(uvArea, 1e-30f) / max(length(cross(w1, w2)), 1e-30f));
+    // ∂p/∂u from the uv differences of the edges (pbrt-v4 Triangle::InteractionFromIntersection).
+    vec2 duv1 = t1 - t0;
+    vec2 duv2 = t2 - t0;
+    float uvDet = duv1.x * duv2.y - duv1.y * duv2.x;
+    if (uvDet != 0.0f) s.tangent = (duv2.y * w1 - duv1.y * w2) / uvDet;
+#endif
+#endif
+    return s;
+}
+
+RL_NAMESPACE_END
+#endif

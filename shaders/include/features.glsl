@@ -1,0 +1,27 @@
+// Scene features the tracer can be specialised for (performance.md: skip what a scene does not
+// need). The host (render/shader_variant.cpp) defines RAYLAB_FEATURES_SPECIALISED and exactly the
+// features the scene uses, right after #version; absent features compile to nothing. Without
+// RAYLAB_FEATURES_SPECIALISED (C++ mirrors, test shaders) every feature is on. Shared by C++ and
+// GLSL (preprocessor only).
+//   RAYLAB_FEATURE_SPHERES         the scene has spheres
+//   RAYLAB_FEATURE_MESHES          the scene has triangle meshes
+//   RAYLAB_FEATURE_SMOOTH_NORMALS  some mesh has per-vertex normals
+//   RAYLAB_FEATURE_DOF             the camera has a lens (camera.aperture > 0)
+//   RAYLAB_FEATURE_TEXTURES        some material has an image texture
+//   RAYLAB_TOP_LEVEL_LINEAR        few objects: loop over them instead of the top-level BVH
+//   RAYLAB_NEE                     next-event estimation (render.nee)
+//   RAYLAB_GENERAL_BSDF            GGX specular and glass (some material has f0 or transmission)
+//   RAYLAB_SKY_MAP                 an HDR environment image (sky.type map)
+#ifndef RAYLAB_FEATURES_GLSL
+#define RAYLAB_FEATURES_GLSL
+#ifndef RAYLAB_FEATURES_SPECIALISED
+#define RAYLAB_FEATURE_SPHERES 1
+#define RAYLAB_FEATURE_MESHES 1
+#define RAYLAB_FEATURE_SMOOTH_NORMALS 1
+#define RAYLAB_FEATURE_DOF 1
+#define RAYLAB_FEATURE_TEXTURES 1
+#define RAYLAB_NEE 1
+#define RAYLAB_GENERAL_BSDF 1
+#define RAYLAB_SKY_MAP 1
+#endif
+#endif

@@ -1,0 +1,36 @@
+// The host contract for geometry (bindings 8–13, render/gpu_scene.cpp) and the accessors the
+// shared traversal (bvh_traversal.glsl) reads through. GLSL only.
+// Optional define RAYLAB_COUNT_TRAVERSAL: every box and triangle test is counted per invocation
+// (gBoxTests, gTriangleTests) and summed into the TraversalCounters buffer (heat-map views).
+#ifndef RAYLAB_SCENE_GEOMETRY_GLSL
+#define RAYLAB_SCENE_GEOMETRY_GLSL
+#include "scene_types.glsl"
+#include "geometry_types.glsl"
+#include "scene_data.glsl"
+
+layout(std430, binding = 8) readonly buffer TopNodeBuffer { GpuBvhNode topNodes[]; };
+layout(std430, binding = 9) readonly buffer MeshNodeBuffer { GpuBvhNode meshNodes[]; };
+layout(std430, binding = 10) readonly buffer InstanceBuffer { GpuInstance instances[]; };
+layout(std430, binding = 11) readonly buffer TriangleBuffer { GpuTriangle triangles[]; };
+layout(std430, binding = 12) readonly buffer VertexBuffer { GpuVertex vertices[]; };
+
+GpuBvhNode topNode(uint i) { return topNodes[i]; }
+GpuBvhNode meshNode(uint i) { return meshNodes[i]; }
+GpuInstance instanceAt(uint i) { return instances[i]; }
+GpuTriangle triangleAt(uint i) { return triangles[i]; }
+GpuVertex vertexAt(uint i) { return vertices[i]; }
+GpuSphere sphereAt(uint i) { return spheres[i]; }
+uint instanceCount() { return uint(instances.length()); }
+
+#ifdef RAYLAB_COUNT_TRAVERSAL
+layout(std430, binding = 13) buffer TraversalCounters {
+    uint boxTestsTotal;
+    uint triangleTestsTotal;
+};
+uint gBoxTests = 0u;
+uint gTriangleTests = 0u;
+#define RL_COUNT_BOX() (++gBoxTests)
+#define RL_COUNT_TRIANGLE() (++gTriangleTests)
+#endif
+
+#endif

@@ -1,0 +1,30 @@
+#pragma once
+// The GPU's BVH traversal (shaders/include/bvh_traversal.glsl) run on the CPU over a
+// SceneGeometry: the reference for tests and a way to inspect traversal without a GPU.
+// Not thread-safe: one current geometry per thread.
+#include "accel/scene_geometry.h"
+
+#include <cstdint>
+
+namespace raylab::glsl {
+
+struct CpuTraversalState {
+    const SceneGeometry* geometry = nullptr;
+    std::uint64_t boxTests = 0;
+    std::uint64_t triangleTests = 0;
+};
+inline thread_local CpuTraversalState cpuTraversal;
+
+inline GpuBvhNode topNode(uint i) { return cpuTraversal.geometry->topNodes[i]; }
+inline GpuBvhNode meshNode(uint i) { return cpuTraversal.geometry->meshNodes[i]; }
+inline GpuInstance instanceAt(uint i) { return cpuTraversal.geometry->instances[i]; }
+inline GpuTriangle triangleAt(uint i) { return cpuTraversal.geometry->triangles[i]; }
+inline GpuVertex vertexAt(uint i) { return cpuTraversal.geometry->vertices[i]; }
+inline GpuSphere sphereAt(uint i) { return cpuTraversal.geometry->spheres[i]; }
+inline uint instanceCount() { return uint(cpuTraversal.geometry->instances.size()); }
+
+} // namespace raylab::glsl
+
+#define RL_COUNT_BOX() (++::raylab::glsl::cpuTraversal.boxTests)
+#define RL_COUNT_TRIANGLE() (++::raylab::glsl::cpuTraversal.triangleTests)
+#include "shaders/include/bvh_traversal.glsl"

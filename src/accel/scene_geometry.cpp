@@ -1,0 +1,113 @@
+#include "accel/scene_geometry.h"
+
+#include "scene/transform.h"
+
+#include <chrono>
+
+namespace raylab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+glsl::GpuBvhNode gpuNode(const BvhNode& n, std::uint32_t nodeOffset, std::uint32_t primitiveOffset) {
+    const bool leaf = n.count > 0;
+    const Aabb b = n.bounds.empty() ? Aabb{glm::vec3(0.0f), glm::vec3(-1.0f)} : n.bounds;   // never hit
+    return {glm::vec4(b.min, 0.0f), glm::vec4(b.max, 0.0f),
+            glm::uvec4(leaf ? primitiveOffset + n.index : nodeOffset + n.index, n.count, n.axis, leaf ? 0u : 1u)};
+}
+
+// Rows of the upper 3×4 part of an affine matrix (glm is column-major: m[column][row]).
+void rows(const glm::mat4& m, glm::vec4& r0, glm::vec4& r1, glm::vec4& r2) {
+    r0 = glm::vec4(m[0][0], m[1][0], m[2][0], m[3][0]);
+    r1 = glm::vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
+    r2 = glm::vec4(m[0][2], m[1][2], m[2][2], m[3][2]);
+}
+
+} // namespace
+
+SceneGeometry buildSceneGeometry(const Scene& scene, const BvhOptions& options) {
+    SceneGeometry g;
+    const auto start = Clock::now();
+    double weightedSah = 0.0;
+    for (const Mesh& mesh : scene.meshes) {
+        std::vector<Aabb> bounds(mesh.triangles.size());
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+            for (int k = 0; k < 3; ++k) bounds[i].grow(mesh.positions[mesh.triangles[i][k]]);
+        const Bvh bvh = buildBvh(bounds, options);
+        const auto nodeOffset = std::uint32_t(g.meshNodes.size());
+        const auto triangleOffset = std::uint32_t(g.triangles.size());
+        const auto vertexOffset = std::uint32_t(g.vertices.size());
+        for (const BvhNode& n : bvh.nodes) g.meshNodes.push_back(gpuNode(n, nodeOffset, triangleOffset));
+        for (std::uint32_t t : bvh.order)
+            g.triangles.push_back({glm::uvec4(mesh.triangles[t] + glm::uvec3(vertexOffset), 0u)});
+        for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+            const glm::vec2 uv = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[v];
+            const glm::vec3 n = mesh.normals.empty() ? glm::vec3(0.0f) : mesh.normals[v];
+            g.vertices.push_back({glm::vec4(mesh.positions[v], uv.x), glm::vec4(n, uv.y)});
+        }
+        g.meshRoot.push_back(nodeOffset);
+        g.meshBounds.push_back(bvh.nodes.empty() ? Aabb{} : bvh.nodes[0].bounds);
+        g.maxDepth = std::max(g.maxDepth, bvh.depth);
+        weightedSah += bvh.sahCost() * double(mesh.triangles.size());
+    }
+    g.meshBuildSeconds = secondsSince(start);
+    if (!g.triangles.empty()) g.meshSahCost = weightedSah / double(g.triangles.size());
+    updateTopLevel(g, scene, options);
+    return g;
+}
+
+void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& options) {
+    const auto start = Clock::now();
+    std::vector<glsl::GpuInstance> objects;
+    std::vector<Aabb> bounds;
+    g.spheres.clear();
+    for (const Sphere& s : scene.spheres) {
+        const Sphere w = worldSphere(s);
+        glsl::GpuInstance inst{};
+        inst.info = glm::uvec4(glsl::INSTANCE_SPHERE, unsigned(g.spheres.size()), unsigned(s.material), 0u);
+        g.spheres.push_back({glm::vec4(w.center, w.radius), glm::uvec4(unsigned(s.material), 0u, 0u, 0u)});
+        objects.push_back(inst);
+        // Widened by a few ulps: the rounded c ± r may fall just inside the sphere's extent.
+        const glm::vec3 slack = 4.0f * 5.9604645e-8f * (glm::abs(w.center) + glm::vec3(w.radius));
+        bounds.push_back(Aabb{w.center - glm::vec3(w.radius) - slack, w.center + glm::vec3(w.radius) + slack});
+    }
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        const glm::mat4 toWorld = transformMatrix(mesh.transform);
+        const glm::mat4 toObject = inverseTransformMatrix(mesh.transform);
+        glsl::GpuInstance inst{};
+        rows(toObject, inst.worldToObject0, inst.worldToObject1, inst.worldToObject2);
+        rows(toWorld, inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2);
+        const unsigned flags = (mesh.normals.empty() ? 0u : 1u) | (mesh.uvs.empty() ? 0u : 2u);
+        inst.info = glm::uvec4(glsl::INSTANCE_MESH, g.meshRoot.at(m), unsigned(mesh.material), flags);
+        objects.push_back(inst);
+        Aabb world;
+        const Aabb& b = g.meshBounds.at(m);
+        if (!b.empty()) {
+            for (int c = 0; c < 8; ++c) {
+                const glm::vec3 corner((c & 1) ? b.max.x : b.min.x, (c & 2) ? b.max.y : b.min.y,
+                                       (c & 4) ? b.max.z : b.min.z);
+                world.grow(glm::vec3(toWorld * glm::vec4(corner, 1.0f)));
+            }
+            // The rounded corners may sit a little inside the exact box: widen by a few ulps.
+            const glm::vec3 slack = 4.0f * 5.9604645e-8f * (glm::abs(world.min) + glm::abs(world.max));
+            world.min -= slack;
+            world.max += slack;
+        }
+        bounds.push_back(world);
+    }
+    const Bvh top = buildBvh(bounds, options);
+    g.topNodes.clear();
+    for (const BvhNode& n : top.nodes) g.topNodes.push_back(gpuNode(n, 0u, 0u));
+    g.instances.clear();
+    for (std::uint32_t i : top.order) g.instances.push_back(objects[i]);
+    g.topSahCost = top.sahCost();
+    g.maxDepth = std::max(g.maxDepth, top.depth);
+    g.topBuildSeconds = secondsSince(start);
+}
+
+} // namespace raylab

@@ -1,0 +1,76 @@
+#include "texture/texture.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+namespace {
+
+float srgbDecode(float v) {   // IEC 61966-2-1
+    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+} // namespace
+
+std::vector<MipLevel> buildMipPyramid(MipLevel base) {
+    std::vector<MipLevel> levels;
+    levels.push_back(std::move(base));
+    while (levels.back().width > 1 || levels.back().height > 1) {
+        const MipLevel& src = levels.back();
+        MipLevel dst;
+        dst.width = std::max(1, src.width / 2);
+        dst.height = std::max(1, src.height / 2);
+        dst.texels.resize(std::size_t(dst.width) * std::size_t(dst.height));
+        // Box filter over the 2×2 (or, for an odd last row/column, up to 3×3) source texels.
+        for (int y = 0; y < dst.height; ++y)
+            for (int x = 0; x < dst.width; ++x) {
+                const int x0 = 2 * x, y0 = 2 * y;
+                const int x1 = (x == dst.width - 1) ? src.width : std::min(src.width, x0 + 2);
+                const int y1 = (y == dst.height - 1) ? src.height : std::min(src.height, y0 + 2);
+                glm::vec4 sum(0.0f);
+                for (int sy = y0; sy < y1; ++sy)
+                    for (int sx = x0; sx < x1; ++sx) sum += src.texels[std::size_t(sy) * std::size_t(src.width) + std::size_t(sx)];
+                dst.texels[std::size_t(y) * std::size_t(dst.width) + std::size_t(x)] = sum / float((x1 - x0) * (y1 - y0));
+            }
+        levels.push_back(std::move(dst));
+    }
+    return levels;
+}
+
+Texture loadTexture(const std::filesystem::path& path, bool linearData) {
+    using namespace OIIO;
+    const std::string name = path.string();
+    auto in = ImageInput::open(name);
+    if (!in) {
+        std::string err = geterror();
+        if (err.empty()) err = "cannot open";
+        throw TextureError(name + ": " + err);
+    }
+    const ImageSpec& spec = in->spec();
+    const int w = spec.width, h = spec.height, c = spec.nchannels;
+    if (w <= 0 || h <= 0 || c <= 0) throw TextureError(name + ": empty image");
+    std::vector<float> raw(std::size_t(w) * std::size_t(h) * std::size_t(c));
+    if (!in->read_image(0, 0, 0, c, TypeDesc::FLOAT, raw.data()))
+        throw TextureError(name + ": " + in->geterror());
+    const bool encoded = !linearData && !spec.format.is_floating_point();
+    MipLevel base;
+    base.width = w;
+    base.height = h;
+    base.texels.resize(std::size_t(w) * std::size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float* p = &raw[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * std::size_t(c)];
+            glm::vec4 v(p[0], c > 1 ? p[1] : p[0], c > 2 ? p[2] : p[0], c > 3 ? p[3] : 1.0f);
+            if (encoded)
+                for (int k = 0; k < 3; ++k) v[k] = srgbDecode(v[k]);
+            // Files store the top row first; v = 0 is the bottom (OpenGL convention).
+            base.texels[std::size_t(h - 1 - y) * std::size_t(w) + std::size_t(x)] = v;
+        }
+    Texture t;
+    t.levels = buildMipPyramid(std::move(base));
+    return t;
+}
+
+} // namespace raylab

@@ -1,0 +1,234 @@
+// BVH construction invariants, and the traversal (the shader's code run on the CPU, and on the GPU)
+// against brute force on random scenes of spheres and transformed meshes.
+#include "accel/bvh.h"
+#include "accel/cpu_traversal.h"
+#include "scene/transform.h"
+#include "scene/scene_loader.h"
+#include "support/gl_test.h"
+#include "support/gpu_trace.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace raylab;
+
+namespace {
+
+bool contains(const Aabb& outer, const Aabb& inner) {
+    return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::greaterThanEqual(outer.max, inner.max));
+}
+
+// Random scene: spheres and meshes of random triangles, with random transforms.
+Scene randomScene(std::uint32_t seed, int spheres, int meshes, int trianglesPerMesh) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    Scene s;
+    s.materials.push_back(Material{});
+    for (int i = 0; i < spheres; ++i) {
+        Sphere sp;
+        sp.center = 10.0f * glm::vec3(u(rng), u(rng), u(rng));
+        sp.radius = 0.2f + 0.8f * std::abs(u(rng));
+        if (i % 2) {
+            sp.transform.translation = glm::vec3(u(rng), u(rng), u(rng));
+            sp.transform.rotation = 180.0f * glm::vec3(u(rng), u(rng), u(rng));
+            sp.transform.scale = glm::vec3(1.0f + 0.5f * u(rng));
+        }
+        s.spheres.push_back(sp);
+    }
+    for (int m = 0; m < meshes; ++m) {
+        Mesh mesh;
+        for (int t = 0; t < trianglesPerMesh; ++t) {
+            const glm::vec3 c = 3.0f * glm::vec3(u(rng), u(rng), u(rng));
+            for (int k = 0; k < 3; ++k) mesh.positions.push_back(c + 0.4f * glm::vec3(u(rng), u(rng), u(rng)));
+            const unsigned b = unsigned(3 * t);
+            mesh.triangles.emplace_back(b, b + 1, b + 2);
+        }
+        mesh.transform.translation = 8.0f * glm::vec3(u(rng), u(rng), u(rng));
+        mesh.transform.rotation = 180.0f * glm::vec3(u(rng), u(rng), u(rng));
+        mesh.transform.scale = glm::vec3(1.0f + 0.5f * u(rng), 1.0f + 0.5f * u(rng), 1.0f + 0.5f * u(rng));
+        s.meshes.push_back(mesh);
+    }
+    return s;
+}
+
+std::vector<test::TestRay> randomRays(std::uint32_t seed, int n) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<test::TestRay> rays;
+    for (int i = 0; i < n; ++i) {
+        const glm::vec3 o = 15.0f * glm::vec3(u(rng), u(rng), u(rng));
+        const glm::vec3 target = 8.0f * glm::vec3(u(rng), u(rng), u(rng));
+        glm::vec3 d = target - o;
+        if (i % 7 == 0) d.x = 0.0f;   // zero direction components
+        if (i % 11 == 0) d.y = 0.0f;
+        const float tMax = 1.5f * std::abs(u(rng));   // shadow query: part of the way to the target
+        rays.push_back({glm::vec4(o, 0.0f), glm::vec4(d, tMax)});
+    }
+    return rays;
+}
+
+// Brute force over every object and triangle, with the same per-primitive code.
+struct Reference {
+    bool hit = false;
+    glsl::TraceRecord rec{};
+};
+
+Reference bruteForce(const SceneGeometry& g, const Scene& scene, glsl::Ray ray, float tMax, bool anyHit) {
+    Reference r;
+    r.rec = glsl::TraceRecord(tMax, 0u, 0u, 0.0f, 0.0f);
+    std::vector<std::uint32_t> firstTriangle;
+    std::uint32_t offset = 0;
+    for (const Mesh& m : scene.meshes) {
+        firstTriangle.push_back(offset);
+        offset += std::uint32_t(m.triangles.size());
+    }
+    for (std::uint32_t i = 0; i < g.instances.size(); ++i) {
+        const glsl::GpuInstance& inst = g.instances[i];
+        if (inst.info.x == glsl::INSTANCE_SPHERE) {
+            const glm::vec4 s = g.spheres[inst.info.y].centerRadius;
+            const float t = glsl::intersectSphere(ray, glm::vec3(s), s.w, 0.0f, r.rec.t);
+            if (t > 0.0f) {
+                r.rec = glsl::TraceRecord(t, i, inst.info.y, 0.0f, 0.0f);
+                r.hit = true;
+            }
+            continue;
+        }
+        const std::size_t m = std::size_t(std::find(g.meshRoot.begin(), g.meshRoot.end(), inst.info.y) - g.meshRoot.begin());
+        // The same object-space ray as the traversal: origin moved past its rounding error by dt.
+        const glm::vec3 o = glsl::transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin);
+        const glm::vec3 d = glsl::transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir);
+        const glm::vec3 oError = glsl::transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2,
+                                                          ray.origin, glm::vec3(0.0f));
+        const float dt = glm::dot(glm::abs(d), oError) / glm::dot(d, d);
+        const glsl::Ray local(o + dt * d, d);
+        for (std::uint32_t k = 0; k < scene.meshes[m].triangles.size(); ++k) {
+            const std::uint32_t ti = firstTriangle[m] + k;
+            const glm::uvec4 v = g.triangles[ti].vertices;
+            glsl::TriangleHit h{};
+            if (glsl::intersectTriangle(local, glm::vec3(g.vertices[v.x].positionU), glm::vec3(g.vertices[v.y].positionU),
+                                        glm::vec3(g.vertices[v.z].positionU), r.rec.t - dt, h)) {
+                r.rec = glsl::TraceRecord(h.t + dt, i, ti, h.b1, h.b2);
+                r.hit = true;
+            }
+        }
+        if (anyHit && r.hit) return r;
+    }
+    return r;
+}
+
+} // namespace
+
+TEST(Bvh, EveryPrimitiveOnceAndBoundsNest) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (int n : {1, 2, 3, 17, 1000, 20000}) {
+        std::vector<Aabb> boxes(static_cast<std::size_t>(n));
+        for (Aabb& b : boxes) {
+            const glm::vec3 c(100.0f * u(rng), 100.0f * u(rng), u(rng));
+            b.grow(c);
+            b.grow(c + glm::abs(glm::vec3(u(rng), u(rng), u(rng))));
+        }
+        if (n == 20000)
+            for (int i = 0; i < 5000; ++i) boxes[std::size_t(i)] = boxes[0];   // many identical boxes
+        const Bvh bvh = buildBvh(boxes);
+        std::vector<int> seen(static_cast<std::size_t>(n), 0);
+        for (std::uint32_t p : bvh.order) ++seen.at(p);
+        for (int s : seen) ASSERT_EQ(s, 1) << n;
+        std::size_t inLeaves = 0;
+        for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
+            const BvhNode& node = bvh.nodes[i];
+            if (node.count > 0) {
+                inLeaves += node.count;
+                for (std::uint32_t k = node.index; k < node.index + node.count; ++k)
+                    ASSERT_TRUE(contains(node.bounds, boxes[bvh.order[k]])) << n << " leaf " << i;
+            } else {
+                ASSERT_GT(node.index, i + 1);
+                ASSERT_TRUE(contains(node.bounds, bvh.nodes[i + 1].bounds)) << n << " node " << i;
+                ASSERT_TRUE(contains(node.bounds, bvh.nodes[node.index].bounds)) << n << " node " << i;
+            }
+        }
+        EXPECT_EQ(inLeaves, std::size_t(n));
+        EXPECT_LE(bvh.depth, 60) << "the GPU stack holds 64 entries";
+        // SAH cost is at least that of testing the root's box and one primitive (n > 1), and far
+        // below testing every primitive for a large random set.
+        if (n >= 1000) {
+            EXPECT_LT(bvh.sahCost(), 0.1 * n) << n;
+        }
+    }
+}
+
+TEST(Bvh, CpuTraversalMatchesBruteForceNearestAndShadow) {
+    for (std::uint32_t seed : {1u, 2u, 3u}) {
+        const Scene scene = randomScene(seed, 40, 5, 200);
+        const SceneGeometry g = buildSceneGeometry(scene);
+        glsl::cpuTraversal.geometry = &g;
+        int hits = 0, occludedCount = 0;
+        for (const test::TestRay& tr : randomRays(seed + 100, 4000)) {
+            const glsl::Ray ray(glm::vec3(tr.origin), glm::vec3(tr.dir));
+            glsl::TraceRecord rec{};
+            const bool hit = glsl::traceScene(ray, glsl::FLOAT_MAX, false, rec);
+            const Reference ref = bruteForce(g, scene, ray, glsl::FLOAT_MAX, false);
+            ASSERT_EQ(hit, ref.hit);
+            if (hit) {
+                ++hits;
+                ASSERT_EQ(rec.t, ref.rec.t);
+                ASSERT_EQ(rec.instance, ref.rec.instance);
+                ASSERT_EQ(rec.primitive, ref.rec.primitive);
+            }
+            const bool occ = glsl::occludedBvh(ray, tr.dir.w);
+            ASSERT_EQ(occ, bruteForce(g, scene, ray, tr.dir.w, true).hit);
+            occludedCount += occ;
+        }
+        EXPECT_GT(hits, 500) << "the test should exercise hits";
+        EXPECT_GT(occludedCount, 200);
+        EXPECT_LT(occludedCount, hits);
+    }
+    glsl::cpuTraversal.geometry = nullptr;
+}
+
+TEST(Bvh, MovingAnObjectOnlyRebuildsTheTopLevel) {
+    Scene scene = randomScene(9, 3, 2, 100);
+    SceneGeometry g = buildSceneGeometry(scene);
+    const auto meshNodes = g.meshNodes.size();
+    const auto firstNode = g.meshNodes[0].boundsMin;
+    scene.meshes[0].transform.translation += glm::vec3(100.0f, 0.0f, 0.0f);
+    updateTopLevel(g, scene);
+    EXPECT_EQ(g.meshNodes.size(), meshNodes);
+    EXPECT_EQ(g.meshNodes[0].boundsMin, firstNode);
+    // The moved mesh is found where it went.
+    glsl::cpuTraversal.geometry = &g;
+    const glm::vec3 c = glm::vec3(transformMatrix(scene.meshes[0].transform) * glm::vec4(scene.meshes[0].positions[0], 1.0f));
+    const glsl::Ray ray(c + glm::vec3(0.0f, 0.0f, 50.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+    glsl::TraceRecord rec{};
+    ASSERT_TRUE(glsl::traceScene(ray, glsl::FLOAT_MAX, false, rec));
+    EXPECT_EQ(bruteForce(g, scene, ray, glsl::FLOAT_MAX, false).rec.instance, rec.instance);
+    glsl::cpuTraversal.geometry = nullptr;
+}
+
+class BvhGpuTest : public test::GlTest {};
+
+TEST_F(BvhGpuTest, GpuTraversalMatchesBruteForceNearestAndShadow) {
+    const Scene scene = randomScene(5, 40, 5, 200);
+    GpuScene gpu;
+    gpu.upload(scene);
+    const SceneGeometry& g = gpu.geometry();
+    const std::vector<test::TestRay> rays = randomRays(77, 4000);
+    const std::vector<test::GpuTraceResult> results = test::gpuTrace(gpu, rays);
+    int hits = 0, primitiveMismatch = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const glsl::Ray ray(glm::vec3(rays[i].origin), glm::vec3(rays[i].dir));
+        const Reference ref = bruteForce(g, scene, ray, glsl::FLOAT_MAX, false);
+        ASSERT_EQ(results[i].t >= 0.0f, ref.hit) << "ray " << i;
+        if (ref.hit) {
+            ++hits;
+            EXPECT_NEAR(results[i].t, ref.rec.t, 1e-5f * ref.rec.t) << "ray " << i;
+            primitiveMismatch += results[i].instance != ref.rec.instance || results[i].primitive != ref.rec.primitive;
+        }
+        ASSERT_EQ(results[i].occluded, bruteForce(g, scene, ray, rays[i].dir.w, true).hit) << "ray " << i;
+    }
+    EXPECT_GT(hits, 500);
+    EXPECT_EQ(primitiveMismatch, 0);
+}
+

@@ -1,0 +1,99 @@
+// Per-scene specialisation: the feature set, the variant cache, and that the all-features shader
+// computes the same thing.
+#include "render/shader_variant.h"
+#include "render_helpers.h"
+#include "support/gl_test.h"
+#include "support/statistics.h"
+
+#include <cmath>
+
+using namespace raylab;
+
+TEST(ShaderVariant, FeaturesComeFromTheScene) {
+    const Scene spheres = loadScene(test::scenePath("default.json"));
+    EXPECT_EQ(featureName(sceneFeatures(spheres)), "spheres+few-objects");
+    Scene s = spheres;
+    s.meshes.push_back(Mesh{});
+    s.meshes[0].normals.push_back(glm::vec3(0, 0, 1));
+    s.camera.aperture = 0.1f;
+    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects");
+    for (int i = 0; i < 20; ++i) s.spheres.push_back(Sphere{});
+    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof") << "many objects: top-level BVH";
+    const ShaderDefines d = featureDefines(sceneFeatures(spheres));
+    ASSERT_EQ(d.size(), 3u);
+    EXPECT_EQ(d[0].first, "RAYLAB_FEATURES_SPECIALISED");
+    EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
+    EXPECT_EQ(d[2].first, "RAYLAB_TOP_LEVEL_LINEAR");
+    EXPECT_EQ(featureDefines(allFeatures()).size(), 9u);   // 5 geometry features + NEE, BSDF, sky map
+}
+
+class ShaderVariantTest : public test::GlTest {};
+
+TEST_F(ShaderVariantTest, VariantsAreNamedCompiledOnceAndReused) {
+    const Scene spheres = loadScene(test::scenePath("furnace.json"));
+    Scene lens = spheres;
+    lens.camera.aperture = 0.01f;
+    PathTracer tracer;
+    EXPECT_EQ(tracer.compileSeconds(), 0.0);
+    tracer.setScene(spheres);
+    EXPECT_EQ(tracer.variantName(), "fragment [spheres+few-objects]");
+    const double first = tracer.compileSeconds();
+    EXPECT_GT(first, 0.0);
+    tracer.setScene(lens);
+    EXPECT_EQ(tracer.variantName(), "fragment [spheres+dof+few-objects]");
+    tracer.setScene(spheres);
+    EXPECT_EQ(tracer.compileSeconds(), first) << "the cached program, not a new compile";
+    TracerOptions all;
+    all.specialise = false;
+    PathTracer unspecialised(all);
+    unspecialised.setScene(spheres);
+    EXPECT_EQ(unspecialised.variantName(), "fragment [all features]");
+}
+
+TEST_F(ShaderVariantTest, AllFeaturesShaderPassesTheFurnaceExactly) {
+    const Scene scene = loadScene(test::scenePath("furnace.json"));
+    TracerOptions all;
+    all.specialise = false;
+    const Image image = test::render(scene, all);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) ASSERT_NEAR(image.rgb(x, y)[0], 0.5f, 1e-6f);
+}
+
+TEST_F(ShaderVariantTest, TraversalCountersCountBoxesAndTriangles) {
+    TracerOptions counting;
+    counting.extraDefines = {{"RAYLAB_COUNT_TRAVERSAL", "1"}};
+    Scene scene = loadScene(test::scenePath("furnace.json"), {"render.spp=1"});
+    PathTracer tracer(counting);
+    tracer.setScene(scene);
+    tracer.renderPass();
+    EXPECT_GT(tracer.raysTraced(), 0u);
+    EXPECT_EQ(tracer.boxTests(), 0u) << "one sphere: no top-level BVH, no boxes";
+    EXPECT_EQ(tracer.triangleTests(), 0u) << "spheres only";
+    scene.meshes.push_back(parseScene(R"({ "objects": [ { "type": "mesh", "positions": [-50,-50,3, 50,-50,3, 0,50,3],
+        "indices": [0, 1, 2] } ] })", "tri.json").meshes[0]);
+    tracer.setScene(scene);
+    tracer.renderPass();
+    EXPECT_GT(tracer.triangleTests(), 0u) << "bounce rays towards +z meet the triangle behind the camera";
+    EXPECT_GE(tracer.boxTests(), tracer.triangleTests()) << "the mesh's root box before its triangle";
+}
+
+TEST_F(ShaderVariantTest, SpecialisedAndAllFeaturesAgreeOnTheCornellBox) {
+    // Meshes, few objects, no textures: the specialised shader and the one with every feature
+    // (top-level BVH, textures, DOF, smooth normals compiled in) estimate the same image. The
+    // all-features shader draws a lens sample, so the two are independent renders: the per-pixel
+    // difference must have mean 0 within 4 standard errors (fixed seeds).
+    const Scene scene = loadScene(test::scenePath("cornell_box.json"),
+                                  {"render.width=16", "render.height=16", "render.spp=64"});
+    TracerOptions all;
+    all.specialise = false;
+    const Image a = test::render(scene);
+    const Image b = test::render(scene, all);
+    for (int c = 0; c < 3; ++c) {
+        std::vector<double> d;
+        for (size_t i = size_t(c); i < a.rgba.size(); i += 4) d.push_back(double(a.rgba[i]) - double(b.rgba[i]));
+        const double m = test::mean(d), se = test::standardError(d);
+        EXPECT_GT(se, 0.0);
+        EXPECT_LT(std::abs(m), 4.0 * se) << "channel " << c << " mean difference " << m;
+        EXPECT_GT(test::mean(test::channel(a, c)), 0.01) << "the box is lit";
+    }
+}
