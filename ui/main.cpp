@@ -3,7 +3,7 @@
 #include "app/frame_pacer.h"
 #include "app/log.h"
 #include "app/screenshot.h"
-#include "app/script.h"
+#include "script/script.h"
 #include "app/script_runner.h"
 #include "app/viewer.h"
 #include "glfw_context.h"

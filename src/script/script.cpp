@@ -21,13 +21,15 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"select", {1, 1}},      {"debug-view", {1, 1}},  {"overlay", {2, 2}},    {"scale", {1, 1}},
         {"pause", {0, 0}},       {"resume", {0, 0}},      {"reset", {0, 0}},      {"wait-spp", {1, 1}},
         {"wait-frames", {1, 1}}, {"screenshot", {1, 1}},  {"export", {1, 1}},     {"save", {1, 1}},
-        {"window", {2, 2}},      {"quit", {0, 0}},
+        {"window", {2, 2}},      {"quit", {0, 0}},        {"debug-bounce", {1, 1}},
     };
     return table;
 }
 
-constexpr std::array<std::string_view, 7> kDebugViews = {"beauty", "normals", "albedo", "depth",
-                                                         "material-id", "nan", "noise"};
+// The viewer's debug views by name (ui/app/debug_view.h; a viewer test keeps the two in step).
+constexpr std::array<std::string_view, 10> kDebugViews = {"beauty", "normals", "albedo",      "depth",
+                                                          "material-id", "nan", "noise", "bounce",
+                                                          "direct", "indirect"};
 
 bool isNumber(const std::string& s) {
     double v = 0;
@@ -76,13 +78,15 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         if (n < it->second.min || n > it->second.max)
             fail(c.name + " takes " + std::to_string(it->second.min) + " argument(s), got " + std::to_string(n));
         const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "scale" ||
-                             c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window";
+                             c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window" ||
+                             c.name == "debug-bounce";
         if (numeric)
             for (const std::string& a : c.args)
                 if (!isNumber(a)) fail(c.name + ": '" + a + "' is not a number");
         if (c.name == "debug-view" &&
             std::find(kDebugViews.begin(), kDebugViews.end(), c.args[0]) == kDebugViews.end())
-            fail("unknown debug view '" + c.args[0] + "' (beauty, normals, albedo, depth, material-id, nan, noise)");
+            fail("unknown debug view '" + c.args[0] +
+                 "' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect)");
         if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected") ||
                                     (c.args[1] != "on" && c.args[1] != "off")))
             fail("overlay takes boxes|selected on|off");

@@ -9,7 +9,8 @@
 //   click X Y              a left click at window pixel (X, Y), as the mouse would
 //   pick X Y               select the object at image pixel (X, Y) of the traced image
 //   select N               select object N (as the outliner does)
-//   debug-view NAME        beauty, normals, albedo, depth, material-id, nan, noise
+//   debug-view NAME        beauty, normals, albedo, depth, material-id, nan, noise, bounce,
+//                          direct, indirect;  debug-bounce K: the bounce the "bounce" view shows
 //   overlay boxes on|off   object bounding boxes;  overlay selected on|off: only the selected one
 //   scale S                resolution scale of the traced image (0.125 to 2)
 //   pause | resume | reset

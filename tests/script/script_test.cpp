@@ -59,13 +59,13 @@ TEST(Script, RejectsMistakesWithFileAndLine) {
     EXPECT_EQ(errorOf("wait-spp lots\n"), "s.txt:1: error: wait-spp: 'lots' is not a number");
     EXPECT_EQ(errorOf("window 800 tall\n"), "s.txt:1: error: window: 'tall' is not a number");
     EXPECT_EQ(errorOf("debug-view heat\n"),
-              "s.txt:1: error: unknown debug view 'heat' (beauty, normals, albedo, depth, material-id, nan, noise)");
+              "s.txt:1: error: unknown debug view 'heat' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect)");
     EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected on|off");
     EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected on|off");
 }
 
 TEST(Script, EveryDebugViewNameParses) {
-    ASSERT_EQ(scriptDebugViews().size(), 7u);
+    ASSERT_EQ(scriptDebugViews().size(), 10u);
     for (std::string_view v : scriptDebugViews())
         EXPECT_EQ(errorOf("debug-view " + std::string(v) + "\n"), "<no error>") << v;
 }

@@ -2,7 +2,7 @@
 // Runs an automation script (app/script.h) one step per UI frame against the viewer, so each
 // command sees the frames before it drawn: waits (wait-spp, wait-frames, a pending screenshot)
 // hold the script, everything else runs at once. Window operations go through ScriptHost.
-#include "app/script.h"
+#include "script/script.h"
 #include "app/ui_state.h"
 #include "app/viewer.h"
 
