@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
     bool vsync = false;
     bool continuous = false;
     app.add_option("scene", scenePath, "Scene file (default: scenes/default.json)");
-    app.add_option("--script", scriptPath, "Automation script: one command a line (see ui/app/script.h)");
+    app.add_option("--script", scriptPath, "Automation script: one command a line (see src/script/script.h)");
     app.add_option("--script-timeout", scriptTimeout, "Seconds before a script that has not quit fails")->capture_default_str();
     app.add_option("--window", windowSize, "Window size W H")->expected(2)->capture_default_str();
     app.add_option("--scale", scale, "Resolution scale of the traced image")->check(CLI::Range(0.125, 2.0))->capture_default_str();
