@@ -4,6 +4,8 @@
 #include "support/gl_test.h"
 
 #include <OpenImageIO/imageio.h>
+#include "support/scene_errors.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -35,12 +37,7 @@ fs::path writeMap(const std::string& name, int w, int h, const std::function<flo
 }
 
 std::string errorOf(const std::string& text, const std::vector<std::string>& overrides = {}) {
-    try {
-        parseScene(text, "m.json", overrides);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "";
+    return test::sceneErrorOf(text, overrides, "m.json", "");
 }
 
 } // namespace

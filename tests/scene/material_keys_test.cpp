@@ -3,6 +3,8 @@
 #include "scene/parameters.h"
 #include "scene/scene_loader.h"
 
+#include "support/scene_errors.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -12,12 +14,7 @@ using namespace raylab;
 namespace {
 
 std::string errorOf(const std::string& text, const std::vector<std::string>& overrides = {}) {
-    try {
-        parseScene(text, "m.json", overrides);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "";
+    return test::sceneErrorOf(text, overrides, "m.json", "");
 }
 
 } // namespace

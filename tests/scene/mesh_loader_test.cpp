@@ -3,6 +3,8 @@
 #include "scene/scene_loader.h"
 #include "scene/transform.h"
 
+#include "support/scene_errors.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,12 +16,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string errorOf(const std::string& text, const std::string& file = "test.json") {
-    try {
-        parseScene(text, file);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "<no error>";
+    return test::sceneErrorOf(text, {}, file);
 }
 
 constexpr const char* kQuad = R"({ "materials": { "m": { "albedo": 0.5 } }, "objects": [

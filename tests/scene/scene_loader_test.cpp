@@ -2,6 +2,8 @@
 // --set overrides, and sceneToJson round-trips.
 #include "scene/scene_loader.h"
 
+#include "support/scene_errors.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,12 +22,7 @@ const fs::path kScenes = fs::path(RAYLAB_SOURCE_DIR) / "scenes";
 // The SceneError message for `text` (with `overrides`), or "<no error>".
 std::string errorOf(const std::string& text, const std::vector<std::string>& overrides = {},
                     const std::string& file = "test.json") {
-    try {
-        parseScene(text, file, overrides);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "<no error>";
+    return test::sceneErrorOf(text, overrides, file);
 }
 
 // One valid object, for texts that test something else.
