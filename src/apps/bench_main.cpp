@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
         "and, when blender is installed, runs Cycles on the exported scene for the same curves.\n"
         "Writes convergence.csv, summary.md and PNG plots (gnuplot) to OUT/MODE.");
     convergence->add_option("--suite", conv.suiteFile, "Suite file")->capture_default_str();
-    convergence->add_option("--mode", conv.mode, "quick (minutes) or full (about an hour)")
+    convergence->add_option("--mode", conv.mode, "quick (minutes) or full (larger images, more seeds and samples; not yet timed)")
         ->check(CLI::IsMember({"quick", "full"}))->capture_default_str();
     convergence->add_option("--out", conv.outputDir, "Output directory (a folder per mode inside)")
         ->capture_default_str();
