@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <cstdio>
 #include <fstream>
 #include <regex>
@@ -92,6 +94,10 @@ protected:
                                  "click " + std::to_string(clickX_) + " " + std::to_string(clickY_) + "\n"
                                  "set selected.albedo [0.05, 0.05, 0.9]\nresume\nwait-spp 8\npause\n"
                                  "screenshot " + d + "/blue.png\n"
+                                 "set selected.f0 0.9\nset selected.roughness 0.05\nresume\nwait-spp 16\npause\n"
+                                 "screenshot " + d + "/sharp.png\n"
+                                 "set selected.roughness 0.6\nresume\nwait-spp 16\npause\n"
+                                 "screenshot " + d + "/rough.png\n"
                                  "debug-view normals\nresume\nwait-spp 4\npause\nscreenshot " + d + "/normals.png\n"
                                  "export " + d + "/normals.exr\nquit\n",
                                  scene_));
@@ -152,6 +158,28 @@ TEST_F(ViewerWindowTest, ClickingAnObjectAndEditingItsAlbedoChangesThatObject) {
     // Far from the sphere (the sky at the top left) the image hardly changes.
     const glm::vec3 sa = before.image.rgb(int(before.x + 5), int(before.y + 5)), sb = after.image.rgb(int(before.x + 5), int(before.y + 5));
     EXPECT_LT(glm::length(sa - sb), 0.05f);
+}
+
+TEST_F(ViewerWindowTest, RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights) {
+    // The picked sphere made a near-mirror (f0 0.9): at roughness 0.05 it reflects the spheres and
+    // the horizon sharply; at 0.6 the GGX lobe spreads them. Samples are the same random numbers
+    // in both renders (same seed, same sample indices), so pixels the edit does not affect are
+    // bit-identical: inside the sphere the image must change clearly, in the sky not at all.
+    const Shot& sharp = shot("sharp");
+    const Shot& rough = shot("rough");
+    auto meanChange = [&](int cx, int cy, int half) {
+        double sum = 0.0;
+        int n = 0;
+        for (int y = cy - half; y <= cy + half; ++y)
+            for (int x = cx - half; x <= cx + half; ++x, ++n) {
+                const glm::vec3 d = glm::abs(sharp.image.rgb(x, y) - rough.image.rgb(x, y));
+                sum += double(d.x + d.y + d.z) / 3.0;
+            }
+        return sum / n;
+    };
+    EXPECT_GT(imageDifference(sharp, shot("blue")), 0.002) << "f0 and roughness changed nothing";
+    EXPECT_GT(meanChange(int(clickX_), int(clickY_), 30), 0.02) << "the highlights did not change";
+    EXPECT_EQ(meanChange(int(sharp.x + 40), int(sharp.y + 10), 8), 0.0) << "the sky changed";
 }
 
 TEST_F(ViewerWindowTest, OverlayPixelsLandOnTheProjectedBoxes) {
