@@ -1,7 +1,11 @@
 #pragma once
 // Writes a Blender (3.4, Cycles) Python script that rebuilds a raylab scene with matched settings:
-// Lambert → Diffuse BSDF, emission → Emission, constant / gradient sky → World, the same pinhole
-// camera, box pixel filter, bounces, no denoising, no clamping, no adaptive sampling.
+// spheres (finely tessellated) and triangle meshes (custom normals when given) placed by their
+// transforms; the f0 material model as Diffuse(albedo·(1−F)) + Glossy GGX(F) with Schlick F built
+// from nodes, mixed with a Glass BSDF by transmission, plus Emission (the mapping and its known
+// mismatches are commented in the script's material()); constant / gradient / map skies → World;
+// the same camera, thin lens included (aperture → f-stop); box pixel filter, bounces, no
+// denoising, no clamping, no adaptive sampling. Not exported: albedo and normal textures.
 //   blender --python scene.py                     opens the scene in Blender
 //   blender -b --factory-startup --python scene.py -- --samples 64 --output out.exr --threads 2
 // renders headless and prints "RAYLAB_RENDER_SECONDS <s>" (the time of the render call alone).

@@ -100,6 +100,55 @@ TEST(BenchBlenderExport, ScriptRebuildsTheSceneInBlenderCoordinatesAndIsValidPyt
     EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
 }
 
+TEST(BenchBlenderExport, MeshesTransformsMaterialsThinLensAndSkyMap) {
+    Scene scene = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json");
+    // 1. A mesh with normals, placed by a transform (kept in y-up terms; placement() converts).
+    Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+    mesh.triangles = {{0, 1, 2}};
+    mesh.material = 1;
+    mesh.transform = {{1, 2, 3}, {10, 20, 30}, {2, 2, 2}};
+    scene.meshes.push_back(mesh);
+    scene.spheres[1].transform = {{0, 1, 0}, {0, 45, 0}, {2, 2, 2}};
+    // 2. Glossy plastic, glass.
+    scene.materials[1].f0 = glm::vec3(0.04f);
+    scene.materials[1].roughness = 0.25f;
+    scene.materials[2].transmission = 1.0f;
+    scene.materials[2].ior = 1.5f;
+    scene.materials[2].roughness = 0.0f;
+    // 3. Thin lens.  4. Sky map.
+    scene.camera.aperture = 0.1f;
+    scene.camera.focusDistance = 0.0f;
+    scene.sky.type = Sky::Type::Map;
+    scene.sky.map = std::string(RAYLAB_SOURCE_DIR) + "/scenes/sky_procedural.hdr";
+    scene.sky.rotation = 30.0f;
+    scene.sky.strength = 2.0f;
+    const std::string py = blenderScript(scene);
+    auto has = [&](const std::string& s) { EXPECT_NE(py.find(s), std::string::npos) << s << "\n" << py; };
+    // Vertex (0, 1, 0) y-up is (0, 0, 1) z-up; normal +z is -y.
+    has("mesh(\"mesh0\", [(0, -0, 0), (1, -0, 0), (0, -0, 1)], [(0, 1, 2)], [(0, -1, 0), (0, -1, 0), (0, -1, 0)], mat1, "
+        "((1, 2, 3), (10, 20, 30), (2, 2, 2)))");
+    has("sphere(\"sphere1\", (0, -0, 1), 1, mat");
+    has(", ((0, 1, 0), (0, 45, 0), (2, 2, 2)))");
+    has("TO_Z_UP @ m @ TO_Z_UP.inverted()");
+    has("from_pydata(positions, [], triangles)");
+    has("normals_split_custom_set_from_vertices(normals)");
+    has("f0=(0.04, 0.04, 0.04, 1.0), roughness=0.25, transmission=0, ior=1.5)");
+    has("roughness=0, transmission=1, ior=1.5)");
+    has("ShaderNodeBsdfGlossy");
+    has("ShaderNodeBsdfGlass");
+    has("glossy.distribution = \"SHARP\" if sharp else \"GGX\"");
+    has("camera((6, -8, 3.2), (0, -0, 0.8), (0, -0, 1), 32, aperture=0.1, focus_distance=0)");
+    has("data.dof.aperture_fstop = data.lens * 1e-3 / (2.0 * aperture)");
+    has("scenes/sky_procedural.hdr\", 2, 30)");
+    has("ShaderNodeTexEnvironment");
+    const fs::path file = scratch() / "scene_full.py";
+    writeBlenderScript(scene, file);
+    const std::string cmd = "python3 -c \"import ast,sys; ast.parse(open(sys.argv[1]).read())\" '" + file.string() + "'";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
+}
+
 TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     const fs::path dir = scratch();
     {
