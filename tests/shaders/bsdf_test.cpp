@@ -110,13 +110,7 @@ TEST(ShaderBsdf, RoughDielectricSamplerMatchesItsPdfAcrossTheSweep) {
                 const bool inside = ior < 1.0f;
                 const vec3 wo = outgoing(mu) * vec3(1.0f, 1.0f, inside ? -1.0f : 1.0f);
                 const BsdfParams m = material(vec3(0.0f), vec3(0.0f), alpha, 1.0f, 1.5f);
-                const float eta = ior;
-                const float sin2T = (1.0f - mu * mu) / (eta * eta);
-                vec3 centre(-wo.x, -wo.y, wo.z);
-                if (sin2T < 1.0f) {
-                    const float side = wo.z > 0.0f ? 1.0f : -1.0f;
-                    centre = -wo / eta + vec3(0.0f, 0.0f, side * (mu / eta - std::sqrt(1.0f - sin2T)));
-                }
+                const vec3 centre = test::refractionLobeCentre(wo, ior);
                 const SweepResult r = chiSquareOfBsdf(m, wo, alpha, n, ++seed, centre);
                 SCOPED_TRACE("ior " + std::to_string(ior) + " alpha " + std::to_string(alpha) + " cos " +
                              std::to_string(mu));

@@ -115,10 +115,7 @@ TEST_F(GpuSamplingTest, RoughGlassFromTheShaderMatchesItsPdf) {
                              std::to_string(mu));
                 const BsdfParams m(vec3(0.0f), vec3(0.0f), alpha, 1.0f, 1.5f);
                 const vec3 wo = outgoing(mu) * vec3(1.0f, 1.0f, side);
-                const float eta = side > 0 ? 1.5f : 1.0f / 1.5f;
-                const float sin2T = (1.0f - mu * mu) / (eta * eta);
-                vec3 centre(-wo.x, -wo.y, wo.z);
-                if (sin2T < 1.0f) centre = -wo / eta + vec3(0.0f, 0.0f, side * (mu / eta - std::sqrt(1.0f - sin2T)));
+                const vec3 centre = test::refractionLobeCentre(wo, side > 0 ? 1.5f : 1.0f / 1.5f);
                 const test::LobeGrid grid(glm::normalize(centre), std::max(2.0f * alpha, 0.02f));
                 std::vector<double> observed(size_t(grid.na * grid.nphi), 0.0);
                 int inconsistent = 0;

@@ -15,6 +15,15 @@ namespace raylab::test {
 using glsl::Frame;
 using glm::vec3;
 
+// Centre of a smooth-glass lobe for wo and the relative index eta (the far side over wo's side):
+// the direction refracted by Snell's law, or the mirror direction under total internal reflection.
+inline vec3 refractionLobeCentre(vec3 wo, float eta) {
+    const float side = wo.z > 0.0f ? 1.0f : -1.0f, mu = std::abs(wo.z);
+    const float sin2T = (1.0f - mu * mu) / (eta * eta);
+    if (sin2T >= 1.0f) return vec3(-wo.x, -wo.y, wo.z);
+    return -wo / eta + vec3(0.0f, 0.0f, side * (mu / eta - std::sqrt(1.0f - sin2T)));
+}
+
 // Cells over the whole sphere of directions in coordinates around a centre direction r:
 // a = g / (c + g) with g = tan(θ'/2), θ' the angle from r, and φ' around r. Half of the a range
 // covers θ' < 2 atan(c), so a lobe of width ~c is resolved however narrow it is.
