@@ -4,7 +4,7 @@
 // includer first defines the accessors
 //   GpuBvhNode topNode(uint i); GpuBvhNode meshNode(uint i); GpuInstance instanceAt(uint i);
 //   GpuTriangle triangleAt(uint i); GpuVertex vertexAt(uint i); GpuSphere sphereAt(uint i);
-//   uint instanceCount();
+//   uint instanceCount(); uvec4 instanceInfo(uint i); uint sphereCount();
 // (GLSL: scene_geometry.glsl reads buffers; C++: accel/cpu_traversal.h reads vectors), and may
 // define RL_COUNT_BOX() / RL_COUNT_TRIANGLE() to count tests (heat maps).
 #ifndef RAYLAB_BVH_TRAVERSAL_GLSL
@@ -125,13 +125,31 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
     rec = TraceRecord(tMax, 0u, 0u, 0.0f, 0.0f);
     bool found = false;
 #ifdef RAYLAB_TOP_LEVEL_LINEAR
-    // Few objects: a plain loop beats the top-level traversal's stack and box tests (measured
-    // in bench/geometry.md); the loop bound is the buffer's length, the same in every lane.
+    // Few objects: plain loops beat the top-level traversal's stack and box tests (measured in
+    // bench/geometry.md); loop bounds are buffer lengths, the same in every lane. Spheres are read
+    // by the loop counter, an index llvmpipe knows is uniform: one load per sphere instead of a
+    // per-lane gather through the instance record (default scene: 2926 → 1811 instructions per
+    // path, bench/throughput.md).
+#ifdef RAYLAB_FEATURE_SPHERES
+    uint sphereTotal = sphereCount();
+    for (uint k = 0u; k < sphereTotal; ++k) {
+        GpuSphere s = sphereAt(k);
+        float t = intersectSphere(ray, xyzOf(s.centerRadius), s.centerRadius.w, 0.0f, rec.t);
+        if (t > 0.0f) {
+            rec = TraceRecord(t, s.info.y, k, 0.0f, 0.0f);
+            found = true;
+            if (anyHit) return true;
+        }
+    }
+#endif
+#ifdef RAYLAB_FEATURE_MESHES
     uint count = instanceCount();
     for (uint i = 0u; i < count; ++i) {
+        if (instanceInfo(i).x != INSTANCE_MESH) continue;
         if (intersectInstance(ray, i, anyHit, rec)) found = true;
         if (found && anyHit) break;
     }
+#endif
     return found;
 #else
     vec3 invDir = safeInverseDir(ray.dir);
@@ -190,14 +208,20 @@ struct SurfaceHit {
 };
 
 RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
-    GpuInstance inst = instanceAt(rec.instance);
     SurfaceHit s;
-    s.material = inst.info.z;
     s.lodBase = 0.0f;
     s.tangent = vec3(0.0f);
 #ifdef RAYLAB_FEATURE_SPHERES
-    if (inst.info.x == INSTANCE_SPHERE) {
+    // A sphere's material is in its own record: without meshes the instance record is not read at
+    // all (that per-lane read cost 2892 → 1811 instructions per path on the default scene,
+    // bench/throughput.md).
+#ifdef RAYLAB_FEATURE_MESHES
+    if (instanceInfo(rec.instance).x == INSTANCE_SPHERE) {
+#else
+    {
+#endif
         GpuSphere sp = sphereAt(rec.primitive);
+        s.material = sp.info.x;
         vec3 c = xyzOf(sp.centerRadius);
         float r = sp.centerRadius.w;
         s.position = sphereSurfacePoint(rayAt(ray, rec.t), c, r);
@@ -218,6 +242,8 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     }
 #endif
 #ifdef RAYLAB_FEATURE_MESHES
+    GpuInstance inst = instanceAt(rec.instance);
+    s.material = inst.info.z;
     GpuTriangle tri = triangleAt(rec.primitive);
     GpuVertex v0 = vertexAt(tri.vertices.x);
     GpuVertex v1 = vertexAt(tri.vertices.y);

@@ -21,6 +21,8 @@ GpuTriangle triangleAt(uint i) { return triangles[i]; }
 GpuVertex vertexAt(uint i) { return vertices[i]; }
 GpuSphere sphereAt(uint i) { return spheres[i]; }
 uint instanceCount() { return uint(instances.length()); }
+uvec4 instanceInfo(uint i) { return instances[i].info; }
+uint sphereCount() { return uint(spheres.length()); }
 
 #ifdef RAYLAB_COUNT_TRAVERSAL
 layout(std430, binding = 13) buffer TraversalCounters {

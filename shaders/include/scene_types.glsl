@@ -7,7 +7,7 @@ RL_NAMESPACE_BEGIN
 
 struct GpuSphere {
     vec4 centerRadius;   // xyz centre, w radius
-    uvec4 info;          // x material index; yzw unused
+    uvec4 info;          // x material index; y its instance (top-level order); zw unused
 };
 
 struct GpuMaterial {

@@ -22,6 +22,8 @@ inline GpuTriangle triangleAt(uint i) { return cpuTraversal.geometry->triangles[
 inline GpuVertex vertexAt(uint i) { return cpuTraversal.geometry->vertices[i]; }
 inline GpuSphere sphereAt(uint i) { return cpuTraversal.geometry->spheres[i]; }
 inline uint instanceCount() { return uint(cpuTraversal.geometry->instances.size()); }
+inline uvec4 instanceInfo(uint i) { return cpuTraversal.geometry->instances[i].info; }
+inline uint sphereCount() { return uint(cpuTraversal.geometry->spheres.size()); }
 
 } // namespace raylab::glsl
 

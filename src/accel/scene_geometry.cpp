@@ -105,6 +105,9 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
     for (const BvhNode& n : top.nodes) g.topNodes.push_back(gpuNode(n, 0u, 0u));
     g.instances.clear();
     for (std::uint32_t i : top.order) g.instances.push_back(objects[i]);
+    // Each sphere knows its instance, so the linear top level can loop over spheres directly.
+    for (std::size_t i = 0; i < g.instances.size(); ++i)
+        if (g.instances[i].info.x == glsl::INSTANCE_SPHERE) g.spheres[g.instances[i].info.y].info.y = unsigned(i);
     g.topSahCost = top.sahCost();
     g.maxDepth = std::max(g.maxDepth, top.depth);
     g.topBuildSeconds = secondsSince(start);

@@ -33,10 +33,13 @@ struct SuiteScene {
     bool analytic = false;
     glm::vec3 analyticValue{0.0f};
     bool peer = false;
+    // Extra raylab curves of the same scene against the same reference, each a list of --set
+    // overrides (e.g. NEE off / NEE without MIS / MIS): efficiency of estimators at equal time.
+    std::vector<std::pair<std::string, std::vector<std::string>>> variants;
 };
 
 struct Curve {
-    std::string renderer;   // "raylab" or "cycles"
+    std::string renderer;   // "raylab", "raylab:<variant>" or "cycles"
     int seed = 0;
     std::vector<Checkpoint> points;
 };
@@ -57,7 +60,7 @@ std::string cpuModel() {
     return "unknown CPU";
 }
 
-void writePlots(const fs::path& dir, const std::string& scene, bool withPeer) {
+void writePlots(const fs::path& dir, const std::string& scene, const std::vector<std::string>& renderers) {
     const fs::path script = dir / (scene + ".gp");
     std::ofstream gp(script);
     gp << "set terminal pngcairo size 900,380 font ',10'\n"
@@ -65,15 +68,17 @@ void writePlots(const fs::path& dir, const std::string& scene, bool withPeer) {
        << "set datafile separator ','\nset logscale xy\nset grid\nset key bottom left\n"
        << "set multiplot layout 1,2 title '" << scene << ": RMSE against time and samples'\n"
        << "set xlabel 'seconds'\nset ylabel 'RMSE'\n"
-       << "plot '" << (dir / "convergence.csv").string() << "' using (strcol(1) eq '" << scene
-       << "' && strcol(2) eq 'raylab' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab'";
-    if (withPeer)
-        gp << ", '' using (strcol(1) eq '" << scene << "' && strcol(2) eq 'cycles' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'Cycles'";
-    gp << "\nset xlabel 'samples per pixel'\n"
-       << "plot '" << (dir / "convergence.csv").string() << "' using (strcol(1) eq '" << scene
-       << "' && strcol(2) eq 'raylab' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab'";
-    if (withPeer)
-        gp << ", '' using (strcol(1) eq '" << scene << "' && strcol(2) eq 'cycles' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'Cycles'";
+       << "plot ";
+    // One line per renderer (raylab, its variants, Cycles); column 5 = seconds, 4 = spp, 7 = RMSE.
+    auto lines = [&](int xColumn) {
+        for (size_t i = 0; i < renderers.size(); ++i)
+            gp << (i ? ", " : "") << "'" << (dir / "convergence.csv").string() << "' using (strcol(1) eq '" << scene
+               << "' && strcol(2) eq '" << renderers[i] << "' && $7 > 0 ? $" << xColumn
+               << " : 1/0):7 with linespoints title '" << renderers[i] << "'";
+    };
+    lines(5);
+    gp << "\nset xlabel 'samples per pixel'\nplot ";
+    lines(4);
     gp << "\nunset multiplot\n";
     gp.close();
     if (std::system(("gnuplot '" + script.string() + "' 2>/dev/null").c_str()) != 0)
@@ -103,6 +108,10 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 e.analyticValue = glm::vec3(s.at("analytic").get<float>());
             }
             e.peer = s.value("peer", false);
+            if (s.contains("variants"))
+                for (const auto& v : s.at("variants"))
+                    e.variants.emplace_back(v.at("name").get<std::string>(),
+                                            v.at("set").get<std::vector<std::string>>());
             if (o.only.empty() || o.only == e.name) scenes.push_back(e);
         }
     } catch (const std::exception& e) {
@@ -184,6 +193,16 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 tracer.setScene(run);
                 tracer.renderPass(1);   // warm-up: shader JIT stays out of the curve
                 curves.push_back({"raylab", seed + 1, runConvergence(tracer, 1, std::uint64_t(mode.maxSpp), reference.mean)});
+                for (const auto& [variantName, overrides] : s.variants) {
+                    std::vector<std::string> settings = size;
+                    settings.insert(settings.end(), overrides.begin(), overrides.end());
+                    Scene variant = loadScene(s.scene, settings);
+                    variant.render.seed = unsigned(seed + 1);
+                    tracer.setScene(variant);
+                    tracer.renderPass(1);
+                    curves.push_back({"raylab:" + variantName, seed + 1,
+                                      runConvergence(tracer, 1, std::uint64_t(mode.maxSpp), reference.mean)});
+                }
             }
         } catch (const std::exception& e) {
             std::cerr << "raylab-bench: error: " << e.what() << "\n";
@@ -286,7 +305,10 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
             }
         }
         csv.flush();
-        if (curves.front().points.back().error.rmse > 0.0) writePlots(outDir, s.name, runPeer);
+        std::vector<std::string> renderers;
+        for (const Curve& c : curves)
+            if (c.seed == 1) renderers.push_back(c.renderer);
+        if (curves.front().points.back().error.rmse > 0.0) writePlots(outDir, s.name, renderers);
     }
 
     const std::time_t now = std::time(nullptr);

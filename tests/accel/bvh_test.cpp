@@ -232,3 +232,38 @@ TEST_F(BvhGpuTest, GpuTraversalMatchesBruteForceNearestAndShadow) {
     EXPECT_EQ(primitiveMismatch, 0);
 }
 
+// The linear top level (few objects) loops over the sphere buffer directly and names each hit's
+// instance through the sphere's back-link: the same records as the brute force, with and
+// without meshes in the shader.
+TEST_F(BvhGpuTest, LinearTopLevelMatchesBruteForceWithAndWithoutMeshes) {
+    for (const int meshes : {0, 3}) {
+        const Scene scene = randomScene(11, 30, meshes, 60);
+        GpuScene gpu;
+        gpu.upload(scene);
+        const SceneGeometry& g = gpu.geometry();
+        for (std::size_t i = 0; i < g.instances.size(); ++i) {
+            if (g.instances[i].info.x == glsl::INSTANCE_SPHERE) {
+                EXPECT_EQ(g.spheres[g.instances[i].info.y].info.y, i);
+            }
+        }
+        ShaderDefines defines = {{"RAYLAB_FEATURES_SPECIALISED", "1"}, {"RAYLAB_FEATURE_SPHERES", "1"},
+                                 {"RAYLAB_TOP_LEVEL_LINEAR", "1"}};
+        if (meshes > 0) defines.push_back({"RAYLAB_FEATURE_MESHES", "1"});
+        const std::vector<test::TestRay> rays = randomRays(78, 4000);
+        const std::vector<test::GpuTraceResult> results = test::gpuTrace(gpu, rays, defines);
+        int hits = 0, mismatch = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const glsl::Ray ray(glm::vec3(rays[i].origin), glm::vec3(rays[i].dir));
+            const Reference ref = bruteForce(g, scene, ray, glsl::FLOAT_MAX, false);
+            ASSERT_EQ(results[i].t >= 0.0f, ref.hit) << "meshes " << meshes << " ray " << i;
+            if (ref.hit) {
+                ++hits;
+                mismatch += results[i].instance != ref.rec.instance || results[i].primitive != ref.rec.primitive;
+            }
+            ASSERT_EQ(results[i].occluded, bruteForce(g, scene, ray, rays[i].dir.w, true).hit) << "ray " << i;
+        }
+        EXPECT_GT(hits, 200) << "meshes " << meshes;
+        EXPECT_EQ(mismatch, 0) << "meshes " << meshes;
+    }
+}
+

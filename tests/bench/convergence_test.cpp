@@ -155,7 +155,8 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
         std::ofstream suite(dir / "suite.json");
         suite << R"({"modes": {"quick": {"width": 16, "height": 9, "max_spp": 64, "seeds": 2,
                      "reference_spp": 64, "reference_batches": 2, "peer_max_spp": 2}},
-                     "scenes": [{"name": "cf", "scene": "scenes/closed_furnace.json", "analytic": 1.0}]})";
+                     "scenes": [{"name": "cf", "scene": "scenes/closed_furnace.json", "analytic": 1.0,
+                                 "variants": [{"name": "rpp2", "set": ["render.rpp=2"]}]}]})";
     }
     const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
                             "' convergence --suite '" + (dir / "suite.json").string() + "' --out '" +
@@ -171,6 +172,13 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     EXPECT_NE(csv.str().find("scene,renderer,seed,spp,seconds,mse,rmse,relmse"), std::string::npos);
     EXPECT_NE(csv.str().find("cf,raylab,2,64,"), std::string::npos) << csv.str();
     EXPECT_NE(md.str().find("| cf | raylab | analytic [1, 1, 1] | 64 |"), std::string::npos) << md.str();
+    // A variant is one more curve of the same scene against the same reference, in the CSV, the
+    // table and the plot script.
+    EXPECT_NE(csv.str().find("cf,raylab:rpp2,2,64,"), std::string::npos) << csv.str();
+    EXPECT_NE(md.str().find("| cf | raylab:rpp2 | analytic [1, 1, 1] | 64 |"), std::string::npos) << md.str();
+    std::stringstream gp;
+    gp << std::ifstream(dir / "out" / "quick" / "cf.gp").rdbuf();
+    EXPECT_NE(gp.str().find("strcol(2) eq 'raylab:rpp2'"), std::string::npos) << gp.str();
     EXPECT_NE(md.str().find("- command: `"), std::string::npos);
     EXPECT_NE(md.str().find("--peer off"), std::string::npos);
 }

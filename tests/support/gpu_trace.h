@@ -23,9 +23,11 @@ struct TestRay {
     glm::vec4 dir;   // w = tMax for the occlusion query
 };
 
-inline std::vector<GpuTraceResult> gpuTrace(const GpuScene& scene, const std::vector<TestRay>& rays) {
+// defines: none = every feature and the top-level BVH; or a specialisation (features.glsl).
+inline std::vector<GpuTraceResult> gpuTrace(const GpuScene& scene, const std::vector<TestRay>& rays,
+                                            const ShaderDefines& defines = {}) {
     const ShaderProgram program = ShaderProgram::computeFromFile(
-        std::filesystem::path(RAYLAB_SOURCE_DIR) / "tests/support/trace_rays.comp");
+        std::filesystem::path(RAYLAB_SOURCE_DIR) / "tests/support/trace_rays.comp", defines);
     GLuint buffers[2];
     glCreateBuffers(2, buffers);
     glNamedBufferData(buffers[0], GLsizeiptr(rays.size() * sizeof(TestRay)), rays.data(), GL_STATIC_DRAW);

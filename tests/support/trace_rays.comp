@@ -1,6 +1,8 @@
 #version 450 core
 // Test entry point: traces a buffer of rays through the scene's BVH (the tracer's own code) and
-// writes what it found. Defines set by the host: none.
+// writes what it found. Defines set by the host: none (every feature, top-level BVH), or a
+// specialisation as in features.glsl (RAYLAB_FEATURES_SPECIALISED, RAYLAB_FEATURE_*,
+// RAYLAB_TOP_LEVEL_LINEAR).
 #include "../../shaders/include/scene_intersect.glsl"
 
 layout(local_size_x = 64) in;
