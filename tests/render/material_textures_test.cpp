@@ -109,6 +109,42 @@ TEST_F(MaterialTexturesTest, MetallicTextureTintsTheSpecularWhereItIsOne) {
     fs::remove_all(dir);
 }
 
+TEST_F(MaterialTexturesTest, DataTexturesAreReadLinearly) {
+    // A roughness (and metallic) image of 8-bit 128 means 128/255 = 0.502, not its sRGB decoding
+    // 0.216: the textured quad must equal the plain material with roughness 0.502 (metallic 0.502).
+    const fs::path dir = scratch("linear");
+    writeHalves(dir / "half.png", {128, 128, 128}, {128, 128, 128});
+    const std::string common = R"("albedo": [0.9, 0.6, 0.3], "f0": 0.04)";
+    const Image textured = test::render(load(dir, quadScene("{ " + common +
+        R"(, "roughness": 1, "metallic": 1, "roughness_texture": "half.png", "metallic_texture": "half.png" })")));
+    const std::string v = std::to_string(128.0 / 255.0);
+    const Image plain = test::render(load(dir, quadScene("{ " + common + R"(, "roughness": )" + v + R"(, "metallic": )" + v + " }")));
+    EXPECT_LT(maxDifference(textured, plain, 0, 16), 1e-4f);
+    const std::string s = std::to_string(std::pow((128.0 / 255.0 + 0.055) / 1.055, 2.4));
+    const Image srgb = test::render(load(dir, quadScene("{ " + common + R"(, "roughness": )" + s + R"(, "metallic": )" + s + " }")));
+    EXPECT_GT(maxDifference(textured, srgb, 0, 16), 0.05f) << "the decodings must be told apart";
+    fs::remove_all(dir);
+}
+
+TEST_F(MaterialTexturesTest, NormalScaleZeroFlattensTheNormalMap) {
+    // A normal map tilting every normal (n = (0.6, 0, 0.8)) under a gradient sky changes the image;
+    // normal_scale 0 keeps only its z: the flat quad's image.
+    const fs::path dir = scratch("nscale");
+    writeHalves(dir / "tilt.png", {204, 128, 230}, {204, 128, 230});
+    auto scene = [&](const std::string& extra) {
+        std::string text = quadScene(R"({ "albedo": 1)" + extra + " }");
+        const std::string sky = R"("type": "constant", "color": 1)";
+        text.replace(text.find(sky), sky.size(), R"("type": "gradient", "top": 1, "bottom": 0)");
+        return load(dir, text);
+    };
+    const Image flat = test::render(scene(""));
+    const Image tilted = test::render(scene(R"(, "normal_texture": "tilt.png")"));
+    const Image scaled0 = test::render(scene(R"(, "normal_texture": "tilt.png", "normal_scale": 0)"));
+    EXPECT_GT(maxDifference(flat, tilted, 0, 16), 0.05f);
+    EXPECT_LT(maxDifference(flat, scaled0, 0, 16), 1e-5f);
+    fs::remove_all(dir);
+}
+
 TEST_F(MaterialTexturesTest, EmissionTextureLightsOnlyWhereItIsNotZeroAndIsSrgbDecoded) {
     const fs::path dir = scratch("emit");
     writeHalves(dir / "emit.png", {0, 0, 0}, {128, 255, 64});
