@@ -282,6 +282,9 @@ GltfAsset loadGltfAsset(const std::filesystem::path& file) {
         t = used[std::size_t(t)];
     }
     if (!reader.anyMaterial) mesh.triangleMaterials.clear();
+    for (const std::string& e : model.extensionsRequired)
+        if (e != "KHR_materials_emissive_strength")
+            asset.warnings.push_back(name + ": extensionsRequired: " + e + " is not supported; the file may look different");
     if (!warn.empty()) {
         while (!warn.empty() && (warn.back() == '\n' || warn.back() == '\r')) warn.pop_back();
         asset.warnings.push_back(name + ": " + warn);

@@ -140,6 +140,12 @@ TEST(GltfMaterials, NodeTranslationAndUvFlipWithMaterials) {
     EXPECT_FLOAT_EQ(asset.materials[0].metallic, 1.0f) << "glTF's default metallicFactor";
     EXPECT_EQ(asset.mesh.triangleMaterials, (std::vector<int>{0, 0}));
     EXPECT_TRUE(loadGltf(dir / "models" / "q.gltf").triangleMaterials.empty()) << "geometry only";
+    EXPECT_TRUE(asset.warnings.empty());
+    s.extensionsUsed = R"(["KHR_texture_transform"], "extensionsRequired": ["KHR_texture_transform"])";
+    test::writeGltf(dir / "models" / "q.gltf", s);
+    const GltfAsset required = loadGltfAsset(dir / "models" / "q.gltf");
+    ASSERT_EQ(required.warnings.size(), 1u);
+    EXPECT_NE(required.warnings[0].find("extensionsRequired: KHR_texture_transform is not supported"), std::string::npos);
     fs::remove_all(dir);
 }
 
