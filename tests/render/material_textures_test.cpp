@@ -228,6 +228,37 @@ TEST_F(MaterialTexturesTest, SecondBounceAfterADiffuseBounceUsesACoarserLevelTha
     fs::remove_all(dir);
 }
 
+TEST_F(MaterialTexturesTest, WrapModesOnTheGpu) {
+    // uv runs 0..2 across the quad (visible u about 0.27..1.73); the texture is black on its left
+    // half, white on its right. Repeat shows the pattern twice, clamp stretches the white edge over
+    // u > 1, mirror folds it back (white for u in (1, 1.5), black beyond).
+    const fs::path dir = scratch("wrap");
+    writeHalves(dir / "halves.png", {0, 0, 0}, {255, 255, 255});
+    std::string text = quadScene(R"({ "albedo": 1, "albedo_texture": "halves.png" })");
+    const std::string uvs = R"("uvs": [0,0, 1,0, 1,1, 0,1])";
+    text.replace(text.find(uvs), uvs.size(), R"("uvs": [0,0, 2,0, 2,1, 0,1])");
+    Scene scene = load(dir, text);
+    auto valueAt = [&](TextureWrap mode, float u) {
+        scene.textures[0].wrapU = mode;
+        const Image image = test::render(scene);
+        // The pixel column that holds this u (x = u - 1 in the world; the view spans ±0.728 over
+        // 16 pixels); the probes keep a texel and a half away from the black/white seams, so the
+        // trilinear taps of levels 0 and 1 all see one colour.
+        const int px = int(std::floor(((u - 1.0f) / 0.728f + 1.0f) * 8.0f));
+        return image.rgb(px, 8).g;
+    };
+    EXPECT_EQ(featureName(sceneFeatures(scene)).find("wrap-modes"), std::string::npos);
+    EXPECT_NEAR(valueAt(TextureWrap::Repeat, 1.2f), 0.0f, 1e-5f);
+    EXPECT_NEAR(valueAt(TextureWrap::Repeat, 1.65f), 1.0f, 1e-5f);
+    EXPECT_NEAR(valueAt(TextureWrap::ClampToEdge, 1.2f), 1.0f, 1e-5f);
+    EXPECT_NEAR(valueAt(TextureWrap::ClampToEdge, 1.65f), 1.0f, 1e-5f);
+    EXPECT_NE(featureName(sceneFeatures(scene)).find("wrap-modes"), std::string::npos);
+    EXPECT_NEAR(valueAt(TextureWrap::MirroredRepeat, 1.2f), 1.0f, 1e-5f);
+    EXPECT_NEAR(valueAt(TextureWrap::MirroredRepeat, 1.65f), 0.0f, 1e-5f);
+    EXPECT_NEAR(valueAt(TextureWrap::MirroredRepeat, 0.3f), 0.0f, 1e-5f) << "inside [0, 1) nothing changes";
+    fs::remove_all(dir);
+}
+
 TEST_F(MaterialTexturesTest, GltfMaterialsPerPrimitiveOnTheGpu) {
     // Two quads from one glTF file: a red base-colour factor and a base-colour texture (sRGB 128
     // grey); in a constant sky of 1 with one bounce each shows its albedo. Metallic 0 keeps f0 0.04,
