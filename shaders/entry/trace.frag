@@ -6,6 +6,9 @@
 // (render/shader_variant.cpp, include/features.glsl); the scene's data arrives in buffers and uniforms.
 // Also from the scene: RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (a material has f0 > 0 or
 // transmission > 0), RAYLAB_SKY_MAP (sky.type map); see integrator.glsl.
+// With textures: RAYLAB_FEATURE_TEXTURES, RAYLAB_SHOW_MIP_LEVEL (render.show_mip_level) and, per
+// kind some material uses, RAYLAB_TEXTURE_ROUGHNESS, RAYLAB_TEXTURE_METALLIC, RAYLAB_TEXTURE_EMISSION,
+// RAYLAB_TEXTURE_WRAP_MODES (include/features.glsl, include/material_textures.glsl).
 // Optional, tests only: RAYLAB_INJECT_NONFINITE=N (every N-th sample becomes NaN or Inf).
 // Optional, debug: RAYLAB_COUNT_TRAVERSAL (boxes and triangles tested, include/scene_geometry.glsl).
 #include "../include/path_tracer.glsl"

@@ -248,6 +248,7 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     GpuVertex v0 = vertexAt(tri.vertices.x);
     GpuVertex v1 = vertexAt(tri.vertices.y);
     GpuVertex v2 = vertexAt(tri.vertices.z);
+    if (tri.vertices.w != 0u) s.material = tri.vertices.w - 1u;   // per-triangle material (glTF)
     vec3 p0 = xyzOf(v0.positionU);
     vec3 p1 = xyzOf(v1.positionU);
     vec3 p2 = xyzOf(v2.positionU);

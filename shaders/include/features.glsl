@@ -12,6 +12,11 @@
 //   RAYLAB_NEE                     next-event estimation (render.nee)
 //   RAYLAB_GENERAL_BSDF            GGX specular and glass (some material has f0 or transmission)
 //   RAYLAB_SKY_MAP                 an HDR environment image (sky.type map)
+//   RAYLAB_TEXTURE_ROUGHNESS       some material has a roughness texture (with TEXTURES)
+//   RAYLAB_TEXTURE_METALLIC        metallic mixed per hit: a metallic texture, or metallic with an
+//                                  albedo texture (with TEXTURES)
+//   RAYLAB_TEXTURE_EMISSION        some material has an emission texture (with TEXTURES)
+//   RAYLAB_TEXTURE_WRAP_MODES      some texture clamps or mirrors instead of repeating (glTF)
 #ifndef RAYLAB_FEATURES_GLSL
 #define RAYLAB_FEATURES_GLSL
 #ifndef RAYLAB_FEATURES_SPECIALISED
@@ -23,5 +28,9 @@
 #define RAYLAB_NEE 1
 #define RAYLAB_GENERAL_BSDF 1
 #define RAYLAB_SKY_MAP 1
+#define RAYLAB_TEXTURE_ROUGHNESS 1
+#define RAYLAB_TEXTURE_METALLIC 1
+#define RAYLAB_TEXTURE_EMISSION 1
+#define RAYLAB_TEXTURE_WRAP_MODES 1
 #endif
 #endif

@@ -33,7 +33,7 @@ struct GpuInstance {
 };
 
 struct GpuTriangle {
-    uvec4 vertices;   // xyz: indices into the vertex buffer; w unused
+    uvec4 vertices;   // xyz: indices into the vertex buffer; w: material + 1, 0 = the instance's
 };
 
 struct GpuVertex {

@@ -15,7 +15,8 @@
 #include "scene_intersect.glsl"
 #include "features.glsl"
 #ifdef RAYLAB_FEATURE_TEXTURES
-#include "scene_textures.glsl"
+#include "material_textures.glsl"
+#include "ray_cone.glsl"
 #endif
 
 // Radiance from the sky along a unit direction: the image texel it falls in (nearest, so the
@@ -91,9 +92,10 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
     bool prevDelta = true;     // camera rays and delta bounces: light sampling could not help
     vec3 prevPos = vec3(0.0f);
 #ifdef RAYLAB_FEATURE_TEXTURES
-    // Ray cone (Ray Tracing Gems ch. 20, §20.3.4): width grows by the pixel's spread angle per
-    // unit distance; diffuse bounces keep that spread (a simplification that under-blurs).
+    // Ray cone (Ray Tracing Gems ch. 20, §20.3.4): the width grows by the spread angle per unit
+    // distance; the spread starts at the pixel's and widens at rough bounces (ray_cone.glsl).
     float coneWidth = 0.0f;
+    float coneSpread = uCamPixelSpread;
 #endif
     for (int bounce = 0;; ++bounce) {
         Hit hit;
@@ -112,6 +114,10 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         }
         GpuMaterial m = materials[hit.material];
         vec3 Le = m.emission.rgb;
+#ifdef RAYLAB_FEATURE_TEXTURES
+        coneWidth += coneSpread * hit.t * length(ray.dir);
+        Le *= materialEmissionScale(hit, ray.dir, coneWidth);
+#endif
         if (max(Le.r, max(Le.g, Le.b)) > 0.0f) {
             float w = 1.0f;
 #ifdef RAYLAB_NEE
@@ -123,38 +129,10 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
         }
         if (bounce >= uMaxBounces) break;
-        vec3 albedo = m.albedo.rgb;
-#ifdef RAYLAB_FEATURE_TEXTURES
-        coneWidth += uCamPixelSpread * hit.t * length(ray.dir);
-        uint albedoTexture = materialAlbedoTexture(hit.material);
-        if (albedoTexture > 0u) {
-            GpuTexture tex = textureRecord(albedoTexture - 1u);
-            float cosine = dot(hit.normal, ray.dir) / length(ray.dir);
-            float lod = rayConeLod(tex, hit.lodBase, coneWidth, cosine);
-#ifdef RAYLAB_SHOW_MIP_LEVEL
-            // Debug view: the level as a colour ramp (0 blue, 4 green, 8+ red).
-            albedo = clamp(vec3(lod / 4.0f - 1.0f, 1.0f - abs(lod / 4.0f - 1.0f), 1.0f - lod / 4.0f), 0.0f, 1.0f);
-#else
-            albedo *= sampleTexture(tex, hit.uv, lod).rgb;
-#endif
-        }
-        uint normalTexture = materialNormalTexture(hit.material);
-        if (normalTexture > 0u) {
-            // Tangent-space normal map: rgb in [0, 1] encodes (x, y, z) in [-1, 1] in the frame
-            // (∂p/∂u, bitangent, shading normal), ∂p/∂u made orthogonal to the normal first.
-            GpuTexture tex = textureRecord(normalTexture - 1u);
-            float cosine = dot(hit.normal, ray.dir) / length(ray.dir);
-            vec3 m = 2.0f * sampleTexture(tex, hit.uv, rayConeLod(tex, hit.lodBase, coneWidth, cosine)).rgb - 1.0f;
-            vec3 t = hit.tangent - dot(hit.tangent, hit.shadingNormal) * hit.shadingNormal;
-            if (dot(t, t) > 0.0f && dot(m, m) > 0.0f) {
-                t = normalize(t);
-                hit.shadingNormal = normalize(m.x * t + m.y * cross(hit.shadingNormal, t) + m.z * hit.shadingNormal);
-            }
-        }
-#endif
-
         BsdfParams bsdf = materialBsdf(m);
-        bsdf.albedo = albedo;   // textured
+#ifdef RAYLAB_FEATURE_TEXTURES
+        applyMaterialTextures(hit, ray.dir, coneWidth, bsdf);
+#endif
         // The BSDF works in the shading frame (smooth or normal-mapped normals), turned to the
         // geometric normal's side; it tells inside from outside by the sign of wo.z.
         vec3 ns = dot(hit.shadingNormal, hit.normal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
@@ -240,6 +218,9 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         // As for light samples: the geometric surface must agree with the lobe's side.
         if ((bs.wi.z * wo.z > 0.0f) != (dot(dir, hit.normal) * arrivalSide > 0.0f)) break;
         beta *= bs.weight;
+#ifdef RAYLAB_FEATURE_TEXTURES
+        coneSpread += rayConeBounceSpread(bs.lobe, bs.delta, bsdf.alpha);
+#endif
         prevPdf = bs.pdf;
         prevDelta = bs.delta;
         prevPos = hit.position;

@@ -42,8 +42,10 @@ SceneGeometry buildSceneGeometry(const Scene& scene, const BvhOptions& options) 
         const auto triangleOffset = std::uint32_t(g.triangles.size());
         const auto vertexOffset = std::uint32_t(g.vertices.size());
         for (const BvhNode& n : bvh.nodes) g.meshNodes.push_back(gpuNode(n, nodeOffset, triangleOffset));
-        for (std::uint32_t t : bvh.order)
-            g.triangles.push_back({glm::uvec4(mesh.triangles[t] + glm::uvec3(vertexOffset), 0u)});
+        for (std::uint32_t t : bvh.order) {
+            const int material = mesh.triangleMaterials.empty() ? -1 : mesh.triangleMaterials[t];
+            g.triangles.push_back({glm::uvec4(mesh.triangles[t] + glm::uvec3(vertexOffset), unsigned(material + 1))});
+        }
         for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
             const glm::vec2 uv = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[v];
             const glm::vec3 n = mesh.normals.empty() ? glm::vec3(0.0f) : mesh.normals[v];

@@ -101,6 +101,7 @@ int main(int argc, char** argv) {
     std::filesystem::path outPath;
     try {
         scene = loadScene(scenePath, overrides);
+        for (const std::string& w : scene.warnings) std::cerr << "raylab-render: warning: " << w << "\n";
         if (!blenderOut.empty()) {
             writeBlenderScript(scene, blenderOut);
             std::cout << std::filesystem::absolute(blenderOut).string() << "\n";

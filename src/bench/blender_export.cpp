@@ -281,8 +281,10 @@ std::string blenderScript(const Scene& scene) {
     py << "settings(" << r.width << ", " << r.height << ", " << r.maxBounces << ", " << r.seed << ")\n";
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];
-        py << "mat" << i << " = material(" << pyString(m.name) << ", " << colour(m.albedo) << ", "
-           << colour(m.radiance()) << ", f0=" << colour(m.f0) << ", roughness=" << num(m.roughness)
+        // metallic on the f0 model (scenes/FORMAT.md), as the tracer bakes it without textures
+        const glm::vec3 albedo = m.albedo * (1.0f - m.metallic), f0 = glm::mix(m.f0, m.albedo, m.metallic);
+        py << "mat" << i << " = material(" << pyString(m.name) << ", " << colour(albedo) << ", "
+           << colour(m.radiance()) << ", f0=" << colour(f0) << ", roughness=" << num(m.roughness)
            << ", transmission=" << num(m.transmission) << ", ior=" << num(m.ior) << ")\n";
     }
     for (size_t i = 0; i < scene.spheres.size(); ++i) {

@@ -5,7 +5,8 @@
 // from nodes, mixed with a Glass BSDF by transmission, plus Emission (the mapping and its known
 // mismatches are commented in the script's material()); constant / gradient / map skies → World;
 // the same camera, thin lens included (aperture → f-stop); box pixel filter, bounces, no
-// denoising, no clamping, no adaptive sampling. Not exported: albedo and normal textures.
+// denoising, no clamping, no adaptive sampling. A scalar metallic becomes its f0/albedo mix. Not
+// exported: textures (any kind) and per-triangle (glTF) materials (a glTF mesh takes its object's).
 //   blender --python scene.py                     opens the scene in Blender
 //   blender -b --factory-startup --python scene.py -- --samples 64 --output out.exr --threads 2
 // renders headless and prints "RAYLAB_RENDER_SECONDS <s>" (the time of the render call alone).

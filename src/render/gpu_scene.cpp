@@ -5,6 +5,7 @@
 #include "shaders/include/scene_types.glsl"
 
 #include <glad/gl.h>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <vector>
@@ -28,6 +29,10 @@ void uploadBuffer(GLuint buffer, std::vector<T> data) {
 }
 
 } // namespace
+
+bool metallicOnGpu(const Material& m) {
+    return m.metallicTextureIndex >= 0 || (m.metallic > 0.0f && m.albedoTextureIndex >= 0);
+}
 
 GpuScene::GpuScene() {
     glCreateBuffers(1, &sphereBuffer_);
@@ -56,11 +61,20 @@ void GpuScene::upload(const Scene& scene) {
     uploadBuffer(geometryBuffers_[3], geometry_.triangles);
     uploadBuffer(geometryBuffers_[4], geometry_.vertices);
     std::vector<glsl::GpuMaterial> materials;
-    for (const Material& m : scene.materials)
-        materials.push_back({glm::vec4(m.albedo, m.roughness), glm::vec4(m.radiance(), m.transmission),
-                             glm::vec4(m.f0, m.ior)});
+    for (const Material& m : scene.materials) {
+        // Metallic on raylab's f0 model: f0 = mix(f0, base, m), albedo = base·(1 − m). Exact here
+        // when the base colour is constant; textured ones are mixed per hit (material_textures.glsl).
+        const bool bake = !metallicOnGpu(m);
+        const glm::vec3 albedo = bake ? m.albedo * (1.0f - m.metallic) : m.albedo;
+        const glm::vec3 f0 = bake ? glm::mix(m.f0, m.albedo, m.metallic) : m.f0;
+        materials.push_back({glm::vec4(albedo, m.roughness), glm::vec4(m.radiance(), m.transmission),
+                             glm::vec4(f0, m.ior)});
+    }
     materialRadiance_.clear();
-    for (const Material& m : scene.materials) materialRadiance_.push_back(m.radiance());
+    // Emission varying over a texture is not a light for next-event estimation (the light list
+    // carries one radiance per light): BSDF samples alone find it, with full weight.
+    for (const Material& m : scene.materials)
+        materialRadiance_.push_back(m.emissionTextureIndex >= 0 ? glm::vec3(0.0f) : m.radiance());
     uploadSkyMap(scene.sky);
     uploadBuffer(materialBuffer_, std::move(materials));
 
@@ -68,11 +82,16 @@ void GpuScene::upload(const Scene& scene) {
     std::vector<glm::vec4> texels;
     std::vector<glm::uvec4> info;
     info.emplace_back(unsigned(scene.materials.size()), 0u, 0u, 0u);
-    for (const Material& m : scene.materials)
-        info.emplace_back(unsigned(m.albedoTextureIndex + 1), unsigned(m.normalTextureIndex + 1), 0u, 0u);
+    for (const Material& m : scene.materials) {
+        info.emplace_back(unsigned(m.albedoTextureIndex + 1), unsigned(m.normalTextureIndex + 1),
+                          unsigned(m.roughnessTextureIndex + 1), unsigned(m.metallicTextureIndex + 1));
+        info.emplace_back(unsigned(m.emissionTextureIndex + 1), glm::floatBitsToUint(metallicOnGpu(m) ? m.metallic : 0.0f),
+                          glm::floatBitsToUint(m.normalScale), 0u);
+    }
     for (const Texture& t : scene.textures) {
+        const unsigned wrap = (unsigned(t.wrapU) << 16u) | (unsigned(t.wrapV) << 24u);
         info.emplace_back(unsigned(texels.size()), unsigned(t.levels[0].width), unsigned(t.levels[0].height),
-                          unsigned(t.levels.size()));
+                          unsigned(t.levels.size()) | wrap);
         for (const MipLevel& l : t.levels) texels.insert(texels.end(), l.texels.begin(), l.texels.end());
     }
     uploadBuffer(textureBuffers_[0], std::move(texels));

@@ -6,6 +6,10 @@
 
 namespace raylab {
 
+// Whether the material's metallic mix happens per hit on the GPU (a metallic texture, or metallic
+// with an albedo texture); otherwise it is baked into the uploaded albedo and f0.
+bool metallicOnGpu(const Material& m);
+
 class GpuScene {
 public:
     GpuScene();

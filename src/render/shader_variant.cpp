@@ -1,5 +1,7 @@
 #include "render/shader_variant.h"
 
+#include "render/gpu_scene.h"
+
 #include <algorithm>
 
 namespace raylab {
@@ -17,7 +19,15 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.nee = scene.render.nee;
     f.generalBsdf = false;
     for (const Material& m : scene.materials)
-        f.generalBsdf |= m.transmission > 0.0f || std::max({m.f0.r, m.f0.g, m.f0.b}) > 0.0f;
+        f.generalBsdf |= m.transmission > 0.0f || std::max({m.f0.r, m.f0.g, m.f0.b}) > 0.0f || m.metallic > 0.0f;
+    f.roughnessTextures = f.metallicTextures = f.emissionTextures = f.textureWrapModes = false;
+    for (const Material& m : scene.materials) {
+        f.roughnessTextures |= m.roughnessTextureIndex >= 0;
+        f.metallicTextures |= metallicOnGpu(m);
+        f.emissionTextures |= m.emissionTextureIndex >= 0;
+    }
+    for (const Texture& t : scene.textures)
+        f.textureWrapModes |= t.wrapU != TextureWrap::Repeat || t.wrapV != TextureWrap::Repeat;
     f.skyMap = scene.sky.type == Sky::Type::Map;
     return f;
 }
@@ -36,6 +46,10 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     if (f.nee) d.emplace_back("RAYLAB_NEE", "1");
     if (f.generalBsdf) d.emplace_back("RAYLAB_GENERAL_BSDF", "1");
     if (f.skyMap) d.emplace_back("RAYLAB_SKY_MAP", "1");
+    if (f.textures && f.roughnessTextures) d.emplace_back("RAYLAB_TEXTURE_ROUGHNESS", "1");
+    if (f.textures && f.metallicTextures) d.emplace_back("RAYLAB_TEXTURE_METALLIC", "1");
+    if (f.textures && f.emissionTextures) d.emplace_back("RAYLAB_TEXTURE_EMISSION", "1");
+    if (f.textures && f.textureWrapModes) d.emplace_back("RAYLAB_TEXTURE_WRAP_MODES", "1");
     return d;
 }
 
@@ -56,6 +70,10 @@ std::string featureName(const SceneFeatures& f) {
     add(f.nee, "nee");
     add(f.generalBsdf, "ggx+glass");
     add(f.skyMap, "sky-map");
+    add(f.textures && f.roughnessTextures, "roughness-tex");
+    add(f.textures && f.metallicTextures, "metallic-tex");
+    add(f.textures && f.emissionTextures, "emission-tex");
+    add(f.textures && f.textureWrapModes, "wrap-modes");
     return name.empty() ? "none" : name;
 }
 

@@ -22,6 +22,10 @@ struct SceneFeatures {
     bool skyMap = true;          // sky.type map (RAYLAB_SKY_MAP)
     bool linearTopLevel = false; // at most kLinearTopLevelMax objects: no top-level BVH
     bool showMipLevel = false;   // debug view (render.show_mip_level), never part of "all features"
+    bool roughnessTextures = true;   // some material has a roughness_texture (RAYLAB_TEXTURE_ROUGHNESS)
+    bool metallicTextures = true;    // metallic mixed per hit (RAYLAB_TEXTURE_METALLIC, gpu_scene.h)
+    bool emissionTextures = true;    // some material has an emission_texture (RAYLAB_TEXTURE_EMISSION)
+    bool textureWrapModes = true;    // some texture clamps or mirrors (RAYLAB_TEXTURE_WRAP_MODES)
     bool operator==(const SceneFeatures&) const = default;
 };
 

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -15,6 +16,7 @@ struct Reader {
     const tinygltf::Model& model;
     const std::string& name;
     Mesh& mesh;
+    bool anyMaterial = false;   // some primitive names a material
 
     [[noreturn]] void fail(const std::string& what) const { throw GltfError(name + ": " + what); }
 
@@ -103,6 +105,7 @@ struct Reader {
                 mesh.uvs.emplace_back(float(t[0]), 1.0f - float(t[1]));   // glTF's v runs downwards
             }
         }
+        const std::size_t firstTriangle = mesh.triangles.size();
         if (p.indices >= 0) {
             const std::size_t m = count(p.indices);
             for (std::size_t i = 0; i + 2 < m; i += 3) {
@@ -117,12 +120,127 @@ struct Reader {
         } else {
             for (unsigned i = 0; i + 2 < n; i += 3) mesh.triangles.emplace_back(base + i, base + i + 1, base + i + 2);
         }
+        if (p.material >= 0 && std::size_t(p.material) >= model.materials.size()) fail("bad material index");
+        anyMaterial |= p.material >= 0;
+        mesh.triangleMaterials.resize(firstTriangle, -1);
+        mesh.triangleMaterials.resize(mesh.triangles.size(), p.material);
+    }
+};
+
+TextureWrap wrapMode(int gl) {
+    switch (gl) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::MirroredRepeat;
+    default: return TextureWrap::Repeat;
+    }
+}
+
+// glTF materials → raylab materials (the table in scenes/FORMAT.md) and their images.
+struct MaterialReader {
+    const tinygltf::Model& model;
+    const std::string& name;
+    GltfAsset& asset;
+
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw GltfError(name + ": " + where + ": " + what);
+    }
+
+    // Texture `index` as a raylab texture (loaded once per texture and decoding); `where` is the
+    // JSON path of the reference, for messages.
+    int texture(int index, int texCoord, bool linearData, const std::string& where) {
+        if (index < 0 || std::size_t(index) >= model.textures.size()) fail(where, "bad texture index " + std::to_string(index));
+        if (texCoord != 0)
+            asset.warnings.push_back(name + ": " + where + ": texCoord " + std::to_string(texCoord) +
+                                     " is not supported; TEXCOORD_0 is used");
+        const std::string key = (linearData ? "linear:" : "srgb:") + name + "#textures[" + std::to_string(index) + "]";
+        for (std::size_t i = 0; i < asset.textures.size(); ++i)
+            if (asset.textures[i].file == key) return int(i);
+        const tinygltf::Texture& t = model.textures[std::size_t(index)];
+        const std::string tp = "textures[" + std::to_string(index) + "]";
+        if (t.source < 0 || std::size_t(t.source) >= model.images.size()) fail(where, tp + ": no image (source)");
+        const tinygltf::Image& im = model.images[std::size_t(t.source)];
+        const std::string ip = "images[" + std::to_string(t.source) + "]" +
+                               (im.uri.empty() || im.uri.rfind("data:", 0) == 0 ? "" : " '" + im.uri + "'");
+        if (im.image.empty() || im.width <= 0 || im.height <= 0)
+            fail(where, ip + ": cannot read" + (im.uri.empty() || im.uri.rfind("data:", 0) == 0 ? "" : ": no such file"));
+        if (std::size_t(im.width) * std::size_t(im.height) * std::size_t(im.component) * std::size_t(im.bits / 8) >
+            im.image.size())
+            fail(where, ip + ": image data is shorter than its size");
+        Texture tex;
+        try {
+            tex = textureFromPixels(im.image.data(), im.width, im.height, im.component, im.bits, linearData);
+        } catch (const TextureError& e) {
+            fail(where, ip + ": " + e.what());
+        }
+        tex.file = key;
+        if (t.sampler >= 0) {
+            if (std::size_t(t.sampler) >= model.samplers.size()) fail(where, tp + ": bad sampler index");
+            const tinygltf::Sampler& s = model.samplers[std::size_t(t.sampler)];
+            tex.wrapU = wrapMode(s.wrapS);
+            tex.wrapV = wrapMode(s.wrapT);
+        }
+        asset.textures.push_back(std::move(tex));
+        return int(asset.textures.size() - 1);
+    }
+
+    static float clamp01(double v) { return float(std::min(1.0, std::max(0.0, v))); }
+
+    Material material(std::size_t k) {
+        const tinygltf::Material& g = model.materials[k];
+        const std::string mp = "materials[" + std::to_string(k) + "]";
+        Material m;
+        m.name = mp + (g.name.empty() ? "" : " " + g.name);
+        const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+        const std::string pp = mp + ".pbrMetallicRoughness";
+        if (pbr.baseColorFactor.size() >= 3)
+            m.albedo = glm::vec3(clamp01(pbr.baseColorFactor[0]), clamp01(pbr.baseColorFactor[1]),
+                                 clamp01(pbr.baseColorFactor[2]));
+        // glTF's dielectrics reflect 4% at normal incidence; metals take the base colour as f0.
+        m.f0 = glm::vec3(0.04f);
+        m.metallic = clamp01(pbr.metallicFactor);
+        m.roughness = clamp01(pbr.roughnessFactor);
+        if (pbr.baseColorTexture.index >= 0)
+            m.albedoTextureIndex = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, false,
+                                           pp + ".baseColorTexture");
+        if (pbr.metallicRoughnessTexture.index >= 0) {
+            // One image: roughness in green, metallic in blue (as raylab's two keys read them).
+            const int t = texture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, true,
+                                  pp + ".metallicRoughnessTexture");
+            m.roughnessTextureIndex = t;
+            m.metallicTextureIndex = t;
+        }
+        if (g.normalTexture.index >= 0) {
+            m.normalTextureIndex = texture(g.normalTexture.index, g.normalTexture.texCoord, true, mp + ".normalTexture");
+            m.normalScale = float(std::max(0.0, g.normalTexture.scale));
+        }
+        if (g.emissiveFactor.size() >= 3)
+            m.emission = glm::vec3(float(std::max(0.0, g.emissiveFactor[0])), float(std::max(0.0, g.emissiveFactor[1])),
+                                   float(std::max(0.0, g.emissiveFactor[2])));
+        float strength = 1.0f;
+        const auto ext = g.extensions.find("KHR_materials_emissive_strength");
+        if (ext != g.extensions.end() && ext->second.Has("emissiveStrength")) {
+            const tinygltf::Value& v = ext->second.Get("emissiveStrength");
+            if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()) || v.GetNumberAsDouble() < 0.0)
+                fail(mp + ".extensions.KHR_materials_emissive_strength.emissiveStrength", "must be a number >= 0");
+            strength = float(v.GetNumberAsDouble());
+        }
+        const bool emits = std::max({m.emission.r, m.emission.g, m.emission.b}) > 0.0f && strength > 0.0f;
+        m.emissionStrength = emits ? strength : 0.0f;
+        if (emits && g.emissiveTexture.index >= 0)
+            m.emissionTextureIndex = texture(g.emissiveTexture.index, g.emissiveTexture.texCoord, false,
+                                             mp + ".emissiveTexture");
+        if (g.alphaMode != "OPAQUE" && !g.alphaMode.empty())
+            asset.warnings.push_back(name + ": " + mp + ".alphaMode: " + g.alphaMode +
+                                     " is ignored; the material is opaque");
+        if (g.occlusionTexture.index >= 0)
+            asset.warnings.push_back(name + ": " + mp + ".occlusionTexture is ignored (a path tracer finds occlusion itself)");
+        return m;
     }
 };
 
 } // namespace
 
-Mesh loadGltf(const std::filesystem::path& file) {
+GltfAsset loadGltfAsset(const std::filesystem::path& file) {
     const std::string name = file.string();
     if (!std::filesystem::is_regular_file(file)) throw GltfError(name + ": cannot read: no such file");
     tinygltf::Model model;
@@ -135,7 +253,8 @@ Mesh loadGltf(const std::filesystem::path& file) {
         while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
         throw GltfError(name + ": " + (err.empty() ? std::string("cannot parse") : err));
     }
-    Mesh mesh;
+    GltfAsset asset;
+    Mesh& mesh = asset.mesh;
     Reader reader{model, name, mesh};
     if (model.scenes.empty()) {
         for (std::size_t i = 0; i < model.nodes.size(); ++i) reader.node(int(i), glm::mat4(1.0f), 0);
@@ -151,6 +270,31 @@ Mesh loadGltf(const std::filesystem::path& file) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             throw GltfError(name + ": a vertex position is not a finite number");
     if (mesh.triangles.empty()) throw GltfError(name + ": contains no triangles");
+    // Materials (only those the default scene's primitives use are read).
+    std::vector<int> used(model.materials.size(), -1);
+    MaterialReader materials{model, name, asset};
+    for (int& t : mesh.triangleMaterials) {
+        if (t < 0) continue;
+        if (used[std::size_t(t)] < 0) {
+            used[std::size_t(t)] = int(asset.materials.size());
+            asset.materials.push_back(materials.material(std::size_t(t)));
+        }
+        t = used[std::size_t(t)];
+    }
+    if (!reader.anyMaterial) mesh.triangleMaterials.clear();
+    for (const std::string& e : model.extensionsRequired)
+        if (e != "KHR_materials_emissive_strength")
+            asset.warnings.push_back(name + ": extensionsRequired: " + e + " is not supported; the file may look different");
+    if (!warn.empty()) {
+        while (!warn.empty() && (warn.back() == '\n' || warn.back() == '\r')) warn.pop_back();
+        asset.warnings.push_back(name + ": " + warn);
+    }
+    return asset;
+}
+
+Mesh loadGltf(const std::filesystem::path& file) {
+    Mesh mesh = loadGltfAsset(file).mesh;
+    mesh.triangleMaterials.clear();
     return mesh;
 }
 

@@ -205,6 +205,13 @@ std::vector<MaterialParamSpec> buildMaterialTable() {
     add(spec("strength", T::Float, atLeast(0), kAny, "factor", "Multiplies emission (0 = not a light).",
              Trigger::ReloadScene),
         [](auto& m) -> auto& { return m.emissionStrength; });
+    add(spec("metallic", T::Float, atLeast(0), atMost(1), "fraction",
+             "Metallic workflow: f0 = mix(f0, base colour, m), albedo = base colour x (1 - m); base = albedo x albedo_texture.",
+             Trigger::ReloadScene),
+        [](auto& m) -> auto& { return m.metallic; });
+    add(spec("normal_scale", T::Float, atLeast(0), kAny, "factor",
+             "Scales the normal map's x and y (0 = flat, 1 = as stored).", Trigger::ReloadScene),
+        [](auto& m) -> auto& { return m.normalScale; });
     return t;
 }
 
@@ -306,7 +313,8 @@ const std::vector<std::string_view>& meshKeys() {
 }
 
 const std::vector<std::string_view>& materialFileKeys() {
-    static const std::vector<std::string_view> keys = {"albedo_texture", "normal_texture"};
+    static const std::vector<std::string_view> keys = {"albedo_texture", "normal_texture", "roughness_texture",
+                                                        "metallic_texture", "emission_texture"};
     return keys;
 }
 

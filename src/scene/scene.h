@@ -54,6 +54,15 @@ struct Material {
     int albedoTextureIndex = -1;     // into Scene::textures
     std::string normalTexture;       // tangent-space normal map ("" = none), read as linear data
     int normalTextureIndex = -1;     // into Scene::textures
+    float normalScale = 1.0f;        // scales the normal map's x and y (glTF normalTexture.scale)
+    float metallic = 0.0f;           // f0 = mix(f0, base colour, m), albedo = base colour × (1 − m)
+    std::string roughnessTexture;    // multiplies roughness by its green channel (linear data)
+    int roughnessTextureIndex = -1;
+    std::string metallicTexture;     // multiplies metallic by its blue channel (linear data)
+    int metallicTextureIndex = -1;
+    std::string emissionTexture;     // multiplies the emitted radiance (sRGB-decoded colour)
+    int emissionTextureIndex = -1;
+    bool fromGltf = false;           // read from a mesh's glTF file, not the scene's "materials"
     glm::vec3 radiance() const { return emission * emissionStrength; }
 };
 
@@ -81,6 +90,8 @@ struct Mesh {
     std::vector<glm::vec2> uvs;
     std::vector<glm::uvec3> triangles;   // indices into positions (and normals, uvs)
     int material = 0;                    // index into Scene::materials
+    // Per triangle (glTF materials): index into Scene::materials, -1 = `material`. Empty = all `material`.
+    std::vector<int> triangleMaterials;
     Transform transform;
 };
 
@@ -104,7 +115,8 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Sphere> spheres;
     std::vector<Mesh> meshes;
-    std::vector<Texture> textures;   // loaded images, referenced by Material::albedoTextureIndex
+    std::vector<Texture> textures;   // loaded images, referenced by the materials' *TextureIndex
+    std::vector<std::string> warnings;   // non-fatal notes from loading (glTF features ignored, ...)
 };
 
 } // namespace raylab

@@ -332,6 +332,7 @@ struct PendingSphere {
 struct PendingMesh {
     Mesh mesh;
     std::string material;
+    std::vector<Material> gltfMaterials;   // used when the object names no material (textures resolved)
 };
 
 // An image file for a material (relative to the scene's directory), loaded once per path.
@@ -354,6 +355,35 @@ int readTexture(const Json& v, const Path& p, const std::filesystem::path& scene
         fail(p, e.what());
     }
     return int(textures.size() - 1);
+}
+
+// A glTF file's materials: its images join the scene's textures (once per file and texture), its
+// materials wait in the pending mesh, named "FILE#materials[k] NAME", until the file's own
+// materials are in place. An object that names a material keeps that one for the whole mesh.
+void addGltfMaterials(GltfAsset gltf, bool objectNamesMaterial, PendingMesh& pending, Scene& scene) {
+    for (std::string& w : gltf.warnings) scene.warnings.push_back(std::move(w));
+    if (objectNamesMaterial || gltf.materials.empty()) {
+        pending.mesh.triangleMaterials.clear();
+        return;
+    }
+    std::vector<int> textureIndex;
+    for (Texture& t : gltf.textures) {
+        const auto known = std::find_if(scene.textures.begin(), scene.textures.end(),
+                                        [&t](const Texture& x) { return x.file == t.file; });
+        textureIndex.push_back(int(known - scene.textures.begin()));
+        if (known == scene.textures.end()) scene.textures.push_back(std::move(t));
+    }
+    auto remap = [&textureIndex](int& i) { i = i < 0 ? -1 : textureIndex[std::size_t(i)]; };
+    for (Material& m : gltf.materials) {
+        m.name = pending.mesh.file + "#" + m.name;
+        remap(m.albedoTextureIndex);
+        remap(m.normalTextureIndex);
+        remap(m.roughnessTextureIndex);
+        remap(m.metallicTextureIndex);
+        remap(m.emissionTextureIndex);
+        m.fromGltf = true;
+    }
+    pending.gltfMaterials = std::move(gltf.materials);
 }
 
 // "transform": { "translation", "rotation", "scale" }; scale may be one number for all axes.
@@ -391,7 +421,7 @@ std::vector<double> readNumbers(const Json& o, const char* key, const Path& p, s
 }
 
 // A mesh object: inline arrays, or "file" (OBJ, relative to the scene file's directory).
-Mesh readMesh(const Json& o, const Path& p, const std::filesystem::path& sceneDir) {
+Mesh readMesh(const Json& o, const Path& p, const std::filesystem::path& sceneDir, GltfAsset* gltf) {
     std::vector<std::string_view> known = {"type", "material", "transform"};
     for (std::string_view k : meshKeys()) known.push_back(k);
     for (const auto& [k, v] : o.items()) {
@@ -413,7 +443,12 @@ Mesh readMesh(const Json& o, const Path& p, const std::filesystem::path& sceneDi
         std::string ext = path.extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
         try {
-            mesh = (ext == ".gltf" || ext == ".glb") ? loadGltf(path) : loadObj(path);
+            if (ext == ".gltf" || ext == ".glb") {
+                *gltf = loadGltfAsset(path);
+                mesh = std::move(gltf->mesh);
+            } else {
+                mesh = loadObj(path);
+            }
         } catch (const ObjError& e) {
             fail(p.key("file"), e.what());
         } catch (const GltfError& e) {
@@ -535,6 +570,18 @@ void validate(const Json& root, Scene& scene) {
                 mat.normalTextureIndex = readTexture(m["normal_texture"], p.key(name).key("normal_texture"),
                                                      scene.sourcePath.parent_path(), scene.textures,
                                                      mat.normalTexture, true);
+            if (m.contains("roughness_texture"))
+                mat.roughnessTextureIndex = readTexture(m["roughness_texture"], p.key(name).key("roughness_texture"),
+                                                        scene.sourcePath.parent_path(), scene.textures,
+                                                        mat.roughnessTexture, true);
+            if (m.contains("metallic_texture"))
+                mat.metallicTextureIndex = readTexture(m["metallic_texture"], p.key(name).key("metallic_texture"),
+                                                       scene.sourcePath.parent_path(), scene.textures,
+                                                       mat.metallicTexture, true);
+            if (m.contains("emission_texture"))
+                mat.emissionTextureIndex = readTexture(m["emission_texture"], p.key(name).key("emission_texture"),
+                                                       scene.sourcePath.parent_path(), scene.textures,
+                                                       mat.emissionTexture);
             materials.push_back(std::move(mat));
         }
     }
@@ -579,7 +626,9 @@ void validate(const Json& root, Scene& scene) {
                                         suggestion(material, materialNames, "defined materials"));
         }
         if (isMesh) {
-            PendingMesh m{readMesh(o, p, sceneDir), material};
+            GltfAsset gltf;
+            PendingMesh m{readMesh(o, p, sceneDir, &gltf), material, {}};
+            addGltfMaterials(std::move(gltf), o.contains("material"), m, scene);
             m.mesh.transform = readTransform(o, p);
             meshes.push_back(std::move(m));
             continue;
@@ -618,6 +667,15 @@ void validate(const Json& root, Scene& scene) {
     scene.meshes.clear();
     for (PendingMesh& m : meshes) {
         m.mesh.material = indexOf.at(m.material);
+        // glTF materials follow the file's own (sorted) ones; one copy per glTF file and material.
+        std::vector<int> gltfIndex;
+        for (Material& g : m.gltfMaterials) {
+            const auto known = std::find_if(scene.materials.begin(), scene.materials.end(),
+                                            [&g](const Material& x) { return x.name == g.name; });
+            gltfIndex.push_back(int(known - scene.materials.begin()));
+            if (known == scene.materials.end()) scene.materials.push_back(std::move(g));
+        }
+        for (int& t : m.mesh.triangleMaterials) t = t < 0 ? -1 : gltfIndex[std::size_t(t)];
         scene.meshes.push_back(std::move(m.mesh));
     }
 
@@ -820,7 +878,7 @@ nlohmann::json meshJson(const Mesh& m, const std::string& material) {
         if (!m.uvs.empty()) o["uvs"] = flat(m.uvs, 2);
     }
     o["transform"] = transformJson(m.transform);
-    o["material"] = material;
+    if (m.triangleMaterials.empty()) o["material"] = material;   // else the glTF file's materials
     return o;
 }
 
@@ -881,10 +939,14 @@ nlohmann::json sceneToJson(const Scene& scene) {
 
     nlohmann::json materials = nlohmann::json::object();
     for (const Material& m : scene.materials) {
+        if (m.fromGltf) continue;   // read again from the mesh's file
         nlohmann::json mj = nlohmann::json::object();
         for (const MaterialParamSpec& spec : materialParameters()) mj[std::string(spec.key)] = valueJson(spec, m);
         if (!m.albedoTexture.empty()) mj["albedo_texture"] = m.albedoTexture;
         if (!m.normalTexture.empty()) mj["normal_texture"] = m.normalTexture;
+        if (!m.roughnessTexture.empty()) mj["roughness_texture"] = m.roughnessTexture;
+        if (!m.metallicTexture.empty()) mj["metallic_texture"] = m.metallicTexture;
+        if (!m.emissionTexture.empty()) mj["emission_texture"] = m.emissionTexture;
         materials[m.name] = mj;
     }
     j["materials"] = materials;

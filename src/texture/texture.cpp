@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
 
 namespace raylab {
 namespace {
@@ -67,6 +70,37 @@ Texture loadTexture(const std::filesystem::path& path, bool linearData) {
                 for (int k = 0; k < 3; ++k) v[k] = srgbDecode(v[k]);
             // Files store the top row first; v = 0 is the bottom (OpenGL convention).
             base.texels[std::size_t(h - 1 - y) * std::size_t(w) + std::size_t(x)] = v;
+        }
+    Texture t;
+    t.levels = buildMipPyramid(std::move(base));
+    return t;
+}
+
+Texture textureFromPixels(const unsigned char* pixels, int width, int height, int channels, int bits, bool linearData) {
+    if (width <= 0 || height <= 0 || channels <= 0 || (bits != 8 && bits != 16))
+        throw TextureError("unsupported image layout (" + std::to_string(width) + "x" + std::to_string(height) + ", " +
+                           std::to_string(channels) + " channels, " + std::to_string(bits) + " bits)");
+    const std::size_t bytes = std::size_t(bits / 8);
+    auto value = [&](std::size_t i) {
+        if (bytes == 1) return float(pixels[i]) / 255.0f;
+        std::uint16_t s = 0;
+        std::memcpy(&s, pixels + 2 * i, 2);   // tinygltf hands 16-bit pixels in host order
+        return float(s) / 65535.0f;
+    };
+    MipLevel base;
+    base.width = width;
+    base.height = height;
+    base.texels.resize(std::size_t(width) * std::size_t(height));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = (std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels);
+            const float r = value(i);
+            // Grey (+alpha) images spread their one value over rgb, as loadTexture does.
+            glm::vec4 v(r, channels > 2 ? value(i + 1) : r, channels > 2 ? value(i + 2) : r,
+                        channels == 4 ? value(i + 3) : (channels == 2 ? value(i + 1) : 1.0f));
+            if (!linearData)
+                for (int k = 0; k < 3; ++k) v[k] = srgbDecode(v[k]);
+            base.texels[std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)] = v;
         }
     Texture t;
     t.levels = buildMipPyramid(std::move(base));

@@ -5,6 +5,7 @@
 #include "support/gl_test.h"
 #include "support/statistics.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace raylab;
@@ -24,7 +25,47 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     EXPECT_EQ(d[0].first, "RAYLAB_FEATURES_SPECIALISED");
     EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
     EXPECT_EQ(d[2].first, "RAYLAB_TOP_LEVEL_LINEAR");
-    EXPECT_EQ(featureDefines(allFeatures()).size(), 9u);   // 5 geometry features + NEE, BSDF, sky map
+    // 5 geometry features + NEE, BSDF, sky map + roughness, metallic, emission textures, wrap modes
+    EXPECT_EQ(featureDefines(allFeatures()).size(), 13u);
+}
+
+TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore) {
+    // textured_bricks.json has albedo and normal textures only: exactly the defines it had before
+    // roughness, metallic and emission textures existed.
+    const Scene bricks = loadScene(test::scenePath("textured_bricks.json"));
+    ShaderDefines expected = {{"RAYLAB_FEATURES_SPECIALISED", "1"}};
+    const SceneFeatures f = sceneFeatures(bricks);
+    if (f.spheres) expected.emplace_back("RAYLAB_FEATURE_SPHERES", "1");
+    if (f.meshes) expected.emplace_back("RAYLAB_FEATURE_MESHES", "1");
+    if (f.smoothNormals) expected.emplace_back("RAYLAB_FEATURE_SMOOTH_NORMALS", "1");
+    expected.emplace_back("RAYLAB_FEATURE_TEXTURES", "1");
+    if (f.linearTopLevel) expected.emplace_back("RAYLAB_TOP_LEVEL_LINEAR", "1");
+    if (f.nee) expected.emplace_back("RAYLAB_NEE", "1");
+    if (f.generalBsdf) expected.emplace_back("RAYLAB_GENERAL_BSDF", "1");
+    EXPECT_EQ(featureDefines(f), expected);
+    // Each new kind adds its own define and nothing else.
+    const auto withOne = [&](auto edit, const char* define) {
+        Scene s = bricks;
+        edit(s.materials[0]);
+        ShaderDefines d = featureDefines(sceneFeatures(s));
+        ShaderDefines more = expected;
+        if (std::find(more.begin(), more.end(), std::pair<std::string, std::string>{"RAYLAB_GENERAL_BSDF", "1"}) ==
+                more.end() && sceneFeatures(s).generalBsdf)
+            more.emplace_back("RAYLAB_GENERAL_BSDF", "1");
+        more.emplace_back(define, "1");
+        EXPECT_EQ(d, more) << define;
+    };
+    withOne([](Material& m) { m.roughnessTextureIndex = 0; }, "RAYLAB_TEXTURE_ROUGHNESS");
+    withOne([](Material& m) { m.emissionTextureIndex = 0; }, "RAYLAB_TEXTURE_EMISSION");
+    withOne([](Material& m) { m.metallicTextureIndex = 0; }, "RAYLAB_TEXTURE_METALLIC");
+    Scene wrapped = bricks;
+    wrapped.textures[0].wrapU = TextureWrap::ClampToEdge;
+    EXPECT_EQ(featureDefines(sceneFeatures(wrapped)).back().first, "RAYLAB_TEXTURE_WRAP_MODES");
+    // Metallic without any texture of its own on an untextured material is baked: no new define.
+    Scene metal = loadScene(test::scenePath("default.json"));
+    metal.materials[0].metallic = 0.5f;
+    for (const auto& [name, value] : featureDefines(sceneFeatures(metal))) EXPECT_EQ(name.find("RAYLAB_TEXTURE_"), std::string::npos);
+    EXPECT_TRUE(sceneFeatures(metal).generalBsdf);
 }
 
 class ShaderVariantTest : public test::GlTest {};
