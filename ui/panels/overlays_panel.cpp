@@ -15,6 +15,12 @@ void drawOverlaysPanel(Viewer& viewer, UiState&) {
     ImGui::SameLine();
     ImGui::Checkbox("selected only", &viewer.overlays.selectedOnly);
     ImGui::TextDisabled("Boxes: yellow, the selected object's: cyan.");
+    ImGui::Separator();
+    ImGui::Checkbox("Inspector", &viewer.inspection.panelOpen);
+    ImGui::SameLine();
+    ImGui::Checkbox("inspect mode", &viewer.inspection.clickInspects);
+    ImGui::SameLine();
+    ImGui::Checkbox("BRDF explorer", &viewer.brdfExplorer.panelOpen);
     ImGui::End();
 }
 
