@@ -264,7 +264,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         // 0.95, and divide by q so the estimate stays unbiased.
         if (bounce + 1 >= uRrDepth) {
             float q = min(max(beta.r, max(beta.g, beta.b)), 0.95f);
-            bool survived = rngNextFloat(rng) < q;
+            bool survived = !(rngNextFloat(rng) >= q);   // a NaN q survives (the NaN guard counts it)
             RAYLAB_RECORD(recordRoulette(bounce, q, survived));
             if (!survived) break;
             beta /= q;

@@ -65,7 +65,10 @@ glm::vec2 directionToDisk(glm::vec3 w) {
     return glm::vec2(w.x, w.y) * (r / s);
 }
 
-HemisphereMap hemisphereMap(const glsl::BsdfParams& m, glm::vec3 wo, int n) {
+HemisphereMap hemisphereMap(const glsl::BsdfParams& m, glm::vec3 wo, int n, MapQuantity q) {
+    const auto value = [&](glm::vec3 wi) {
+        return q == MapQuantity::Pdf ? glsl::bsdfPdf(m, wo, wi) : luminance(glsl::bsdfEval(m, wo, wi));
+    };
     HemisphereMap map;
     map.n = n;
     map.upper.assign(std::size_t(n * n), -1.0f);
@@ -75,8 +78,8 @@ HemisphereMap hemisphereMap(const glsl::BsdfParams& m, glm::vec3 wo, int n) {
             const glm::vec2 p(-1.0f + 2.0f * (float(col) + 0.5f) / float(n), 1.0f - 2.0f * (float(row) + 0.5f) / float(n));
             if (glm::dot(p, p) > 1.0f) continue;
             const std::size_t i = std::size_t(row * n + col);
-            map.upper[i] = luminance(glsl::bsdfEval(m, wo, diskToDirection(p, false)));
-            map.lower[i] = luminance(glsl::bsdfEval(m, wo, diskToDirection(p, true)));
+            map.upper[i] = value(diskToDirection(p, false));
+            map.lower[i] = value(diskToDirection(p, true));
             map.maxValue = std::max({map.maxValue, map.upper[i], map.lower[i]});
         }
     return map;

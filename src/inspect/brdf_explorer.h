@@ -43,15 +43,16 @@ std::vector<PolarPoint> polarCurve(const glsl::BsdfParams& m, glm::vec3 wo, int 
 glm::vec3 diskToDirection(glm::vec2 p, bool lower);
 glm::vec2 directionToDisk(glm::vec3 w);   // of w's own hemisphere (sign of z)
 
-// Luminance of f·|cosθi| on an n × n grid over each hemisphere's disk (row-major, +y up);
-// cells whose centre lies outside the disk hold −1.
+// Luminance of f·|cosθi| (or the sampling pdf) on an n × n grid over each hemisphere's disk
+// (row-major, +y up); cells whose centre lies outside the disk hold −1.
 struct HemisphereMap {
     int n = 0;
     std::vector<float> upper;
     std::vector<float> lower;
     float maxValue = 0.0f;
 };
-HemisphereMap hemisphereMap(const glsl::BsdfParams& m, glm::vec3 wo, int n = 32);
+enum class MapQuantity { FCos, Pdf };
+HemisphereMap hemisphereMap(const glsl::BsdfParams& m, glm::vec3 wo, int n = 32, MapQuantity q = MapQuantity::FCos);
 
 // χ² of sampled directions against the pdf, on 2·n·n disk cells (upper then lower hemisphere)
 // plus one cell for samples the density does not describe (delta lobes and failed samples),

@@ -64,6 +64,8 @@ TEST(BrdfExplorer, PolarCurveAndHeatMapOfLambertAreRhoCosOverPi) {
     EXPECT_EQ(map.upper[0], -1.0f);                           // a corner outside the disk
     EXPECT_EQ(map.lower[4 * 9 + 4], 0.0f);                    // nothing below an opaque surface
     EXPECT_NEAR(map.maxValue, 0.6f / kPi, 1e-3f);
+    const HemisphereMap pdf = hemisphereMap(p, wo, 9, MapQuantity::Pdf);
+    EXPECT_NEAR(pdf.upper[4 * 9 + 4], 1.0f / kPi, 1e-3f);   // cosine-weighted: cosθ/π
 }
 
 TEST(BrdfExplorer, PolarCurvePutsTheGgxPeakAtTheMirrorDirection) {

@@ -43,6 +43,7 @@ void BrdfExplorerModel::update(Viewer& viewer) {
     const glm::vec3 w = wo();
     polar_ = polarCurve(p, w, 360);
     map_ = hemisphereMap(p, w, 48);
+    pdfMap_ = hemisphereMap(p, w, 48, MapQuantity::Pdf);
     try {
         if (!sampler_) sampler_ = std::make_unique<GpuBsdfSampler>();
         samples_ = sampler_->bsdf(p, w, unsigned(sampleCount), seed);

@@ -26,6 +26,7 @@ public:
     unsigned seed = 1;
     int cells = 16;           // χ² grid: cells × cells per hemisphere
     double alpha = 0.01;      // significance of the verdict
+    bool mapPdf = false;      // heat maps: the sampling pdf instead of f·cosθ
 
     // The material index in use for this scene (-1 when the scene has none).
     int resolvedMaterial(const Viewer& viewer) const;
@@ -37,7 +38,7 @@ public:
 
     const glsl::BsdfParams& params() const { return params_; }
     const std::vector<PolarPoint>& polar() const { return polar_; }
-    const HemisphereMap& map() const { return map_; }
+    const HemisphereMap& map() const { return mapPdf ? pdfMap_ : map_; }
     const std::vector<GpuSample>& samples() const { return samples_; }
     const SamplerTest& test() const { return test_; }
     bool hasResults() const { return !polar_.empty(); }
@@ -49,6 +50,7 @@ private:
     std::vector<float> key_;   // the inputs the results are for
     std::vector<PolarPoint> polar_;
     HemisphereMap map_;
+    HemisphereMap pdfMap_;
     std::vector<GpuSample> samples_;
     SamplerTest test_;
     std::string error_;

@@ -170,6 +170,12 @@ void drawBrdfExplorerPanel(Viewer& viewer, UiState&) {
     hemisphereDisk(m, true, disk, scatter);
     ImGui::EndGroup();
     ImGui::Checkbox("show samples", &scatter);
+    ImGui::SameLine();
+    ImGui::TextUnformatted("  maps:");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("f cos", !m.mapPdf)) m.mapPdf = false;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("pdf (what the samples follow)", m.mapPdf)) m.mapPdf = true;
     ImGui::End();
 }
 
