@@ -162,9 +162,9 @@ void drawWorkspace(Viewer& viewer, UiState& ui, float W, float H) {
     drawCameraPanel(viewer, ui);
     place(left + mid, 0, right, H * 0.55f);
     drawMaterialPanel(viewer, ui);
-    place(left + mid, H * 0.55f, right, H * 0.12f);
+    place(left + mid, H * 0.55f, right, H * 0.17f);
     drawOverlaysPanel(viewer, ui);
-    place(left + mid, H * 0.67f, right, H * 0.33f);
+    place(left + mid, H * 0.72f, right, H * 0.28f);
     drawDebugPanel(viewer, ui);
     place(left, H - bottom, mid * 0.5f, bottom);
     drawStatsPanel(viewer, ui);
