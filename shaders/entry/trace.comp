@@ -11,6 +11,8 @@
 // RAYLAB_TEXTURE_WRAP_MODES (include/features.glsl, include/material_textures.glsl).
 // Optional, tests only: RAYLAB_INJECT_NONFINITE=N (every N-th sample becomes NaN or Inf).
 // Optional, debug: RAYLAB_COUNT_TRAVERSAL (boxes and triangles tested, include/scene_geometry.glsl).
+// Optional, the pixel path inspector only: RAYLAB_INSPECT_PATHS (records the estimator of one
+// pixel into buffers 20 and 21, include/path_record.glsl; src/inspect/path_inspector.h).
 #include "../include/path_tracer.glsl"
 
 layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y) in;

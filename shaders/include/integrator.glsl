@@ -14,6 +14,9 @@
 #include "environment_sampling.glsl"
 #include "scene_intersect.glsl"
 #include "features.glsl"
+#include "bsdf_lobes.glsl"
+// The path inspector's RAYLAB_RECORD hooks: empty unless its variant defines RAYLAB_INSPECT_PATHS.
+#include "path_record.glsl"
 #ifdef RAYLAB_FEATURE_TEXTURES
 #include "material_textures.glsl"
 #include "ray_cone.glsl"
@@ -100,7 +103,9 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
     for (int bounce = 0;; ++bounce) {
         Hit hit;
         ++rays;
-        if (!intersectScene(ray, hit)) {
+        bool found = intersectScene(ray, hit);
+        RAYLAB_RECORD(recordSegment(bounce, ray, found, hit, beta));
+        if (!found) {
             vec3 dir = normalize(ray.dir);
             float w = 1.0f;
 #ifdef RAYLAB_NEE
@@ -110,6 +115,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             }
 #endif
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * skyLookup(sky, dir) * w);
+            RAYLAB_RECORD(recordEmission(bounce, skyLookup(sky, dir), w));
             break;
         }
         GpuMaterial m = materials[hit.material];
@@ -127,6 +133,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             }
 #endif
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
+            RAYLAB_RECORD(recordEmission(bounce, Le, w));
         }
         if (bounce >= uMaxBounces) break;
         BsdfParams bsdf = materialBsdf(m);
@@ -140,6 +147,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         vec3 wo = frameToLocal(frame, -normalize(ray.dir));
         // Which side of the true (geometric) surface the path arrived on.
         float arrivalSide = dot(-ray.dir, hit.normal);
+        RAYLAB_RECORD(recordShadingFrame(bounce, ns));
 
 #ifdef RAYLAB_NEE
         // Next-event estimation: one light, picked uniformly, sampled by solid angle.
@@ -187,10 +195,15 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                     tMax = t > 0.0f ? t * (1.0f - 1e-4f) : -1.0f;
                 }
                 ++rays;
-                if (tMax > 0.0f && !occluded(shadow, tMax)) {
+                bool visible = tMax > 0.0f && !occluded(shadow, tMax);
+                if (visible) {
                     float w = uMis ? powerHeuristic(misPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
                     RAYLAB_ADD_RADIANCE(radiance, bounce + 1, beta * f * Ll * (w / lightPdf));
                 }
+                RAYLAB_RECORD(recordLight(bounce, k, wiW, k < uLightCount ? tMax : -1.0f, Ll, f, abs(wiL.z), lightPdf,
+                                          misPdf, bsdfPdf(bsdf, wo, wiL), visible ? 1 : 0));
+            } else {
+                RAYLAB_RECORD(recordLight(bounce, k, wiW, -1.0f, Ll, f, abs(wiL.z), lightPdf, misPdf, 0.0f, 2));
             }
         }
 
@@ -213,8 +226,10 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             bs = bsdfSample(bsdf, wo, vec3(u.x, u.y, rngNextFloat(rng)));
         }
 #endif
-        if (bs.lobe == LOBE_NONE) break;
         vec3 dir = frameToWorld(frame, bs.wi);
+        RAYLAB_RECORD(recordBsdfSample(bounce, dir, bs.lobe, bsdfLobeProbability(bsdf, wo, bs.lobe),
+                                       bsdfEval(bsdf, wo, bs.wi), abs(bs.wi.z), bs.weight, bs.pdf, bs.delta));
+        if (bs.lobe == LOBE_NONE) break;
         // As for light samples: the geometric surface must agree with the lobe's side.
         if ((bs.wi.z * wo.z > 0.0f) != (dot(dir, hit.normal) * arrivalSide > 0.0f)) break;
         beta *= bs.weight;
@@ -224,13 +239,17 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         prevPdf = bs.pdf;
         prevDelta = bs.delta;
         prevPos = hit.position;
+        RAYLAB_RECORD(recordThroughput(bounce, beta, bs.delta));
 
         // Russian roulette (pbrt-v4 §14.1.4 style): survive with q = max throughput, at most
         // 0.95, and divide by q so the estimate stays unbiased.
         if (bounce + 1 >= uRrDepth) {
             float q = min(max(beta.r, max(beta.g, beta.b)), 0.95f);
-            if (rngNextFloat(rng) >= q) break;
+            bool survived = !(rngNextFloat(rng) >= q);   // a NaN q survives (the NaN guard counts it)
+            RAYLAB_RECORD(recordRoulette(bounce, q, survived));
+            if (!survived) break;
             beta /= q;
+            RAYLAB_RECORD(recordThroughput(bounce, beta, bs.delta));
         }
         vec3 side = dot(dir, hit.normal) > 0.0f ? hit.normal : -hit.normal;
         ray = Ray(offsetRayOrigin(hit.position, side, hit.error), dir);

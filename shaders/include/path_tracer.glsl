@@ -30,11 +30,13 @@ void tracePixelPass(ivec2 pixel) {
 #else
         Ray cameraPath = cameraRay(cam, ndc);
 #endif
+        RAYLAB_RECORD_PATH_BEGIN(pixel, s, cameraPath);
 #ifdef RAYLAB_DEBUG_VIEWS
         vec3 L = debugSample(cameraPath, rng, rays);
 #else
         vec3 L = traceRadiance(cameraPath, rng, rays);
 #endif
+        RAYLAB_RECORD_PATH_END(pixel, s, L);
 #ifdef RAYLAB_INJECT_NONFINITE
         // Tests only: every RAYLAB_INJECT_NONFINITE-th sample of a row becomes NaN or +Inf.
         uint k = uSampleStart + uint(s) + uint(pixel.x);

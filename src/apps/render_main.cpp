@@ -3,6 +3,8 @@
 // 3 no usable OpenGL or a shader failure, 130 interrupted by SIGINT (partial image written).
 #include "bench/blender_export.h"
 #include "gl/gl_context.h"
+#include "inspect/path_export.h"
+#include "inspect/path_inspector.h"
 #include "io/image_io.h"
 #include "render/path_tracer.h"
 #include "render/progressive_render.h"
@@ -11,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -33,6 +36,50 @@ std::string clock(double seconds) {
 }
 
 } // namespace
+
+// --inspect X,Y: records the pixel's first `paths` samples (inspect/path_inspector.h).
+static int inspectMain(const raylab::Scene& scene, const std::string& pixel, int paths, const std::string& outFile,
+                       bool quiet) {
+    using namespace raylab;
+    int x = -1, y = -1;
+    char comma = 0, extra = 0;
+    if (std::sscanf(pixel.c_str(), "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',') {
+        std::cerr << "raylab-render: error: --inspect takes X,Y (two integers), got '" << pixel << "'\n";
+        return 2;
+    }
+    const std::string ext = std::filesystem::path(outFile).extension().string();
+    if (ext != ".json" && ext != ".csv") {   // before any work
+        std::cerr << outFile << ": error: path export needs a .json or .csv file name\n";
+        return 1;
+    }
+    std::vector<PathRecord> records;
+    try {
+        PathInspector inspector;
+        inspector.setScene(scene);
+        const auto start = std::chrono::steady_clock::now();
+        records = inspector.record(x, y, paths, 0);
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        std::size_t bounces = 0;
+        for (const PathRecord& r : records) bounces += r.bounces.size();
+        if (!quiet)
+            std::fprintf(stderr, "inspect: %d paths of pixel (%d, %d), %zu bounce records in %.1f ms (shader compiled in %.2f s)\n",
+                         paths, x, y, bounces, ms, inspector.tracer().compileSeconds());
+    } catch (const std::out_of_range& e) {
+        std::cerr << "raylab-render: error: --inspect: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "raylab-render: error: " << e.what() << "\n";
+        return 3;
+    }
+    try {
+        writePaths(outFile, records);
+    } catch (const std::exception& e) {
+        std::cerr << e.what() << "\n";
+        return 1;
+    }
+    std::cout << std::filesystem::absolute(outFile).string() << "\n";
+    return 0;
+}
 
 int main(int argc, char** argv) {
     using namespace raylab;
@@ -82,6 +129,16 @@ int main(int argc, char** argv) {
                    "Write a Blender 3.4 Python script that rebuilds the scene for Cycles, then exit "
                    "without rendering (open it with: blender --python FILE.py)")
         ->type_name("FILE.py");
+    std::string inspectPixel, inspectOut;
+    int inspectPaths = 4;
+    app.add_option("--inspect", inspectPixel,
+                   "Record the sample paths of image pixel X,Y (top-left origin) with every term of the "
+                   "estimator per bounce, write them to --inspect-out, then exit without rendering")
+        ->type_name("X,Y");
+    app.add_option("--inspect-paths", inspectPaths, "With --inspect: how many paths (the pixel's first samples)")
+        ->check(CLI::Range(1, 4096));
+    app.add_option("--inspect-out", inspectOut, "With --inspect: the output file, .json or .csv (default: inspect.json)")
+        ->type_name("FILE");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -116,6 +173,15 @@ int main(int argc, char** argv) {
     }
 
     std::unique_ptr<GlContext> context;
+    if (!inspectPixel.empty()) {
+        try {
+            context = createHeadlessContext(parseGlBackend(gl));
+        } catch (const std::exception& e) {
+            std::cerr << "raylab-render: error: " << e.what() << "\n";
+            return 3;
+        }
+        return inspectMain(scene, inspectPixel, inspectPaths, inspectOut.empty() ? "inspect.json" : inspectOut, quiet);
+    }
     std::unique_ptr<PathTracer> tracer;
     try {
         context = createHeadlessContext(parseGlBackend(gl));

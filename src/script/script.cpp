@@ -22,6 +22,7 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"pause", {0, 0}},       {"resume", {0, 0}},      {"reset", {0, 0}},      {"wait-spp", {1, 1}},
         {"wait-frames", {1, 1}}, {"screenshot", {1, 1}},  {"export", {1, 1}},     {"save", {1, 1}},
         {"window", {2, 2}},      {"quit", {0, 0}},        {"debug-bounce", {1, 1}},
+        {"inspect", {2, 3}},     {"inspect-export", {1, 1}}, {"explore", {1, 2}},  {"panel", {2, 2}},
     };
     return table;
 }
@@ -79,7 +80,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
             fail(c.name + " takes " + std::to_string(it->second.min) + " argument(s), got " + std::to_string(n));
         const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "scale" ||
                              c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window" ||
-                             c.name == "debug-bounce";
+                             c.name == "debug-bounce" || c.name == "inspect" ||
+                             c.name == "explore";
         if (numeric)
             for (const std::string& a : c.args)
                 if (!isNumber(a)) fail(c.name + ": '" + a + "' is not a number");
@@ -87,9 +89,12 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
             std::find(kDebugViews.begin(), kDebugViews.end(), c.args[0]) == kDebugViews.end())
             fail("unknown debug view '" + c.args[0] +
                  "' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect)");
-        if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected") ||
+        if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected" && c.args[0] != "paths") ||
                                     (c.args[1] != "on" && c.args[1] != "off")))
-            fail("overlay takes boxes|selected on|off");
+            fail("overlay takes boxes|selected|paths on|off");
+        if (c.name == "panel" && ((c.args[0] != "inspector" && c.args[0] != "brdf-explorer") ||
+                                  (c.args[1] != "on" && c.args[1] != "off")))
+            fail("panel takes inspector|brdf-explorer on|off");
         out.push_back(std::move(c));
     }
     return out;

@@ -11,7 +11,14 @@
 //   select N               select object N (as the outliner does)
 //   debug-view NAME        beauty, normals, albedo, depth, material-id, nan, noise, bounce,
 //                          direct, indirect;  debug-bounce K: the bounce the "bounce" view shows
-//   overlay boxes on|off   object bounding boxes;  overlay selected on|off: only the selected one
+//   overlay boxes on|off   object bounding boxes;  overlay selected on|off: only the selected one;
+//                          overlay paths on|off: the inspected pixel's paths
+//   inspect X Y [N]        record the next N (default: the Inspector's count, 8) sample paths of
+//                          image pixel (X, Y) with every estimator term (Inspector panel, overlay)
+//   inspect-export PATH    the inspected paths as .json or .csv
+//   explore K [P]          BRDF explorer at bounce K of inspected path P (default 0): its material
+//                          and incoming direction
+//   panel inspector|brdf-explorer on|off   show or hide that panel
 //   scale S                resolution scale of the traced image (0.125 to 2)
 //   pause | resume | reset
 //   wait-spp N             wait until the image has N samples per pixel (or the target is reached)

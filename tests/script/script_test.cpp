@@ -60,8 +60,18 @@ TEST(Script, RejectsMistakesWithFileAndLine) {
     EXPECT_EQ(errorOf("window 800 tall\n"), "s.txt:1: error: window: 'tall' is not a number");
     EXPECT_EQ(errorOf("debug-view heat\n"),
               "s.txt:1: error: unknown debug view 'heat' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect)");
-    EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected on|off");
-    EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected on|off");
+    EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected|paths on|off");
+    EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected|paths on|off");
+}
+
+TEST(Script, InspectorCommands) {
+    EXPECT_EQ(errorOf("inspect 10 20\ninspect 10 20 4\noverlay paths off\nexplore 0\nexplore 1 2\n"
+                      "inspect-export p.json\npanel inspector on\npanel brdf-explorer off\n"),
+              "<no error>");
+    EXPECT_EQ(errorOf("inspect 10\n"), "s.txt:1: error: inspect takes 2 argument(s), got 1");
+    EXPECT_EQ(errorOf("inspect 10 y\n"), "s.txt:1: error: inspect: 'y' is not a number");
+    EXPECT_EQ(errorOf("explore first\n"), "s.txt:1: error: explore: 'first' is not a number");
+    EXPECT_EQ(errorOf("panel lesson on\n"), "s.txt:1: error: panel takes inspector|brdf-explorer on|off");
 }
 
 TEST(Script, EveryDebugViewNameParses) {

@@ -46,7 +46,8 @@ bool ScriptRunner::step(Viewer& viewer, UiState& ui, ScriptHost& host, double no
         }
         // Commands that change what is drawn let a frame pass before the next one.
         if (waitFrames_ > 0 || waitSpp_ >= 0 || !ui.pendingScreenshot.empty()) return true;
-        if (c.name != "set" && c.name != "pause" && c.name != "resume" && c.name != "save" && c.name != "export") {
+        if (c.name != "set" && c.name != "pause" && c.name != "resume" && c.name != "save" && c.name != "export" &&
+            c.name != "inspect-export") {
             waitFrames_ = 1;
             return true;
         }
@@ -97,7 +98,28 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         return true;
     }
     if (c.name == "overlay") {
-        (a[0] == "boxes" ? viewer.overlays.boxes : viewer.overlays.selectedOnly) = a[1] == "on";
+        if (a[0] == "paths") viewer.inspection.overlay.show = a[1] == "on";
+        else (a[0] == "boxes" ? viewer.overlays.boxes : viewer.overlays.selectedOnly) = a[1] == "on";
+        return true;
+    }
+    if (c.name == "inspect") {
+        if (a.size() > 2) viewer.inspection.pathCount = int(num(2));
+        return viewer.inspection.inspect(viewer, int(num(0)), int(num(1)));
+    }
+    if (c.name == "inspect-export") return viewer.inspection.exportPaths(viewer, a[0]);
+    if (c.name == "explore") {
+        const auto& paths = viewer.inspection.paths();
+        const std::size_t path = a.size() > 1 ? std::size_t(num(1)) : 0, bounce = std::size_t(num(0));
+        if (path >= paths.size() || bounce >= paths[path].bounces.size() || !paths[path].bounces[bounce].hit) {
+            viewer.log().error("explore: no surface bounce " + a[0] + " on an inspected path (inspect a pixel first)");
+            return false;
+        }
+        viewer.brdfExplorer.fromBounce(paths[path].bounces[bounce]);
+        viewer.brdfExplorer.panelOpen = true;
+        return true;
+    }
+    if (c.name == "panel") {
+        (a[0] == "inspector" ? viewer.inspection.panelOpen : viewer.brdfExplorer.panelOpen) = a[1] == "on";
         return true;
     }
     if (c.name == "scale") {

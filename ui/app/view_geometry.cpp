@@ -104,4 +104,13 @@ std::vector<Segment> projectBox(const Scene& scene, int width, int height, const
     return out;
 }
 
+std::optional<Segment> projectSegment(const Scene& scene, int width, int height, glm::vec3 a, glm::vec3 b) {
+    const glsl::CameraBasis basis = basisFor(scene, width, height);
+    glm::vec3 p = toCamera(basis, a), q = toCamera(basis, b);
+    if (p.z <= kNear && q.z <= kNear) return std::nullopt;
+    if (p.z < kNear) p = p + (q - p) * ((kNear - p.z) / (q.z - p.z));
+    if (q.z < kNear) q = q + (p - q) * ((kNear - q.z) / (p.z - q.z));
+    return Segment{toImage(basis, width, height, p), toImage(basis, width, height, q)};
+}
+
 } // namespace raylab::ui

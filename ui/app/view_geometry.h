@@ -37,6 +37,8 @@ struct Segment {
 
 // Where the world point lands in the image (nullopt when behind or in the eye's plane).
 std::optional<ImagePoint> projectPoint(const Scene& scene, int width, int height, glm::vec3 p);
+// The world segment a–b as an image segment, clipped to the part in front of the camera.
+std::optional<Segment> projectSegment(const Scene& scene, int width, int height, glm::vec3 a, glm::vec3 b);
 // The 12 edges of a box as image segments, clipped to the part in front of the camera.
 std::vector<Segment> projectBox(const Scene& scene, int width, int height, const Box& box);
 

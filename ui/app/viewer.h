@@ -3,8 +3,10 @@
 // raylab-render), the time-sliced progressive passes, the display pass, and every command the
 // panels, the mouse and keys, and the automation script issue. No window and no ImGui here: the
 // views in ui/panels read and change this object. Needs a current GL 4.5 context.
+#include "app/brdf_explorer_model.h"
 #include "app/debug_view.h"
 #include "app/file_watcher.h"
+#include "app/inspection.h"
 #include "app/log.h"
 #include "app/pass_slicer.h"
 #include "app/scene_edit.h"
@@ -61,6 +63,7 @@ public:
     void sceneChanged(Trigger trigger);
     Scene& scene() { return scene_; }
     const Scene& scene() const { return scene_; }
+    Scene tracedScene() const;   // scene_ with the resolution scale applied (what the tracer traces)
     bool hasScene() const { return hasScene_ && tracer_ != nullptr; }
 
     // --- render control ----------------------------------------------------------------------------
@@ -78,6 +81,8 @@ public:
     OverlaySettings overlays;
     float cameraSpeed = 2.0f;   // world units per second for WASD/QE
     int selected = -1;          // object index, -1 = none
+    Inspection inspection;      // the pixel path inspector (app/inspection.h)
+    BrdfExplorerModel brdfExplorer;   // the BRDF explorer (app/brdf_explorer_model.h)
 
     // The traced image size (the scene's render size × resolution scale).
     int imageWidth() const;
@@ -108,7 +113,6 @@ public:
     Log& log() { return log_; }
 
 private:
-    Scene tracedScene() const;   // scene_ with the resolution scale applied
     bool applyScene(Scene next, Trigger trigger);
     void restart();   // after a scene upload: clear moments, restart the slicer
     void ensureDisplayTargets();

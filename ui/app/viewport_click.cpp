@@ -10,7 +10,12 @@ void viewportClick(Viewer& viewer, const UiState& ui, float x, float y) {
         viewer.log().info("click at (" + std::to_string(int(x)) + ", " + std::to_string(int(y)) + ") is outside the image");
         return;
     }
-    viewer.pick((x - r.x) / r.width * float(viewer.imageWidth()), (y - r.y) / r.height * float(viewer.imageHeight()));
+    const float ix = (x - r.x) / r.width * float(viewer.imageWidth()), iy = (y - r.y) / r.height * float(viewer.imageHeight());
+    if (viewer.inspection.clickInspects) {   // inspect mode (Inspector panel)
+        viewer.inspection.inspect(viewer, int(ix), int(iy));
+        return;
+    }
+    viewer.pick(ix, iy);
 }
 
 } // namespace raylab::ui

@@ -15,6 +15,11 @@ void drawOverlaysPanel(Viewer& viewer, UiState&) {
     ImGui::SameLine();
     ImGui::Checkbox("selected only", &viewer.overlays.selectedOnly);
     ImGui::TextDisabled("Boxes: yellow, the selected object's: cyan.");
+    ImGui::Separator();
+    ImGui::Checkbox("inspect mode (a click inspects)", &viewer.inspection.clickInspects);
+    ImGui::Checkbox("Inspector", &viewer.inspection.panelOpen);
+    ImGui::SameLine();
+    ImGui::Checkbox("BRDF explorer", &viewer.brdfExplorer.panelOpen);
     ImGui::End();
 }
 

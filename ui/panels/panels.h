@@ -16,6 +16,10 @@ void drawOverlaysPanel(Viewer& viewer, UiState& ui);  // overlays_panel.cpp
 void drawDebugPanel(Viewer& viewer, UiState& ui);     // debug_panel.cpp
 void drawStatsPanel(Viewer& viewer, UiState& ui);     // stats_panel.cpp
 void drawLogPanel(Viewer& viewer, UiState& ui);       // log_panel.cpp
+void drawInspectorPanel(Viewer& viewer, UiState& ui);     // inspector_panel.cpp: pixel path inspector
+void drawBrdfExplorerPanel(Viewer& viewer, UiState& ui);  // brdf_explorer_panel.cpp
+// The inspected paths over the image (inspector_panel.cpp), called by the viewport.
+void drawPathOverlay(Viewer& viewer, const ImageRect& image);
 
 // All of the above, laid out for a window of the given size on first use (imgui.ini keeps what
 // the user changes afterwards).

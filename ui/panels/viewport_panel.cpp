@@ -118,6 +118,7 @@ void drawViewport(Viewer& viewer, UiState& ui) {
     ImGui::GetWindowDrawList()->AddImage(ImTextureID(std::uintptr_t(texture)), pos, ImVec2(pos.x + w, pos.y + h),
                                          ImVec2(0, 1), ImVec2(1, 0));
     drawOverlays(viewer, ui.image);
+    drawPathOverlay(viewer, ui.image);
 
     const ImGuiIO& io = ImGui::GetIO();
     Camera& cam = viewer.scene().camera;
@@ -161,14 +162,19 @@ void drawWorkspace(Viewer& viewer, UiState& ui, float W, float H) {
     drawCameraPanel(viewer, ui);
     place(left + mid, 0, right, H * 0.55f);
     drawMaterialPanel(viewer, ui);
-    place(left + mid, H * 0.55f, right, H * 0.12f);
+    place(left + mid, H * 0.55f, right, H * 0.17f);
     drawOverlaysPanel(viewer, ui);
-    place(left + mid, H * 0.67f, right, H * 0.33f);
+    place(left + mid, H * 0.72f, right, H * 0.28f);
     drawDebugPanel(viewer, ui);
     place(left, H - bottom, mid * 0.5f, bottom);
     drawStatsPanel(viewer, ui);
     place(left + mid * 0.5f, H - bottom, mid * 0.5f, bottom);
     drawLogPanel(viewer, ui);
+    // Opened from the Overlays panel, an inspection or "explore": over the image's right side.
+    place(left + mid * 0.35f, 20, mid * 0.65f, H * 0.45f);
+    drawInspectorPanel(viewer, ui);
+    place(left + mid * 0.3f, H * 0.3f, mid * 0.7f, H * 0.5f);
+    drawBrdfExplorerPanel(viewer, ui);
 }
 
 } // namespace raylab::ui

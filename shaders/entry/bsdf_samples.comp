@@ -1,6 +1,7 @@
 #version 450 core
-// Test harness: draws samples with the real GLSL sampling code and stores them for χ² tests on
-// the CPU (tests/shaders/gpu_sampling_test.cpp). One invocation per sample.
+// Draws samples with the real GLSL sampling code and stores them for χ² tests on the CPU: the
+// test suite's (tests/shaders/gpu_sampling_test.cpp) and the viewer's BRDF explorer, both through
+// src/inspect/gpu_bsdf_sampler.h. One invocation per sample.
 // Defines set by the host: none. Uniforms below; the output buffer is at binding 7 so that the
 // scene's bindings (sky map tables at 5 and 6) can stay bound.
 #include "random.glsl"

@@ -1,0 +1,151 @@
+// The pixel path inspector's recorder (src/inspect/path_inspector.h): with RAYLAB_INSPECT_PATHS
+// the tracer writes every term of the estimator of one chosen pixel's samples to buffers 20 and
+// 21, bounce by bounce. Without it this file adds nothing and the integrator's RAYLAB_RECORD hooks
+// are empty, so normal renders pay nothing. Recording only writes: radiance, random numbers and
+// control flow are those of the normal tracer. The slot layout must match
+// src/inspect/path_record_layout.h. GLSL only.
+#ifndef RAYLAB_PATH_RECORD_GLSL
+#define RAYLAB_PATH_RECORD_GLSL
+#include "compat.glsl"
+#include "ray.glsl"
+#include "scene_data.glsl"
+#include "scene_intersect.glsl"
+#include "light_sampling.glsl"   // powerHeuristic
+
+#ifdef RAYLAB_INSPECT_PATHS
+const int PR_VEC4S = 17;          // vec4s per bounce record
+const int PR_ORIGIN = 0;          // ray origin xyz, w: 1 hit, 0 miss (the sky)
+const int PR_DIRECTION = 1;       // unit ray direction xyz, w: hit distance (0 for a miss)
+const int PR_POSITION = 2;        // hit point xyz, w: sphere index or triangle index
+const int PR_NORMAL = 3;          // geometric normal xyz, w: material id
+const int PR_SHADING = 4;         // shading normal (the BSDF frame's z) xyz, w: top-level instance
+const int PR_EMISSION = 5;        // emitted radiance Le (or the sky's) rgb, w: its MIS weight
+const int PR_BETA_BEFORE = 6;     // throughput arriving here rgb, w: probability of the chosen lobe
+const int PR_SAMPLED = 7;         // sampled direction (world) xyz, w: lobe (LOBE_*), -1 none
+const int PR_F = 8;               // f rgb, w: |cosθ| of the sampled direction
+const int PR_WEIGHT = 9;          // f·|cosθ|/pdf rgb, w: pdf (discrete probability for delta lobes)
+const int PR_BETA_AFTER = 10;     // throughput leaving (after roulette) rgb, w: 1 delta lobe
+const int PR_RR = 11;             // x: survival probability q, y: outcome (-1 not played, 0 killed, 1 survived)
+const int PR_LIGHT = 12;          // light sample f·Le·w/pdf (no throughput) rgb, w: -1 none, 0 occluded, 1 visible, 2 f = 0
+const int PR_LIGHT_DIR = 13;      // shadow ray direction xyz, w: distance to the light's surface (-1: the sky)
+const int PR_LIGHT_TERMS = 14;    // x: light pdf, y: BSDF pdf of that direction, z: MIS weight, w: light index
+const int PR_LIGHT_F = 15;        // f·|cosθ| towards the light rgb, w: |cosθ|
+const int PR_LIGHT_LE = 16;       // the light's radiance rgb
+const int PR_PATH_VEC4S = 4;      // per path: final value rgb + bounce records; sample index,
+                                  // the pixel, truncated; camera ray origin; camera ray direction
+
+layout(std430, binding = 20) buffer InspectBounceBuffer { vec4 inspectBounces[]; };
+layout(std430, binding = 21) writeonly buffer InspectPathBuffer { vec4 inspectPaths[]; };
+uniform ivec2 uInspectPixel;       // GL pixel (bottom row 0) whose samples are recorded
+uniform int uInspectMaxRecords;    // bounce records per path that fit the buffer
+
+bool gRecording = false;   // this invocation is the inspected pixel's
+int gRecordPath = 0;       // sample index within the pass
+int gRecordCount = 0;      // bounce records written for the current path
+bool gRecordTruncated = false;
+
+int recordSlot(int bounce, int field) { return (gRecordPath * uInspectMaxRecords + bounce) * PR_VEC4S + field; }
+void recordPut(int bounce, int field, vec4 v) {
+    if (!gRecording) return;
+    if (bounce >= uInspectMaxRecords) {
+        gRecordTruncated = true;
+        return;
+    }
+    inspectBounces[recordSlot(bounce, field)] = v;
+    gRecordCount = max(gRecordCount, bounce + 1);
+}
+
+void recordPathBegin(ivec2 pixel, int path, Ray ray) {
+    gRecording = pixel == uInspectPixel;
+    if (!gRecording) return;
+    gRecordPath = path;
+    gRecordCount = 0;
+    gRecordTruncated = false;
+    // Every field of every slot defaults to "not played" so the host reads no stale values.
+    for (int b = 0; b < uInspectMaxRecords; ++b)
+        for (int f = 0; f < PR_VEC4S; ++f) inspectBounces[recordSlot(b, f)] = vec4(0.0f);
+    int base = path * PR_PATH_VEC4S;
+    inspectPaths[base + 2] = vec4(ray.origin, 0.0f);
+    inspectPaths[base + 3] = vec4(normalize(ray.dir), 0.0f);
+}
+
+void recordPathEnd(ivec2 pixel, int path, vec3 L) {
+    if (!gRecording) return;
+    int base = path * PR_PATH_VEC4S;
+    inspectPaths[base] = vec4(L, float(gRecordCount));
+    inspectPaths[base + 1] = vec4(float(uSampleStart + uint(path)), float(pixel.x), float(pixel.y),
+                                  gRecordTruncated ? 1.0f : 0.0f);
+}
+
+// A bounce starts: the ray it follows, what it hit (or not), the throughput it carries.
+void recordSegment(int bounce, Ray ray, bool hitSomething, Hit hit, vec3 beta) {
+    if (!gRecording) return;
+    recordPut(bounce, PR_ORIGIN, vec4(ray.origin, hitSomething ? 1.0f : 0.0f));
+    recordPut(bounce, PR_DIRECTION, vec4(normalize(ray.dir), hitSomething ? hit.t * length(ray.dir) : 0.0f));
+    recordPut(bounce, PR_BETA_BEFORE, vec4(beta, 0.0f));
+    recordPut(bounce, PR_SAMPLED, vec4(0.0f, 0.0f, 0.0f, -1.0f));
+    recordPut(bounce, PR_RR, vec4(0.0f, -1.0f, 0.0f, 0.0f));
+    recordPut(bounce, PR_LIGHT, vec4(0.0f, 0.0f, 0.0f, -1.0f));
+    if (!hitSomething) return;
+    // Which primitive: traced again, for the recorded pixel only (the Hit record has no ids).
+    TraceRecord rec;
+    traceScene(ray, FLOAT_MAX, false, rec);
+    recordPut(bounce, PR_POSITION, vec4(hit.position, float(rec.primitive)));
+    recordPut(bounce, PR_NORMAL, vec4(hit.normal, float(hit.material)));
+    recordPut(bounce, PR_SHADING, vec4(hit.shadingNormal, float(rec.instance)));
+}
+
+void recordEmission(int bounce, vec3 Le, float w) { recordPut(bounce, PR_EMISSION, vec4(Le, w)); }
+
+void recordShadingFrame(int bounce, vec3 ns) {
+    if (!gRecording || bounce >= uInspectMaxRecords) return;
+    vec4 v = inspectBounces[recordSlot(bounce, PR_SHADING)];
+    recordPut(bounce, PR_SHADING, vec4(ns, v.w));
+}
+
+// Next-event estimation at this bounce: status -1 none, 0 occluded, 1 visible, 2 f = 0. The
+// contribution is recomputed here from the terms (the inspector's test checks it against the
+// integrator's sum): f·|cosθ| · Le · w / pdf, w the power heuristic when MIS is on.
+void recordLight(int bounce, int light, vec3 dir, float dist, vec3 Le, vec3 fCos, float cosTheta, float lightPdf,
+                 float misPdf, float bsdfPdfValue, int status) {
+    float w = status == 2 ? 0.0f : (uMis ? powerHeuristic(misPdf, bsdfPdfValue) : 1.0f);
+    vec3 contribution = status == 1 ? fCos * Le * (w / lightPdf) : vec3(0.0f);
+    recordPut(bounce, PR_LIGHT, vec4(contribution, float(status)));
+    recordPut(bounce, PR_LIGHT_DIR, vec4(dir, dist));
+    recordPut(bounce, PR_LIGHT_TERMS, vec4(lightPdf, bsdfPdfValue, w, float(light)));
+    recordPut(bounce, PR_LIGHT_F, vec4(fCos, cosTheta));
+    recordPut(bounce, PR_LIGHT_LE, vec4(Le, 0.0f));
+}
+
+// The BSDF sample taken at this bounce (fCos = f·|cosθ|, from bsdfEval; for delta lobes the weight).
+void recordBsdfSample(int bounce, vec3 dirWorld, int lobe, float lobeProbability, vec3 fCos, float cosTheta,
+                      vec3 weight, float pdf, bool delta) {
+    if (!gRecording || bounce >= uInspectMaxRecords) {
+        recordPut(bounce, PR_SAMPLED, vec4(0.0f));   // marks truncation
+        return;
+    }
+    vec4 before = inspectBounces[recordSlot(bounce, PR_BETA_BEFORE)];
+    recordPut(bounce, PR_BETA_BEFORE, vec4(before.xyz, lobeProbability));
+    recordPut(bounce, PR_SAMPLED, vec4(dirWorld, float(lobe)));
+    vec3 f = delta ? weight : fCos / max(cosTheta, 1e-30f);
+    recordPut(bounce, PR_F, vec4(f, cosTheta));
+    recordPut(bounce, PR_WEIGHT, vec4(weight, pdf));
+}
+
+void recordThroughput(int bounce, vec3 beta, bool delta) { recordPut(bounce, PR_BETA_AFTER, vec4(beta, delta ? 1.0f : 0.0f)); }
+
+void recordRoulette(int bounce, float q, bool survived) {
+    recordPut(bounce, PR_RR, vec4(q, survived ? 1.0f : 0.0f, 0.0f, 0.0f));
+}
+
+// The integrator's hooks: one statement each, evaluated for the inspected pixel only.
+#define RAYLAB_RECORD(call) if (gRecording) call
+#define RAYLAB_RECORD_PATH_BEGIN(pixel, path, ray) recordPathBegin(pixel, path, ray)
+#define RAYLAB_RECORD_PATH_END(pixel, path, L) recordPathEnd(pixel, path, L)
+#else
+#define RAYLAB_RECORD(call)
+#define RAYLAB_RECORD_PATH_BEGIN(pixel, path, ray)
+#define RAYLAB_RECORD_PATH_END(pixel, path, L)
+#endif
+
+#endif

@@ -1,0 +1,44 @@
+#pragma once
+// The pixel path inspector: records a chosen pixel's next sample paths with every term of the
+// estimator (inspect/path_record.h). It runs its own tracer variant, compiled with
+// RAYLAB_INSPECT_PATHS (shaders/include/path_record.glsl), over the pixel's row only; the
+// samples are the very ones the normal tracer takes (same seed, same sample indices), so the
+// recorded values are the contributions the pixel gets. Needs a current GL 4.5 context.
+#include "inspect/path_record.h"
+#include "render/path_tracer.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace raylab {
+
+class PathInspector {
+public:
+    // Records at most maxRecords bounces a path (the rest are counted as truncated).
+    explicit PathInspector(int maxRecords = 64);
+    ~PathInspector();
+    PathInspector(const PathInspector&) = delete;
+    PathInspector& operator=(const PathInspector&) = delete;
+
+    // Uploads the scene (as PathTracer::setScene); call again whenever the scene changes.
+    void setScene(const Scene& scene);
+    // Samples [firstSample, firstSample + count) of image pixel (x, y), top-left origin.
+    // Throws std::out_of_range for a pixel outside the image, std::logic_error before setScene.
+    std::vector<PathRecord> record(int x, int y, int count, std::uint64_t firstSample = 0);
+
+    const PathTracer& tracer() const { return *tracer_; }
+    int maxRecords() const { return maxRecords_; }
+    // The define that turns the recorder on (for tests that render with the variant).
+    static TracerOptions inspectorOptions();
+
+private:
+    std::unique_ptr<PathTracer> tracer_;
+    int maxRecords_;
+    bool hasScene_ = false;
+    unsigned buffers_[2] = {0, 0};   // bindings 20 (bounces) and 21 (paths)
+    std::size_t capacity_ = 0;       // paths the buffers hold
+};
+
+} // namespace raylab

@@ -1,0 +1,34 @@
+#include "inspect/path_record.h"
+
+namespace raylab {
+
+std::string lobeName(int lobe) {
+    switch (lobe) {
+    case 0: return "none";
+    case 1: return "diffuse";
+    case 2: return "specular";
+    case 3: return "glass reflect";
+    case 4: return "glass transmit";
+    default: return "-";
+    }
+}
+
+std::string lightStatusName(LightStatus s) {
+    switch (s) {
+    case LightStatus::Occluded: return "occluded";
+    case LightStatus::Visible: return "visible";
+    case LightStatus::Zero: return "f = 0";
+    default: return "-";
+    }
+}
+
+glm::dvec3 PathRecord::sumOfTerms() const {
+    glm::dvec3 sum(0.0);
+    for (const BounceRecord& b : bounces) {
+        const glm::dvec3 beta(b.throughputBefore);
+        sum += beta * (glm::dvec3(b.emission) * double(b.emissionWeight) + glm::dvec3(b.lightContribution));
+    }
+    return sum;
+}
+
+} // namespace raylab

@@ -1,0 +1,132 @@
+// The BRDF explorer's model without a window: the disk map, the polar curve and heat map against
+// closed forms, and the χ² verdict on the real GLSL sampler (right material: pass; samples of one
+// material judged against another's pdf: fail). Significance 0.01 per verdict, fixed seeds.
+#include "inspect/brdf_explorer.h"
+#include "support/gl_test.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+namespace raylab::test {
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+
+Material lambert(glm::vec3 albedo) {
+    Material m;
+    m.albedo = albedo;
+    return m;
+}
+
+TEST(BrdfExplorer, DiskMapIsAnInvertibleEqualAreaMap) {
+    for (float x = -0.95f; x <= 0.95f; x += 0.1f)
+        for (float y = -0.95f; y <= 0.95f; y += 0.1f) {
+            const glm::vec2 p(x, y);
+            if (glm::dot(p, p) > 1.0f) continue;
+            for (bool lower : {false, true}) {
+                const glm::vec3 w = diskToDirection(p, lower);
+                EXPECT_NEAR(glm::length(w), 1.0f, 1e-5f);
+                EXPECT_EQ(w.z < 0.0f, lower && glm::dot(p, p) < 1.0f);
+                const glm::vec2 q = directionToDisk(w);
+                EXPECT_NEAR(q.x, p.x, 1e-4f);
+                EXPECT_NEAR(q.y, p.y, 1e-4f);
+            }
+        }
+    // Equal area: the disk of radius r holds the cap cosθ ≥ 1 − r², solid angle 2π r² = 2 × area.
+    const glm::vec3 w = diskToDirection(glm::vec2(0.6f, 0.0f), false);
+    EXPECT_NEAR(w.z, 1.0f - 0.36f, 1e-6f);
+}
+
+TEST(BrdfExplorer, LobeTogglesSwitchTheMaterialsParts) {
+    Material m;
+    m.albedo = glm::vec3(0.5f);
+    m.f0 = glm::vec3(0.04f);
+    m.transmission = 0.5f;
+    m.roughness = 0.5f;
+    const auto all = explorerBsdf(m);
+    EXPECT_EQ(all.alpha, 0.25f);
+    EXPECT_EQ(explorerBsdf(m, {false, true, true}).albedo, glm::vec3(0.0f));
+    EXPECT_EQ(explorerBsdf(m, {true, false, true}).f0, glm::vec3(0.0f));
+    EXPECT_EQ(explorerBsdf(m, {true, true, false}).transmission, 0.0f);
+}
+
+TEST(BrdfExplorer, PolarCurveAndHeatMapOfLambertAreRhoCosOverPi) {
+    const auto p = explorerBsdf(lambert(glm::vec3(0.6f)));
+    const glm::vec3 wo = directionFromAngles(30.0f, 40.0f);
+    for (const PolarPoint& q : polarCurve(p, wo, 72)) {
+        const float c = std::cos(glm::radians(q.angleDeg));
+        const float expected = std::abs(q.angleDeg) < 90.0f ? 0.6f / kPi * c : 0.0f;
+        EXPECT_NEAR(q.fCos.x, expected, 1e-6f) << q.angleDeg;
+    }
+    const HemisphereMap map = hemisphereMap(p, wo, 9);
+    EXPECT_NEAR(map.upper[4 * 9 + 4], 0.6f / kPi, 1e-3f);   // the centre cell: straight up
+    EXPECT_EQ(map.upper[0], -1.0f);                           // a corner outside the disk
+    EXPECT_EQ(map.lower[4 * 9 + 4], 0.0f);                    // nothing below an opaque surface
+    EXPECT_NEAR(map.maxValue, 0.6f / kPi, 1e-3f);
+    const HemisphereMap pdf = hemisphereMap(p, wo, 9, MapQuantity::Pdf);
+    EXPECT_NEAR(pdf.upper[4 * 9 + 4], 1.0f / kPi, 1e-3f);   // cosine-weighted: cosθ/π
+}
+
+TEST(BrdfExplorer, PolarCurvePutsTheGgxPeakAtTheMirrorDirection) {
+    Material m;
+    m.albedo = glm::vec3(0.0f);
+    m.f0 = glm::vec3(0.9f);
+    m.roughness = 0.2f;
+    const auto curve = polarCurve(explorerBsdf(m), directionFromAngles(50.0f, 0.0f), 360);
+    const auto peak = std::max_element(curve.begin(), curve.end(),
+                                       [](const PolarPoint& a, const PolarPoint& b) { return a.fCos.x < b.fCos.x; });
+    EXPECT_NEAR(peak->angleDeg, 50.0f, 5.0f);   // off-specular peaks lean a little to grazing
+}
+
+using BrdfExplorerGpu = GlTest;
+
+TEST_F(BrdfExplorerGpu, ChiSquareVerdictPassesTheRealSamplerAndFailsAWrongPdf) {
+    GpuBsdfSampler sampler;
+    struct Case {
+        const char* name;
+        Material m;
+        float theta;
+    };
+    Material ggx;
+    ggx.albedo = glm::vec3(0.5f);
+    ggx.f0 = glm::vec3(0.04f);
+    ggx.roughness = 0.5f;
+    Material glass;
+    glass.albedo = glm::vec3(0.0f);
+    glass.transmission = 1.0f;
+    glass.roughness = 0.5f;
+    Material smoothGlassOverDiffuse;
+    smoothGlassOverDiffuse.albedo = glm::vec3(0.7f);
+    smoothGlassOverDiffuse.transmission = 0.4f;
+    smoothGlassOverDiffuse.roughness = 0.0f;
+    const std::vector<Case> cases = {{"lambert", lambert(glm::vec3(0.8f)), 20.0f},
+                                     {"ggx+diffuse", ggx, 60.0f},
+                                     {"rough glass", glass, 35.0f},
+                                     {"smooth glass over diffuse", smoothGlassOverDiffuse, 45.0f}};
+    for (const Case& c : cases) {
+        const auto p = explorerBsdf(c.m);
+        const glm::vec3 wo = directionFromAngles(c.theta, 10.0f);
+        const auto samples = sampler.bsdf(p, wo, 40000, 11);
+        const SamplerTest t = testSampler(p, wo, samples, 16, 0.01);
+        EXPECT_TRUE(t.pass) << c.name << ": chi2 " << t.chi2.statistic << " dof " << t.chi2.dof << " p " << t.chi2.pValue
+                            << " integral " << t.pdfIntegral;
+        EXPECT_LT(t.maxPdfMismatch, 1e-3) << c.name;
+        EXPECT_EQ(t.samples, 40000);
+    }
+    // Samples of a rough GGX judged against a smoother one's pdf: the verdict must be FAIL.
+    Material rough = ggx, smooth = ggx;
+    rough.roughness = 0.7f;
+    smooth.roughness = 0.4f;
+    const glm::vec3 wo = directionFromAngles(40.0f, 0.0f);
+    const auto samples = sampler.bsdf(explorerBsdf(rough), wo, 40000, 5);
+    const SamplerTest wrong = testSampler(explorerBsdf(smooth), wo, samples, 16, 0.01);
+    EXPECT_FALSE(wrong.pass) << "p " << wrong.chi2.pValue;
+    // Switching the diffuse lobe off changes the sampler and the pdf together: still a pass.
+    const auto specOnly = explorerBsdf(ggx, {false, true, true});
+    const SamplerTest spec = testSampler(specOnly, wo, sampler.bsdf(specOnly, wo, 40000, 6), 16, 0.01);
+    EXPECT_TRUE(spec.pass) << "p " << spec.chi2.pValue << " integral " << spec.pdfIntegral;
+}
+
+} // namespace
+} // namespace raylab::test

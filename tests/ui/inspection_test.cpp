@@ -1,0 +1,99 @@
+// The viewer's path inspector model on a headless context: the recorded paths are the very
+// samples the viewer traces next, clicks in inspect mode inspect, following records again after a
+// restart, and the overlay lines come from the recorded hits.
+#include "app/inspection.h"
+#include "app/viewer.h"
+#include "app/viewport_click.h"
+
+#include "render/render_helpers.h"
+#include "support/gl_test.h"
+
+#include <gtest/gtest.h>
+
+namespace raylab::ui {
+namespace {
+
+class InspectionTest : public test::GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        viewer = std::make_unique<Viewer>(log);
+        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json"))) << viewer->lastError();
+        ASSERT_TRUE(viewer->set("render.width", "48"));
+        ASSERT_TRUE(viewer->set("render.height", "27"));
+    }
+    void traceToTarget() {
+        for (int i = 0; i < 100000 && !viewer->converged(); ++i) viewer->update(1e-5);
+        ASSERT_TRUE(viewer->converged());
+    }
+    Log log{false};
+    std::unique_ptr<Viewer> viewer;
+};
+
+TEST_F(InspectionTest, RecordedPathsAreTheSamplesTheViewerTracesNext) {
+    ASSERT_TRUE(viewer->set("render.rpp", "4"));
+    ASSERT_TRUE(viewer->set("render.spp", "4"));
+    traceToTarget();
+    const int x = 24, y = 14;
+    const glm::vec4 before = viewer->pixelValue(x, y);
+    viewer->inspection.pathCount = 4;
+    ASSERT_TRUE(viewer->inspection.inspect(*viewer, x, y));
+    const auto& paths = viewer->inspection.paths();
+    ASSERT_EQ(paths.size(), 4u);
+    EXPECT_EQ(paths[0].sample, 4u);   // the next sample of the pixel's sequence
+    ASSERT_TRUE(viewer->set("render.spp", "8"));   // no restart: spp is a stop condition
+    traceToTarget();
+    glm::vec3 sum(0.0f);
+    for (const PathRecord& p : paths) sum += p.value;
+    const glm::vec3 expected = (glm::vec3(before) * 4.0f + sum) / 8.0f;
+    const glm::vec4 after = viewer->pixelValue(x, y);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(after[c], expected[c], 1e-5f * (1.0f + expected[c])) << c;
+}
+
+TEST_F(InspectionTest, ClicksInInspectModeInspectAndFollowingRecordsAgain) {
+    UiState ui;
+    ui.image = ImageRect{100, 50, 96, 54};   // the 48 × 27 image shown at twice its size
+    viewer->inspection.clickInspects = true;
+    viewportClick(*viewer, ui, 100 + 2 * 10.5f, 50 + 2 * 20.5f);
+    ASSERT_TRUE(viewer->inspection.active());
+    EXPECT_EQ(viewer->inspection.x(), 10);
+    EXPECT_EQ(viewer->inspection.y(), 20);
+    EXPECT_EQ(viewer->selected, -1) << "inspect mode does not pick";
+    const auto first = viewer->inspection.paths();
+    // A camera move restarts the image; following records again once the restarts settle.
+    viewer->scene().camera.position.x += 0.5f;
+    viewer->sceneChanged(Trigger::ResetAccumulation);
+    viewer->inspection.update(*viewer);
+    viewer->inspection.update(*viewer);
+    ASSERT_EQ(viewer->inspection.paths().size(), first.size());
+    EXPECT_NE(viewer->inspection.paths()[0].bounces[0].origin, first[0].bounces[0].origin);
+    // Outside the image: an error, the previous paths stay.
+    EXPECT_FALSE(viewer->inspection.inspect(*viewer, 48, 0));
+    EXPECT_TRUE(viewer->inspection.active());
+}
+
+TEST_F(InspectionTest, OverlayHasASegmentAndADotPerSurfaceHit) {
+    viewer->inspection.pathCount = 6;
+    ASSERT_TRUE(viewer->inspection.inspect(*viewer, 24, 20));   // the ground, in front
+    PathOverlaySettings only;
+    only.normals = only.sampled = only.shadowRays = false;
+    const Scene traced = viewer->tracedScene();
+    const PathOverlay o = pathOverlay(traced, 48, 27, viewer->inspection.paths(), only);
+    std::size_t hits = 0, misses = 0;
+    for (const PathRecord& p : viewer->inspection.paths())
+        for (const BounceRecord& b : p.bounces) (b.hit ? hits : misses) += 1;
+    ASSERT_GT(hits, 0u);
+    EXPECT_EQ(o.hits.size(), hits);   // every hit is in front of the camera here
+    EXPECT_LE(o.lines.size(), hits + misses);
+    // The first hit of every path projects into the inspected pixel.
+    for (const PathDot& d : o.hits) {
+        if (d.bounce != 0) continue;
+        EXPECT_NEAR(d.point.x, 24.5f, 0.5f);
+        EXPECT_NEAR(d.point.y, 20.5f, 0.5f);
+    }
+    // One path only.
+    EXPECT_LT(pathOverlay(traced, 48, 27, viewer->inspection.paths(), only, 0).hits.size(), hits);
+}
+
+} // namespace
+} // namespace raylab::ui
