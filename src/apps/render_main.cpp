@@ -6,6 +6,7 @@
 #include "io/image_io.h"
 #include "render/path_tracer.h"
 #include "render/progressive_render.h"
+#include "render/scene_stats.h"
 #include "scene/scene_loader.h"
 
 #include <CLI/CLI.hpp>
@@ -129,6 +130,8 @@ int main(int argc, char** argv) {
     if (!quiet)
         std::fprintf(stderr, "shader: %s, compiled in %.2f s\n", tracer->variantName().c_str(),
                      tracer->compileSeconds());
+    if (!quiet)
+        std::fprintf(stderr, "%s\n", describeSceneStats(sceneStats(scene, tracer->gpuScene().geometry())).c_str());
 
     std::signal(SIGINT, onSigint);
     const bool tty = ::isatty(STDERR_FILENO);

@@ -4,13 +4,20 @@
 
 namespace raylab::ui {
 
-void viewportClick(Viewer& viewer, const UiState& ui, float x, float y) {
+void viewportClick(Viewer& viewer, UiState& ui, float x, float y) {
     const ImageRect& r = ui.image;
     if (!r.valid() || x < r.x || y < r.y || x >= r.x + r.width || y >= r.y + r.height) {
         viewer.log().info("click at (" + std::to_string(int(x)) + ", " + std::to_string(int(y)) + ") is outside the image");
         return;
     }
-    viewer.pick((x - r.x) / r.width * float(viewer.imageWidth()), (y - r.y) / r.height * float(viewer.imageHeight()));
+    const float ix = (x - r.x) / r.width * float(viewer.imageWidth());
+    const float iy = (y - r.y) / r.height * float(viewer.imageHeight());
+    if (ui.focusOnClick) {
+        ui.focusOnClick = false;
+        viewer.focusAt(ix, iy);
+        return;
+    }
+    viewer.pick(ix, iy);
 }
 
 } // namespace raylab::ui

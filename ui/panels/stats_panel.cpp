@@ -1,6 +1,8 @@
 // Stats panel: the live counters of the progressive render and of the UI frame.
 #include "panels/panels.h"
 
+#include "render/scene_stats.h"
+
 #include <imgui.h>
 
 namespace raylab::ui {
@@ -29,7 +31,14 @@ void drawStatsPanel(Viewer& viewer, UiState&) {
         ImGui::Text("elapsed %.1f s, ETA %.1f s", elapsed, viewer.converged() ? 0.0 : eta);
         ImGui::Text("NaN/Inf samples: %llu", (unsigned long long)t->nonFiniteSamples());
         ImGui::Text("shader: %s, compiled in %.2f s", viewer.shaderVariant().c_str(), s.shaderCompileSeconds);
-        ImGui::Text("scene: %zu spheres, %zu materials", viewer.scene().spheres.size(), viewer.scene().materials.size());
+        if (const SceneGeometry* g = viewer.geometry()) {   // render/scene_stats.h
+            const SceneStats st = sceneStats(viewer.scene(), *g);
+            ImGui::Text("scene: %zu objects (%zu spheres, %zu mesh instances), %zu triangles, %zu materials", st.objects,
+                        st.spheres, st.instances, st.triangles, st.materials);
+            ImGui::Text("BVH: %zu top + %zu mesh nodes (depth %d); textures: %zu, %s on the GPU", st.topBvhNodes,
+                        st.meshBvhNodes, st.bvhDepth, st.textures, formatBytes(st.textureBytes).c_str());
+            ImGui::Text("lights: %zu emissive spheres, %zu emissive triangles", st.emissiveSpheres, st.emissiveTriangles);
+        }
         ImGui::Text("image %d x %d, restarts %llu", t->width(), t->height(), (unsigned long long)s.restarts);
     }
     ImGui::End();
