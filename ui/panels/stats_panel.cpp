@@ -33,11 +33,12 @@ void drawStatsPanel(Viewer& viewer, UiState&) {
         ImGui::Text("shader: %s, compiled in %.2f s", viewer.shaderVariant().c_str(), s.shaderCompileSeconds);
         if (const SceneGeometry* g = viewer.geometry()) {   // render/scene_stats.h
             const SceneStats st = sceneStats(viewer.scene(), *g);
-            ImGui::Text("scene: %zu objects (%zu spheres, %zu mesh instances), %zu triangles, %zu materials", st.objects,
-                        st.spheres, st.instances, st.triangles, st.materials);
-            ImGui::Text("BVH: %zu top + %zu mesh nodes (depth %d); textures: %zu, %s on the GPU", st.topBvhNodes,
-                        st.meshBvhNodes, st.bvhDepth, st.textures, formatBytes(st.textureBytes).c_str());
-            ImGui::Text("lights: %zu emissive spheres, %zu emissive triangles", st.emissiveSpheres, st.emissiveTriangles);
+            ImGui::Text("objects %zu: %zu spheres, %zu meshes; %zu triangles", st.objects, st.spheres, st.instances,
+                        st.triangles);
+            ImGui::Text("BVH nodes: %zu top + %zu mesh, depth %d", st.topBvhNodes, st.meshBvhNodes, st.bvhDepth);
+            ImGui::Text("textures %zu (%s on the GPU), materials %zu", st.textures, formatBytes(st.textureBytes).c_str(),
+                        st.materials);
+            ImGui::Text("lights: %zu emissive spheres, %zu triangles", st.emissiveSpheres, st.emissiveTriangles);
         }
         ImGui::Text("image %d x %d, restarts %llu", t->width(), t->height(), (unsigned long long)s.restarts);
     }

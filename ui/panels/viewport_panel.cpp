@@ -185,11 +185,11 @@ void drawWorkspace(Viewer& viewer, UiState& ui, float W, float H) {
     drawRenderPanel(viewer, ui);
     place(0, H * 0.62f, left, H * 0.38f);
     drawCameraPanel(viewer, ui);
-    place(left + mid, 0, right, H * 0.55f);
+    place(left + mid, 0, right, H * 0.42f);
     drawMaterialPanel(viewer, ui);
-    place(left + mid, H * 0.55f, right, H * 0.12f);
+    place(left + mid, H * 0.42f, right, H * 0.17f);
     drawOverlaysPanel(viewer, ui);
-    place(left + mid, H * 0.67f, right, H * 0.33f);
+    place(left + mid, H * 0.59f, right, H * 0.41f);
     drawDebugPanel(viewer, ui);
     place(left, H - bottom, mid * 0.5f, bottom);
     drawStatsPanel(viewer, ui);
