@@ -62,7 +62,7 @@ TEST(RenderCli, HelpDocumentsEveryOption) {
     const CliRun r = render("--help");
     EXPECT_EQ(r.status, 0);
     for (const char* opt : {"--output", "--spp", "--time", "--width", "--height", "--seed", "--set", "--rpp",
-                            "--gl", "--quiet", "Exit status"})
+                            "--gl", "--quiet", "--debug-view", "Exit status"})
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 
