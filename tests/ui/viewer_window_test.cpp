@@ -66,6 +66,11 @@ protected:
         EXPECT_NE(it, run_->shots.end()) << name << " missing; log:\n" << run_->log;
         return it == run_->shots.end() ? none : it->second;
     }
+    void ShowsTheTracedImageWhereTheLayoutPutsIt();
+    void ADebugViewDiffersFromTheBeautyImage();
+    void ClickingAnObjectAndEditingItsAlbedoChangesThatObject();
+    void RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights();
+    void OverlayPixelsLandOnTheProjectedBoxes();
     static inline test::Xvfb* xvfb_ = nullptr;
     static inline ViewerRun* run_ = nullptr;
     static inline fs::path dir_;
@@ -73,7 +78,8 @@ protected:
     static inline float clickX_ = 0, clickY_ = 0;
 };
 
-TEST_F(ViewerWindowTest, ShowsTheTracedImageWhereTheLayoutPutsIt) {
+void ViewerWindowTest::ShowsTheTracedImageWhereTheLayoutPutsIt() {
+    SCOPED_TRACE("ShowsTheTracedImageWhereTheLayoutPutsIt");
     const Shot& b = shot("beauty");
     EXPECT_NEAR(b.x, kImageX, 0.5f);
     EXPECT_NEAR(b.y, kImageY, 0.5f);
@@ -84,7 +90,8 @@ TEST_F(ViewerWindowTest, ShowsTheTracedImageWhereTheLayoutPutsIt) {
     EXPECT_GT(sky.z, 0.6f);
 }
 
-TEST_F(ViewerWindowTest, ADebugViewDiffersFromTheBeautyImage) {
+void ViewerWindowTest::ADebugViewDiffersFromTheBeautyImage() {
+    SCOPED_TRACE("ADebugViewDiffersFromTheBeautyImage");
     EXPECT_GT(imageDifference(shot("beauty"), shot("normals")), 0.1);
     // The ground under the image centre faces up: normal (0, 1, 0) shown as (0.5, 1, 0.5), sRGB-free.
     const Image exr = readImage(dir_ / "normals.exr");
@@ -92,7 +99,8 @@ TEST_F(ViewerWindowTest, ADebugViewDiffersFromTheBeautyImage) {
     EXPECT_NEAR(n.y, 1.0f, 0.02f);
 }
 
-TEST_F(ViewerWindowTest, ClickingAnObjectAndEditingItsAlbedoChangesThatObject) {
+void ViewerWindowTest::ClickingAnObjectAndEditingItsAlbedoChangesThatObject() {
+    SCOPED_TRACE("ClickingAnObjectAndEditingItsAlbedoChangesThatObject");
     EXPECT_NE(run_->log.find("picked object 1 (material white)"), std::string::npos) << run_->log;
     const Shot& before = shot("beauty");
     const Shot& after = shot("blue");
@@ -105,7 +113,8 @@ TEST_F(ViewerWindowTest, ClickingAnObjectAndEditingItsAlbedoChangesThatObject) {
     EXPECT_LT(glm::length(sa - sb), 0.05f);
 }
 
-TEST_F(ViewerWindowTest, RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights) {
+void ViewerWindowTest::RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights() {
+    SCOPED_TRACE("RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights");
     // The picked sphere made a near-mirror (f0 0.9): at roughness 0.05 it reflects the spheres and
     // the horizon sharply; at 0.6 the GGX lobe spreads them. Samples are the same random numbers
     // in both renders (same seed, same sample indices), so pixels the edit does not affect are
@@ -127,7 +136,8 @@ TEST_F(ViewerWindowTest, RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighl
     EXPECT_EQ(meanChange(int(sharp.x + 40), int(sharp.y + 10), 8), 0.0) << "the sky changed";
 }
 
-TEST_F(ViewerWindowTest, OverlayPixelsLandOnTheProjectedBoxes) {
+void ViewerWindowTest::OverlayPixelsLandOnTheProjectedBoxes() {
+    SCOPED_TRACE("OverlayPixelsLandOnTheProjectedBoxes");
     const Shot& off = shot("beauty");
     const Shot& on = shot("overlay");
     const Scene s = loadScene(scene_);
@@ -157,6 +167,16 @@ TEST_F(ViewerWindowTest, OverlayPixelsLandOnTheProjectedBoxes) {
         }
     EXPECT_GT(changed, 500) << "no overlay drawn";
     EXPECT_EQ(far, 0) << "of " << changed << " overlay pixels";
+}
+
+// One test: ctest runs every test in its own process, and each would start the viewer again
+// (about a minute each on the loaded build machine).
+TEST_F(ViewerWindowTest, ScriptedRun) {
+    ShowsTheTracedImageWhereTheLayoutPutsIt();
+    ADebugViewDiffersFromTheBeautyImage();
+    ClickingAnObjectAndEditingItsAlbedoChangesThatObject();
+    RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights();
+    OverlayPixelsLandOnTheProjectedBoxes();
 }
 
 TEST(ViewerWindow, ABrokenSceneKeepsThePreviousImageAndShowsTheError) {
