@@ -16,6 +16,7 @@ uniform float uDepthScale;  // depth view: distance shown as black
 uniform float uNoiseScale;  // noise view: relative standard error shown as full red
 uniform float uSpp;         // samples per pixel accumulated
 uniform int uHasMoments;    // 0 before the first pass
+uniform float uHeatScale;   // box / triangle heat maps: the count shown as full red
 
 layout(location = 0) out vec4 outColor;
 
@@ -35,8 +36,10 @@ void main() {
     vec3 c = texelFetch(uAccumTex, p, 0).rgb;
     vec4 m = uHasMoments != 0 ? debugMoments[p.y * uImageSize.x + p.x] : vec4(0.0f);
     vec3 rgb;
-    if (uView == 1 || uView == 4) {          // normals, material id: already display colours
+    if (uView == 1 || uView == 4 || uView == 12) {   // normals, material id, uv: display colours
         rgb = c;
+    } else if (uView == 10 || uView == 11) { // box / triangle tests per camera ray (r / g)
+        rgb = heat((uView == 10 ? c.r : c.g) / uHeatScale);
     } else if (uView == 2) {                 // albedo: reflectance, sRGB-encoded, no exposure
         rgb = vec3(srgbEncode(c.r), srgbEncode(c.g), srgbEncode(c.b));
     } else if (uView == 3) {                 // depth: near is white

@@ -1,5 +1,6 @@
 // Debug views of the viewer. RAYLAB_DEBUG_VIEWS: the view selected by uDebugView (normals, albedo,
-// depth, material id) is traced in place of the beauty path. RAYLAB_DEBUG_MOMENTS: the beauty path
+// depth, material id, uv, box and triangle tests of the camera ray) is traced in place of the
+// beauty path. RAYLAB_DEBUG_MOMENTS: the beauty path
 // also keeps per-pixel moments (mean luminance², non-finite count) for the noise and NaN/Inf views.
 // The viewer compiles a tracer variant per need; the plain beauty variant and raylab-render define
 // neither: then this file adds nothing. (Always included: the include expander does not see #if.) Binding points 16-19 belong to the viewer. GLSL only.
@@ -22,6 +23,11 @@ const int DEBUG_FIRST_DISPLAY_ONLY = 5;   // 5 NaN/Inf, 6 noise
 const int DEBUG_BOUNCE_K = 7;             // only light that reached the eye after uDebugBounce bounces
 const int DEBUG_DIRECT = 8;               // emitters and sky seen directly or after one bounce
 const int DEBUG_INDIRECT = 9;             // light after two or more bounces
+// 10, 11: box and triangle tests of the camera ray; both store (boxes, triangles, 0) and need
+// RAYLAB_COUNT_TRAVERSAL (else 0); the display shader picks the channel. 12: fract(uv), 0.
+const int DEBUG_BOXES = 10;
+const int DEBUG_TRIANGLES = 11;
+const int DEBUG_UV = 12;
 
 #ifdef RAYLAB_DEBUG_VIEWS
 uniform int uDebugView;
@@ -45,14 +51,39 @@ vec3 debugIdColor(uint id) {
     return 0.25f + 0.75f * k;
 }
 
+#ifdef RAYLAB_COUNT_TRAVERSAL
+// Binding 17: the largest box (x) and triangle (y) count of one camera ray since the host last
+// cleared it: the heat maps' automatic scale.
+layout(std430, binding = 17) buffer DebugHeatMaxBuffer { uint debugHeatMax[2]; };
+#endif
+
 // One sample of the selected view for a camera ray. Depth is the distance along the ray (0 for a
-// miss); the display shader maps it to grey.
+// miss); the display shader maps it to grey. The heat maps count the tests of this ray only (the
+// primary ray), not of the path's later bounces or shadow rays.
+
 vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
-    if (uDebugView == DEBUG_BEAUTY || uDebugView >= DEBUG_FIRST_DISPLAY_ONLY)
+    if (uDebugView == DEBUG_BEAUTY || (uDebugView >= DEBUG_FIRST_DISPLAY_ONLY && uDebugView <= DEBUG_INDIRECT))
         return traceRadiance(ray, rng, rays);   // views 7-9: filtered by the hook above
     Hit hit;
     ++rays;
-    if (!intersectScene(ray, hit)) return vec3(0.0f);
+#ifdef RAYLAB_COUNT_TRAVERSAL
+    uint boxesBefore = gBoxTests;
+    uint trianglesBefore = gTriangleTests;
+#endif
+    bool found = intersectScene(ray, hit);
+    if (uDebugView == DEBUG_BOXES || uDebugView == DEBUG_TRIANGLES) {
+#ifdef RAYLAB_COUNT_TRAVERSAL
+        uint boxes = gBoxTests - boxesBefore;
+        uint tris = gTriangleTests - trianglesBefore;
+        atomicMax(debugHeatMax[0], boxes);
+        atomicMax(debugHeatMax[1], tris);
+        return vec3(float(boxes), float(tris), 0.0f);
+#else
+        return vec3(0.0f);
+#endif
+    }
+    if (!found) return vec3(0.0f);
+    if (uDebugView == DEBUG_UV) return vec3(fract(hit.uv), 0.0f);
     if (uDebugView == DEBUG_NORMALS) return hit.normal * 0.5f + 0.5f;
     if (uDebugView == DEBUG_ALBEDO) return materials[hit.material].albedo.rgb;
     if (uDebugView == DEBUG_DEPTH) return vec3(hit.t);

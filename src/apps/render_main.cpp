@@ -6,11 +6,15 @@
 #include "inspect/path_export.h"
 #include "inspect/path_inspector.h"
 #include "io/image_io.h"
+#include "render/debug_view_ids.h"
 #include "render/path_tracer.h"
 #include "render/progressive_render.h"
+#include "render/scene_stats.h"
 #include "scene/scene_loader.h"
 
 #include <CLI/CLI.hpp>
+
+#include <glad/gl.h>
 
 #include <atomic>
 #include <chrono>
@@ -139,11 +143,26 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 4096));
     app.add_option("--inspect-out", inspectOut, "With --inspect: the output file, .json or .csv (default: inspect.json)")
         ->type_name("FILE");
+    std::string debugView;
+    std::vector<std::string> debugViewNames;
+    for (const TracedDebugView& v : kTracedDebugViews) debugViewNames.emplace_back(v.name);
+    app.add_option("--debug-view", debugView,
+                   "Trace a debug view of the viewer instead of the image, written as raw per-pixel means "
+                   "(so the output is .exr; default <scene name>-<view>.exr): normals, albedo, depth, uv, "
+                   "material-id, boxes / triangles (both: R = BVH box tests, G = triangle tests of the "
+                   "pixel's camera ray)")
+        ->check(CLI::IsMember(debugViewNames));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? 0 : 2;
+    }
+    const std::optional<TracedDebugView> view = debugView.empty() ? std::nullopt : findTracedDebugView(debugView);
+    if (view && !output.empty() && std::filesystem::path(output).extension() != ".exr") {
+        std::cerr << "raylab-render: error: --debug-view writes raw values: the output must be .exr, not '" << output
+                  << "'\n";
+        return 2;
     }
 
     // Command-line flags are overrides too, applied after --set so they win.
@@ -164,7 +183,8 @@ int main(int argc, char** argv) {
             std::cout << std::filesystem::absolute(blenderOut).string() << "\n";
             return 0;
         }
-        outPath = output.empty() ? std::filesystem::path(scene.sourcePath.stem().string() + ".png")
+        const std::string suffix = view ? "-" + std::string(view->name) + ".exr" : ".png";
+        outPath = output.empty() ? std::filesystem::path(scene.sourcePath.stem().string() + suffix)
                                  : std::filesystem::path(output);
         checkWritable(outPath);
     } catch (const std::exception& e) {
@@ -187,8 +207,11 @@ int main(int argc, char** argv) {
         context = createHeadlessContext(parseGlBackend(gl));
         TracerOptions options;
         options.entry = entry == "compute" ? TracerEntry::Compute : TracerEntry::Fragment;
+        if (view) options.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
+        if (view && view->countsTraversal) options.extraDefines.emplace_back("RAYLAB_COUNT_TRAVERSAL", "1");
         tracer = std::make_unique<PathTracer>(options);
         tracer->setScene(scene);
+        if (view) tracer->program().set("uDebugView", view->id);
     } catch (const std::exception& e) {
         std::cerr << "raylab-render: error: " << e.what() << "\n";
         return 3;
@@ -196,6 +219,17 @@ int main(int argc, char** argv) {
     if (!quiet)
         std::fprintf(stderr, "shader: %s, compiled in %.2f s\n", tracer->variantName().c_str(),
                      tracer->compileSeconds());
+    if (!quiet)
+        std::fprintf(stderr, "%s\n", describeSceneStats(sceneStats(scene, tracer->gpuScene().geometry())).c_str());
+
+    // The heat maps' largest count of one ray (binding 17, shaders/include/debug_views.glsl).
+    GLuint heatMax = 0;
+    if (view && view->countsTraversal) {
+        const GLuint zeros[2] = {0, 0};
+        glCreateBuffers(1, &heatMax);
+        glNamedBufferStorage(heatMax, sizeof(zeros), zeros, 0);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 17, heatMax);
+    }
 
     std::signal(SIGINT, onSigint);
     const bool tty = ::isatty(STDERR_FILENO);
@@ -220,6 +254,15 @@ int main(int argc, char** argv) {
         return 3;
     }
     if (tty && !quiet) std::fputc('\n', stderr);
+    if (heatMax) {
+        GLuint most[2] = {0, 0};
+        glGetNamedBufferSubData(heatMax, 0, sizeof(most), most);
+        glDeleteBuffers(1, &heatMax);
+        const double rays = double(std::max<std::uint64_t>(tracer->pathsTraced(), 1));
+        if (!quiet)
+            std::fprintf(stderr, "camera rays: %.2f box tests and %.2f triangle tests on average, at most %u and %u\n",
+                         double(tracer->boxTests()) / rays, double(tracer->triangleTests()) / rays, most[0], most[1]);
+    }
     if (tracer->nonFiniteSamples() > 0)
         std::cerr << "raylab-render: warning: " << tracer->nonFiniteSamples()
                   << " NaN/Inf samples were replaced by 0\n";

@@ -23,14 +23,15 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"wait-frames", {1, 1}}, {"screenshot", {1, 1}},  {"export", {1, 1}},     {"save", {1, 1}},
         {"window", {2, 2}},      {"quit", {0, 0}},        {"debug-bounce", {1, 1}},
         {"inspect", {2, 3}},     {"inspect-export", {1, 1}}, {"explore", {1, 2}},  {"panel", {2, 2}},
+        {"focus", {2, 2}},       {"focus-mode", {1, 1}},  {"bvh-depth", {1, 1}},  {"heat-scale", {1, 1}},
     };
     return table;
 }
 
 // The viewer's debug views by name (ui/app/debug_view.h; a viewer test keeps the two in step).
-constexpr std::array<std::string_view, 10> kDebugViews = {"beauty", "normals", "albedo",      "depth",
+constexpr std::array<std::string_view, 13> kDebugViews = {"beauty", "normals", "albedo",      "depth",
                                                           "material-id", "nan", "noise", "bounce",
-                                                          "direct", "indirect"};
+                                                          "direct", "indirect", "boxes", "triangles", "uv"};
 
 bool isNumber(const std::string& s) {
     double v = 0;
@@ -80,21 +81,26 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
             fail(c.name + " takes " + std::to_string(it->second.min) + " argument(s), got " + std::to_string(n));
         const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "scale" ||
                              c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window" ||
-                             c.name == "debug-bounce" || c.name == "inspect" ||
-                             c.name == "explore";
+                             c.name == "debug-bounce" || c.name == "inspect" || c.name == "explore" ||
+                             c.name == "focus" || c.name == "bvh-depth";
         if (numeric)
             for (const std::string& a : c.args)
                 if (!isNumber(a)) fail(c.name + ": '" + a + "' is not a number");
         if (c.name == "debug-view" &&
             std::find(kDebugViews.begin(), kDebugViews.end(), c.args[0]) == kDebugViews.end())
             fail("unknown debug view '" + c.args[0] +
-                 "' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect)");
-        if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected" && c.args[0] != "paths") ||
-                                    (c.args[1] != "on" && c.args[1] != "off")))
-            fail("overlay takes boxes|selected|paths on|off");
-        if (c.name == "panel" && ((c.args[0] != "inspector" && c.args[0] != "brdf-explorer") ||
-                                  (c.args[1] != "on" && c.args[1] != "off")))
+                 "' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect, "
+                 "boxes, triangles, uv)");
+        const auto onOff = [](const std::string& w) { return w == "on" || w == "off"; };
+        if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected" && c.args[0] != "paths" &&
+                                     c.args[0] != "bvh" && c.args[0] != "mesh-bvh") ||
+                                    !onOff(c.args[1])))
+            fail("overlay takes boxes|selected|paths|bvh|mesh-bvh on|off");
+        if (c.name == "panel" && ((c.args[0] != "inspector" && c.args[0] != "brdf-explorer") || !onOff(c.args[1])))
             fail("panel takes inspector|brdf-explorer on|off");
+        if (c.name == "focus-mode" && !onOff(c.args[0])) fail("focus-mode takes on|off");
+        if (c.name == "heat-scale" && c.args[0] != "auto" && (!isNumber(c.args[0]) || std::stod(c.args[0]) <= 0.0))
+            fail("heat-scale takes auto or a count > 0");
         out.push_back(std::move(c));
     }
     return out;

@@ -9,10 +9,16 @@
 //   click X Y              a left click at window pixel (X, Y), as the mouse would
 //   pick X Y               select the object at image pixel (X, Y) of the traced image
 //   select N               select object N (as the outliner does)
+//   focus X Y              click-to-focus at image pixel (X, Y): camera.focus_distance becomes the
+//                          distance of the surface there along the view axis
+//   focus-mode on|off      the Camera panel's "click to focus": the next click focuses, not picks
 //   debug-view NAME        beauty, normals, albedo, depth, material-id, nan, noise, bounce,
-//                          direct, indirect;  debug-bounce K: the bounce the "bounce" view shows
+//                          direct, indirect, boxes, triangles, uv;  debug-bounce K: the bounce
+//                          the "bounce" view shows;  heat-scale auto|N: the count shown red
 //   overlay boxes on|off   object bounding boxes;  overlay selected on|off: only the selected one;
 //                          overlay paths on|off: the inspected pixel's paths
+//   overlay bvh on|off     top-level BVH nodes at the chosen depth; overlay mesh-bvh on|off: the
+//                          meshes' BVH nodes at that depth;  bvh-depth N: the depth (0 = root)
 //   inspect X Y [N]        record the next N (default: the Inspector's count, 8) sample paths of
 //                          image pixel (X, Y) with every estimator term (Inspector panel, overlay)
 //   inspect-export PATH    the inspected paths as .json or .csv

@@ -4,6 +4,8 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <fstream>
 #include <sstream>
@@ -60,7 +62,7 @@ TEST(RenderCli, HelpDocumentsEveryOption) {
     const CliRun r = render("--help");
     EXPECT_EQ(r.status, 0);
     for (const char* opt : {"--output", "--spp", "--time", "--width", "--height", "--seed", "--set", "--rpp",
-                            "--gl", "--quiet", "Exit status"})
+                            "--gl", "--quiet", "--debug-view", "Exit status"})
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 
@@ -134,6 +136,31 @@ TEST(RenderCli, BadCommandLinesAndOutputsFailBeforeRendering) {
         << unwritable.err;
     EXPECT_EQ(unwritable.err.find("spp"), std::string::npos) << "it rendered before failing: " << unwritable.err;
     EXPECT_EQ(render("scenes/default.json -o out.tga").status, 1);
+}
+
+TEST(RenderCli, DebugViewsWriteRawPerPixelValues) {
+    const fs::path exr = scratchDir() / "tri.exr";
+    const CliRun r = render("scenes/displaced_terrain.json --width 32 --height 18 --spp 1 --debug-view triangles -o '" +
+                            exr.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("camera rays: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("scene: 3 objects"), std::string::npos) << "the scene statistics: " << r.err;
+    const raylab::Image im = raylab::readImage(exr);
+    ASSERT_EQ(im.width, 32);
+    float most = 0.0f;
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            const glm::vec3 c = im.rgb(x, y);
+            EXPECT_EQ(c.x, std::floor(c.x)) << "one sample per pixel: whole counts";
+            EXPECT_EQ(c.y, std::floor(c.y));
+            most = std::max(most, c.y);
+        }
+    EXPECT_EQ(im.rgb(16, 0).y, 0.0f) << "the sky above the terrain tests no triangle";
+    EXPECT_GT(most, 0.0f);
+    const CliRun png = render("scenes/default.json --debug-view boxes -o x.png");
+    EXPECT_EQ(png.status, 2);
+    EXPECT_NE(png.err.find("must be .exr"), std::string::npos) << png.err;
+    EXPECT_EQ(render("scenes/default.json --debug-view heat -o x.exr").status, 2);
 }
 
 TEST(RenderCli, SigintWritesThePartialImageAndExits130) {

@@ -107,7 +107,7 @@ TEST(Lesson, ParsesEveryPart) {
 TEST(Lesson, BadCommandNamesFileAndLine) {
     EXPECT_EQ(errorOf(replaced(kGood, "debug-view normals", "debug-view heat")),
               "lessons/t.md:17: error: unknown debug view 'heat' (beauty, normals, albedo, depth, material-id, "
-              "nan, noise, bounce, direct, indirect)");
+              "nan, noise, bounce, direct, indirect, boxes, triangles, uv)");
     EXPECT_EQ(errorOf(replaced(kGood, "wait-spp 4", "wait-sp 4")), "lessons/t.md:26: error: unknown command 'wait-sp'");
 }
 

@@ -59,9 +59,10 @@ TEST(Script, RejectsMistakesWithFileAndLine) {
     EXPECT_EQ(errorOf("wait-spp lots\n"), "s.txt:1: error: wait-spp: 'lots' is not a number");
     EXPECT_EQ(errorOf("window 800 tall\n"), "s.txt:1: error: window: 'tall' is not a number");
     EXPECT_EQ(errorOf("debug-view heat\n"),
-              "s.txt:1: error: unknown debug view 'heat' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect)");
-    EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected|paths on|off");
-    EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected|paths on|off");
+              "s.txt:1: error: unknown debug view 'heat' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect, "
+              "boxes, triangles, uv)");
+    EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh on|off");
+    EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh on|off");
 }
 
 TEST(Script, InspectorCommands) {
@@ -75,9 +76,21 @@ TEST(Script, InspectorCommands) {
 }
 
 TEST(Script, EveryDebugViewNameParses) {
-    ASSERT_EQ(scriptDebugViews().size(), 10u);
+    ASSERT_EQ(scriptDebugViews().size(), 13u);
     for (std::string_view v : scriptDebugViews())
         EXPECT_EQ(errorOf("debug-view " + std::string(v) + "\n"), "<no error>") << v;
+}
+
+TEST(Script, InspectionCommandsCheckTheirArguments) {
+    EXPECT_EQ(errorOf("focus 10 20\nfocus-mode on\nbvh-depth 3\nheat-scale auto\nheat-scale 40\noverlay bvh on\n"
+                      "overlay mesh-bvh off\n"),
+              "<no error>");
+    EXPECT_EQ(errorOf("focus 10\n"), "s.txt:1: error: focus takes 2 argument(s), got 1");
+    EXPECT_EQ(errorOf("focus here there\n"), "s.txt:1: error: focus: 'here' is not a number");
+    EXPECT_EQ(errorOf("focus-mode maybe\n"), "s.txt:1: error: focus-mode takes on|off");
+    EXPECT_EQ(errorOf("bvh-depth deep\n"), "s.txt:1: error: bvh-depth: 'deep' is not a number");
+    EXPECT_EQ(errorOf("heat-scale 0\n"), "s.txt:1: error: heat-scale takes auto or a count > 0");
+    EXPECT_EQ(errorOf("heat-scale hot\n"), "s.txt:1: error: heat-scale takes auto or a count > 0");
 }
 
 TEST(Script, MissingFileIsAnError) {

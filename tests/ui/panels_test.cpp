@@ -67,5 +67,36 @@ TEST_F(PanelsTest, DrawingChangesNothingAndAClickOnTheImagePicks) {
     EXPECT_EQ(viewer->selected, 0);   // outside: unchanged
 }
 
+TEST_F(PanelsTest, ClickToFocusModeFocusesInsteadOfPickingOnce) {
+    for (int i = 0; i < 2; ++i) frame();
+    viewer->selected = 3;
+    ui.focusOnClick = true;
+    const float before = viewer->scene().camera.focusDistance;
+    viewportClick(*viewer, ui, ui.image.x + ui.image.width * 0.5f, ui.image.y + ui.image.height - 1.0f);
+    EXPECT_FALSE(ui.focusOnClick) << "the mode ends with the click";
+    EXPECT_EQ(viewer->selected, 3) << "a focusing click does not pick";
+    EXPECT_NE(viewer->scene().camera.focusDistance, before);
+    EXPECT_GT(viewer->scene().camera.focusDistance, 0.0f);
+    viewportClick(*viewer, ui, ui.image.x + ui.image.width * 0.5f, ui.image.y + ui.image.height - 1.0f);
+    EXPECT_EQ(viewer->selected, 0) << "the next click picks again";
+}
+
+TEST_F(PanelsTest, HeatMapsAndBvhOverlaysDraw) {
+    viewer->overlays.bvh = true;
+    viewer->overlays.meshBvh = true;
+    viewer->overlays.bvhDepth = 2;
+    for (DebugView v : {DebugView::Boxes, DebugView::Triangles, DebugView::Uv}) {
+        viewer->setDebugView(v);
+        EXPECT_EQ(viewer->debugView(), v) << viewer->lastError();
+        for (int i = 0; i < 2; ++i) {
+            viewer->update(0.01);
+            frame();
+        }
+    }
+    const ImDrawData* dd = ImGui::GetDrawData();
+    ASSERT_NE(dd, nullptr);
+    EXPECT_GT(dd->TotalVtxCount, 0);
+}
+
 } // namespace
 } // namespace raylab::ui

@@ -1,6 +1,7 @@
 // The viewer runs scripts with the core parser (src/script); its debug-view names must be the
 // viewer's own, both ways.
 #include "app/debug_view.h"
+#include "render/debug_view_ids.h"
 #include "script/script.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,16 @@ TEST(ViewerScript, EveryScriptDebugViewIsAViewerDebugViewAndBack) {
         EXPECT_NE(std::find(scriptDebugViews().begin(), scriptDebugViews().end(), debugViewName(v)),
                   scriptDebugViews().end())
             << debugViewName(v);
+}
+
+TEST(ViewerScript, RaylabRendersTracedDebugViewsAreTheViewersByNameAndId) {
+    for (const TracedDebugView& v : kTracedDebugViews) {
+        const auto mine = parseDebugView(v.name);
+        ASSERT_TRUE(mine.has_value()) << v.name;
+        EXPECT_EQ(int(*mine), v.id) << v.name;
+        EXPECT_TRUE(tracedDebugView(*mine)) << v.name;
+        EXPECT_EQ(heatMapView(*mine), v.countsTraversal) << v.name;
+    }
 }
 
 TEST(ViewerScript, DebugBounceTakesANumber) {

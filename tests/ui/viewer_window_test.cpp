@@ -3,6 +3,7 @@
 #include "app/view_geometry.h"
 #include "io/image_io.h"
 #include "scene/scene_loader.h"
+#include "ui/viewer_run.h"
 #include "ui/xvfb.h"
 
 #include <gtest/gtest.h>
@@ -17,61 +18,7 @@
 namespace raylab::ui {
 namespace {
 
-namespace fs = std::filesystem;
-
-struct Shot {
-    Image image;        // the window, top row first
-    float x = 0, y = 0, w = 0, h = 0;   // where the traced image lies in it
-};
-
-struct ViewerRun {
-    int status = -1;
-    std::string log;
-    std::map<std::string, Shot> shots;
-};
-
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// Runs the viewer with `script` at resolution scale 0.5 (320 x 180 traced) in a 1280 x 800 window.
-ViewerRun runViewer(const test::Xvfb& x, const fs::path& dir, const std::string& script, const std::string& scene) {
-    fs::create_directories(dir);
-    std::ofstream(dir / "script.txt") << script;
-    const std::string cmd = "DISPLAY=" + x.display() + " " RAYLAB_VIEWER_EXE " '" + scene + "' --ini '' --scale 0.5 --window 1280 800 --script '" +
-                            (dir / "script.txt").string() + "' --script-timeout 240 > '" + (dir / "log.txt").string() + "' 2>&1";
-    ViewerRun run;
-    const int raw = std::system(cmd.c_str());
-    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    run.log = readText(dir / "log.txt");
-    const std::regex line(R"(screenshot (\S+) \(\d+x\d+; image at ([\d.]+) ([\d.]+) size ([\d.]+) ([\d.]+),)");
-    for (std::sregex_iterator it(run.log.begin(), run.log.end(), line), end; it != end; ++it) {
-        Shot s;
-        s.image = readImage((*it)[1].str());
-        s.x = std::stof((*it)[2].str());
-        s.y = std::stof((*it)[3].str());
-        s.w = std::stof((*it)[4].str());
-        s.h = std::stof((*it)[5].str());
-        run.shots[fs::path((*it)[1].str()).stem().string()] = std::move(s);
-    }
-    return run;
-}
-
-// Mean absolute difference of two shots over the traced image's area.
-double imageDifference(const Shot& a, const Shot& b) {
-    double sum = 0;
-    int n = 0;
-    for (int y = int(a.y) + 1; y < int(a.y + a.h) - 1; ++y)
-        for (int x = int(a.x) + 1; x < int(a.x + a.w) - 1; ++x) {
-            const glm::vec3 d = glm::abs(a.image.rgb(x, y) - b.image.rgb(x, y));
-            sum += double(d.x + d.y + d.z) / 3.0;
-            ++n;
-        }
-    return sum / n;
-}
+using namespace test_run;
 
 class ViewerWindowTest : public ::testing::Test {
 protected:
@@ -119,8 +66,11 @@ protected:
         EXPECT_NE(it, run_->shots.end()) << name << " missing; log:\n" << run_->log;
         return it == run_->shots.end() ? none : it->second;
     }
-    // The first-use layout of a 1280 x 800 window (ui/panels/viewport_panel.cpp, drawWorkspace).
-    static constexpr float kImageX = 332.0f, kImageY = 121.25f, kImageW = 616.0f, kImageH = 346.5f;
+    void ShowsTheTracedImageWhereTheLayoutPutsIt();
+    void ADebugViewDiffersFromTheBeautyImage();
+    void ClickingAnObjectAndEditingItsAlbedoChangesThatObject();
+    void RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights();
+    void OverlayPixelsLandOnTheProjectedBoxes();
     static inline test::Xvfb* xvfb_ = nullptr;
     static inline ViewerRun* run_ = nullptr;
     static inline fs::path dir_;
@@ -128,7 +78,8 @@ protected:
     static inline float clickX_ = 0, clickY_ = 0;
 };
 
-TEST_F(ViewerWindowTest, ShowsTheTracedImageWhereTheLayoutPutsIt) {
+void ViewerWindowTest::ShowsTheTracedImageWhereTheLayoutPutsIt() {
+    SCOPED_TRACE("ShowsTheTracedImageWhereTheLayoutPutsIt");
     const Shot& b = shot("beauty");
     EXPECT_NEAR(b.x, kImageX, 0.5f);
     EXPECT_NEAR(b.y, kImageY, 0.5f);
@@ -139,7 +90,8 @@ TEST_F(ViewerWindowTest, ShowsTheTracedImageWhereTheLayoutPutsIt) {
     EXPECT_GT(sky.z, 0.6f);
 }
 
-TEST_F(ViewerWindowTest, ADebugViewDiffersFromTheBeautyImage) {
+void ViewerWindowTest::ADebugViewDiffersFromTheBeautyImage() {
+    SCOPED_TRACE("ADebugViewDiffersFromTheBeautyImage");
     EXPECT_GT(imageDifference(shot("beauty"), shot("normals")), 0.1);
     // The ground under the image centre faces up: normal (0, 1, 0) shown as (0.5, 1, 0.5), sRGB-free.
     const Image exr = readImage(dir_ / "normals.exr");
@@ -147,7 +99,8 @@ TEST_F(ViewerWindowTest, ADebugViewDiffersFromTheBeautyImage) {
     EXPECT_NEAR(n.y, 1.0f, 0.02f);
 }
 
-TEST_F(ViewerWindowTest, ClickingAnObjectAndEditingItsAlbedoChangesThatObject) {
+void ViewerWindowTest::ClickingAnObjectAndEditingItsAlbedoChangesThatObject() {
+    SCOPED_TRACE("ClickingAnObjectAndEditingItsAlbedoChangesThatObject");
     EXPECT_NE(run_->log.find("picked object 1 (material white)"), std::string::npos) << run_->log;
     const Shot& before = shot("beauty");
     const Shot& after = shot("blue");
@@ -160,7 +113,8 @@ TEST_F(ViewerWindowTest, ClickingAnObjectAndEditingItsAlbedoChangesThatObject) {
     EXPECT_LT(glm::length(sa - sb), 0.05f);
 }
 
-TEST_F(ViewerWindowTest, RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights) {
+void ViewerWindowTest::RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights() {
+    SCOPED_TRACE("RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights");
     // The picked sphere made a near-mirror (f0 0.9): at roughness 0.05 it reflects the spheres and
     // the horizon sharply; at 0.6 the GGX lobe spreads them. Samples are the same random numbers
     // in both renders (same seed, same sample indices), so pixels the edit does not affect are
@@ -182,7 +136,8 @@ TEST_F(ViewerWindowTest, RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighl
     EXPECT_EQ(meanChange(int(sharp.x + 40), int(sharp.y + 10), 8), 0.0) << "the sky changed";
 }
 
-TEST_F(ViewerWindowTest, OverlayPixelsLandOnTheProjectedBoxes) {
+void ViewerWindowTest::OverlayPixelsLandOnTheProjectedBoxes() {
+    SCOPED_TRACE("OverlayPixelsLandOnTheProjectedBoxes");
     const Shot& off = shot("beauty");
     const Shot& on = shot("overlay");
     const Scene s = loadScene(scene_);
@@ -212,6 +167,16 @@ TEST_F(ViewerWindowTest, OverlayPixelsLandOnTheProjectedBoxes) {
         }
     EXPECT_GT(changed, 500) << "no overlay drawn";
     EXPECT_EQ(far, 0) << "of " << changed << " overlay pixels";
+}
+
+// One test: ctest runs every test in its own process, and each would start the viewer again
+// (about a minute each on the loaded build machine).
+TEST_F(ViewerWindowTest, ScriptedRun) {
+    ShowsTheTracedImageWhereTheLayoutPutsIt();
+    ADebugViewDiffersFromTheBeautyImage();
+    ClickingAnObjectAndEditingItsAlbedoChangesThatObject();
+    RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights();
+    OverlayPixelsLandOnTheProjectedBoxes();
 }
 
 TEST(ViewerWindow, ABrokenSceneKeepsThePreviousImageAndShowsTheError) {

@@ -14,6 +14,9 @@ std::string_view debugViewName(DebugView view) {
     case DebugView::BounceK: return "bounce";
     case DebugView::Direct: return "direct";
     case DebugView::Indirect: return "indirect";
+    case DebugView::Boxes: return "boxes";
+    case DebugView::Triangles: return "triangles";
+    case DebugView::Uv: return "uv";
     }
     return "?";
 }

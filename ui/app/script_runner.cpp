@@ -2,6 +2,7 @@
 
 #include "app/viewport_click.h"
 
+#include <algorithm>
 #include <string>
 
 namespace raylab::ui {
@@ -83,6 +84,21 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         return true;
     }
     if (c.name == "pick") return viewer.pick(float(num(0)), float(num(1))).has_value();
+    if (c.name == "focus") return viewer.focusAt(float(num(0)), float(num(1))).has_value();
+    if (c.name == "focus-mode") {
+        ui.focusOnClick = a[0] == "on";
+        return true;
+    }
+    if (c.name == "bvh-depth") {
+        viewer.overlays.bvhDepth = std::max(0, int(num(0)));
+        return true;
+    }
+    if (c.name == "heat-scale") {
+        viewer.heatScaleAuto = a[0] == "auto";
+        if (!viewer.heatScaleAuto) viewer.heatScale = float(num(0));
+        viewer.redisplay();
+        return true;
+    }
     if (c.name == "select") {
         const int i = int(num(0));
         if (i < -1 || i >= int(viewer.scene().spheres.size())) return false;
@@ -98,8 +114,9 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         return true;
     }
     if (c.name == "overlay") {
+        OverlaySettings& o = viewer.overlays;
         if (a[0] == "paths") viewer.inspection.overlay.show = a[1] == "on";
-        else (a[0] == "boxes" ? viewer.overlays.boxes : viewer.overlays.selectedOnly) = a[1] == "on";
+        else (a[0] == "boxes" ? o.boxes : a[0] == "selected" ? o.selectedOnly : a[0] == "bvh" ? o.bvh : o.meshBvh) = a[1] == "on";
         return true;
     }
     if (c.name == "inspect") {

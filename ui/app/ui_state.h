@@ -20,6 +20,7 @@ struct UiState {
     std::string exportPath = "raylab-render.exr";
     std::string pendingScreenshot; // set by a button, key or script; done after the frame is drawn
     bool pixelTooltip = true;      // value under the cursor
+    bool focusOnClick = false;     // click-to-focus armed (Camera panel): the next click focuses
     ImageRect image;               // where the viewport drew the traced image
     bool dragging = false;         // a mouse drag in the viewport is moving the camera
 };

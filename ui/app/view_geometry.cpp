@@ -83,11 +83,17 @@ std::optional<ImagePoint> projectPoint(const Scene& scene, int width, int height
 }
 
 std::vector<Segment> projectBox(const Scene& scene, int width, int height, const Box& box) {
-    const glsl::CameraBasis b = basisFor(scene, width, height);
     std::array<glm::vec3, 8> corners;
     for (int i = 0; i < 8; ++i)
-        corners[std::size_t(i)] = toCamera(b, glm::vec3(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
-                                                         i & 4 ? box.hi.z : box.lo.z));
+        corners[std::size_t(i)] = glm::vec3(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
+                                            i & 4 ? box.hi.z : box.lo.z);
+    return projectCorners(scene, width, height, corners);
+}
+
+std::vector<Segment> projectCorners(const Scene& scene, int width, int height, const std::array<glm::vec3, 8>& world) {
+    const glsl::CameraBasis b = basisFor(scene, width, height);
+    std::array<glm::vec3, 8> corners;
+    for (std::size_t i = 0; i < 8; ++i) corners[i] = toCamera(b, world[i]);
     std::vector<Segment> out;
     for (int i = 0; i < 8; ++i) {
         for (int axis = 1; axis < 8; axis <<= 1) {

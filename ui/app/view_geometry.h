@@ -41,5 +41,8 @@ std::optional<ImagePoint> projectPoint(const Scene& scene, int width, int height
 std::optional<Segment> projectSegment(const Scene& scene, int width, int height, glm::vec3 a, glm::vec3 b);
 // The 12 edges of a box as image segments, clipped to the part in front of the camera.
 std::vector<Segment> projectBox(const Scene& scene, int width, int height, const Box& box);
+// The same for a transformed box given by its corners: corner i is the (i & 1 ? max : min) x,
+// (i & 2 ? max : min) y, (i & 4 ? max : min) z corner of the box before the transform.
+std::vector<Segment> projectCorners(const Scene& scene, int width, int height, const std::array<glm::vec3, 8>& corners);
 
 } // namespace raylab::ui

@@ -1,5 +1,6 @@
 #include "app/viewer.h"
 
+#include "app/focus_pick.h"
 #include "app/view_geometry.h"
 #include "io/image_io.h"
 #include "scene/scene_loader.h"
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 namespace raylab::ui {
@@ -33,11 +35,14 @@ int toneMapOp(ToneMap t) {
 Viewer::Viewer(Log& log) : log_(log) {
     glCreateVertexArrays(1, &displayVao_);
     glCreateFramebuffers(1, &displayFramebuffer_);
+    glCreateBuffers(1, &heatMaxBuffer_);
+    glNamedBufferStorage(heatMaxBuffer_, 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
     reloadShaders();
 }
 
 Viewer::~Viewer() {
     glDeleteBuffers(1, &momentsBuffer_);
+    glDeleteBuffers(1, &heatMaxBuffer_);
     glDeleteTextures(1, &displayTexture_);
     glDeleteFramebuffers(1, &displayFramebuffer_);
     glDeleteVertexArrays(1, &displayVao_);
@@ -61,7 +66,7 @@ bool Viewer::openScene(const std::filesystem::path& file) {
     scenePath_ = file;
     watcher_.watch(file);
     selected = -1;
-    log_.info("opened " + file.string() + " (" + std::to_string(scene_.spheres.size()) + " objects, " +
+    log_.info("opened " + file.string() + " (" + std::to_string(scene_.spheres.size() + scene_.meshes.size()) + " objects, " +
               std::to_string(scene_.materials.size()) + " materials)");
     return true;
 }
@@ -118,6 +123,7 @@ bool Viewer::exportRender(const std::filesystem::path& file) {
 }
 
 Viewer::Variant Viewer::variantFor(DebugView view) {
+    if (heatMapView(view)) return kCounts;
     if (tracedDebugView(view)) return kViews;
     if (view == DebugView::NonFinite || view == DebugView::Noise) return kMoments;
     return kBeauty;
@@ -127,7 +133,8 @@ std::unique_ptr<PathTracer> Viewer::compileVariant(Variant v) {
     TracerOptions o;
     o.entry = TracerEntry::Fragment;   // bands need the scissor of the fragment entry
     if (v == kMoments) o.extraDefines.emplace_back("RAYLAB_DEBUG_MOMENTS", "1");
-    if (v == kViews) o.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
+    if (v == kViews || v == kCounts) o.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
+    if (v == kCounts) o.extraDefines.emplace_back("RAYLAB_COUNT_TRAVERSAL", "1");
     auto tracer = std::make_unique<PathTracer>(o);
     // The tracer compiles its program for a scene's features: do it here, so a shader error
     // surfaces while the previous tracer still runs.
@@ -260,6 +267,8 @@ void Viewer::restart() {
     }
     const float zero = 0.0f;
     glClearNamedBufferData(momentsBuffer_, GL_R32F, GL_RED, GL_FLOAT, &zero);
+    const GLuint none = 0;
+    glClearNamedBufferData(heatMaxBuffer_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     tracer_->program().set("uDebugView", int(view_));
     tracer_->program().set("uDebugBounce", bounce_);
     // texelFetch in the display pass needs a complete texture: one level, no mipmap filter.
@@ -326,6 +335,7 @@ void Viewer::update(double budgetSeconds) {
     if (!hasScene() || paused_ || converged()) return;
     const double start = now();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 16, momentsBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 17, heatMaxBuffer_);
     do {
         // The last pass before the target is shortened to land on it exactly (as raylab-render).
         const std::uint64_t left = std::uint64_t(scene_.render.spp) - tracer_->samplesPerPixel();
@@ -392,6 +402,7 @@ unsigned Viewer::displayTexture() {
     p.set("uNoiseScale", noiseScale);
     p.set("uSpp", float(tracer_->samplesPerPixel()));
     p.set("uHasMoments", variant_ == kMoments && tracer_->samplesPerPixel() > 0 ? 1 : 0);
+    p.set("uHeatScale", heatScaleInUse());
     glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
     glViewport(0, 0, displayWidth_, displayHeight_);
     glDisable(GL_BLEND);
@@ -434,8 +445,30 @@ std::optional<int> Viewer::pick(float x, float y) {
     return hit;
 }
 
+std::optional<float> Viewer::focusAt(float x, float y) {
+    if (!hasScene()) return std::nullopt;
+    const std::optional<float> d = focusDistanceAt(scene_, *geometry(), imageWidth(), imageHeight(), ImagePoint{x, y});
+    if (!d) {
+        log_.info("focus: nothing at (" + std::to_string(int(x)) + ", " + std::to_string(int(y)) + ") (sky)");
+        return std::nullopt;
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(*d));
+    if (!set("camera.focus_distance", text)) return std::nullopt;
+    log_.info(std::string("focus distance ") + text + " (the surface at image pixel (" + std::to_string(int(x)) + ", " +
+              std::to_string(int(y)) + "))");
+    return d;
+}
+
+float Viewer::heatScaleInUse() const {
+    if (!heatScaleAuto) return std::max(heatScale, 1e-3f);
+    GLuint max[2] = {0, 0};
+    if (variant_ == kCounts) glGetNamedBufferSubData(heatMaxBuffer_, 0, sizeof(max), max);
+    return float(std::max(1u, view_ == DebugView::Triangles ? max[1] : max[0]));
+}
+
 std::string Viewer::shaderVariant() const {
-    static const char* const extra[] = {"", " + moments", " + debug views"};
+    static const char* const extra[] = {"", " + moments", " + debug views", " + debug views + traversal counts"};
     return tracer_ ? tracer_->variantName() + extra[variant_] : "none (shader error)";
 }
 

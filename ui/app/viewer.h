@@ -34,6 +34,9 @@ struct ViewerStats {
 struct OverlaySettings {
     bool boxes = false;          // every object's bounding box
     bool selectedOnly = false;   // only the selected object's box
+    bool bvh = false;            // the top-level BVH's nodes at bvhDepth (app/bvh_overlay.h)
+    bool meshBvh = false;        // the meshes' BVH nodes at bvhDepth
+    int bvhDepth = 0;            // 0 = the root
 };
 
 class Viewer {
@@ -78,6 +81,11 @@ public:
     int debugBounce() const { return bounce_; }
     float depthScale = 20.0f;   // depth view: distance shown black
     float noiseScale = 0.2f;    // noise view: relative error shown red
+    bool heatScaleAuto = true;  // heat maps: red at the largest count of one camera ray so far
+    float heatScale = 64.0f;    // heat maps: the count shown red when not automatic
+    // The count the heat map shows as full red now (automatic: the largest of one ray since the
+    // restart, read from the tracer; at least 1).
+    float heatScaleInUse() const;
     OverlaySettings overlays;
     float cameraSpeed = 2.0f;   // world units per second for WASD/QE
     int selected = -1;          // object index, -1 = none
@@ -102,6 +110,11 @@ public:
     glm::vec4 pixelValue(int x, int y) const;
     // Select the object seen at image pixel (x, y); logs what was picked.
     std::optional<int> pick(float x, float y);
+    // Click-to-focus at image pixel (x, y): camera.focus_distance becomes the depth of the surface
+    // there along the view axis (app/focus_pick.h); logs it. nullopt (and no change) for the sky.
+    std::optional<float> focusAt(float x, float y);
+    // The geometry the tracer traverses (BVHs for the overlays, CPU traversal), or null.
+    const SceneGeometry* geometry() const { return tracer_ ? &tracer_->gpuScene().geometry() : nullptr; }
 
     // --- counters ----------------------------------------------------------------------------------
     const PathTracer* tracer() const { return tracer_; }
@@ -122,12 +135,13 @@ private:
     std::filesystem::path scenePath_;
     FileWatcher watcher_;
     // Tracer variants, compiled when first needed: the plain beauty tracer (what raylab-render runs),
-    // one that also keeps per-pixel moments (noise, NaN views), one that traces the debug views.
-    enum Variant { kBeauty = 0, kMoments = 1, kViews = 2 };
+    // one that also keeps per-pixel moments (noise, NaN views), one that traces the debug views,
+    // one that traces them counting traversal (heat maps).
+    enum Variant { kBeauty = 0, kMoments = 1, kViews = 2, kCounts = 3 };
     static Variant variantFor(DebugView view);
     std::unique_ptr<PathTracer> compileVariant(Variant v);   // throws ShaderError
     bool activateVariant(Variant v);
-    std::unique_ptr<PathTracer> tracers_[3];
+    std::unique_ptr<PathTracer> tracers_[4];
     PathTracer* tracer_ = nullptr;
     Variant variant_ = kBeauty;
     ShaderProgram display_;
@@ -142,6 +156,7 @@ private:
     double passWall_ = 0.0;
 
     unsigned momentsBuffer_ = 0;   // binding 16: per-pixel moments (debug_views.glsl)
+    unsigned heatMaxBuffer_ = 0;   // binding 17: largest box / triangle count of one ray
     unsigned displayTexture_ = 0;
     unsigned displayFramebuffer_ = 0;
     unsigned displayVao_ = 0;

@@ -1,35 +1,21 @@
 // Debug panel: the debug view, its scales, a colour legend, and the value under the cursor.
 #include "panels/panels.h"
+#include "panels/heat_legend.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace raylab::ui {
 namespace {
 
-// The display shader's heat map (shaders/entry/display.frag).
-ImU32 heat(float t) {
-    t = std::clamp(t, 0.0f, 1.0f);
-    const float r = std::clamp(2.0f * t - 0.5f, 0.0f, 1.0f);
-    const float g = std::clamp(t < 0.5f ? 2.0f * t : 2.0f - 2.0f * t + 0.5f, 0.0f, 1.0f);
-    const float b = std::clamp(1.0f - 2.0f * t, 0.0f, 1.0f);
-    return ImGui::GetColorU32(ImVec4(r, g, b, 1.0f));
-}
-
 void legend(const char* lo, const char* hi) {
-    ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 p = ImGui::GetCursorScreenPos();
     const float w = ImGui::GetContentRegionAvail().x, h = 12.0f;
-    const int n = 32;
-    for (int i = 0; i < n; ++i)
-        dl->AddRectFilled(ImVec2(p.x + w * float(i) / n, p.y), ImVec2(p.x + w * float(i + 1) / n, p.y + h),
-                          heat((float(i) + 0.5f) / n));
-    ImGui::Dummy(ImVec2(w, h));
-    ImGui::TextUnformatted(lo);
-    ImGui::SameLine(std::max(0.0f, w - ImGui::CalcTextSize(hi).x));
-    ImGui::TextUnformatted(hi);
+    drawHeatLegend(ImGui::GetWindowDrawList(), p, w, h, lo, hi);
+    ImGui::Dummy(ImVec2(w, h + ImGui::GetTextLineHeightWithSpacing()));
 }
 
 } // namespace
@@ -71,6 +57,24 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
         break;
     case DebugView::Indirect:
         ImGui::TextDisabled("bounces 2 and more: direct + indirect = beauty");
+        break;
+    case DebugView::Boxes:
+    case DebugView::Triangles: {
+        const bool boxes = viewer.debugView() == DebugView::Boxes;
+        ImGui::TextDisabled(boxes ? "BVH boxes tested by the camera ray (both levels)" : "triangles tested by the camera ray");
+        if (ImGui::Checkbox("auto scale", &viewer.heatScaleAuto)) viewer.redisplay();
+        if (!viewer.heatScaleAuto) {
+            ImGui::SameLine();
+            if (ImGui::DragFloat("red at", &viewer.heatScale, 0.5f, 1.0f, 1e6f, "%.0f tests")) viewer.redisplay();
+        }
+        const std::string hi = std::to_string(int(std::lround(viewer.heatScaleInUse()))) + (viewer.heatScaleAuto ? " (max of one ray)" : "");
+        legend("0", hi.c_str());
+        ImGui::TextDisabled("Mean over the pixel's samples. Up to 16 objects the top level is a plain loop:\n"
+                            "spheres cost no box tests there.");
+        break;
+    }
+    case DebugView::Uv:
+        ImGui::TextDisabled("(u, v) fractional part as red, green; spheres have uv only in\ntextured scenes");
         break;
     case DebugView::MaterialId:
         ImGui::TextDisabled("one colour per material (hover for its name)");

@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace raylab::ui {
 
 void drawOverlaysPanel(Viewer& viewer, UiState&) {
@@ -15,6 +17,11 @@ void drawOverlaysPanel(Viewer& viewer, UiState&) {
     ImGui::SameLine();
     ImGui::Checkbox("selected only", &viewer.overlays.selectedOnly);
     ImGui::TextDisabled("Boxes: yellow, the selected object's: cyan.");
+    ImGui::Checkbox("BVH level", &viewer.overlays.bvh);
+    ImGui::SameLine();
+    ImGui::Checkbox("mesh BVHs", &viewer.overlays.meshBvh);
+    ImGui::SliderInt("depth", &viewer.overlays.bvhDepth, 0, std::max(1, viewer.geometry() ? viewer.geometry()->maxDepth : 1));
+    ImGui::TextDisabled("BVH nodes at that depth (and shallower leaves): top level magenta, meshes orange.");
     ImGui::Separator();
     ImGui::Checkbox("inspect mode (a click inspects)", &viewer.inspection.clickInspects);
     ImGui::Checkbox("Inspector", &viewer.inspection.panelOpen);

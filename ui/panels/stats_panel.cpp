@@ -1,6 +1,8 @@
 // Stats panel: the live counters of the progressive render and of the UI frame.
 #include "panels/panels.h"
 
+#include "render/scene_stats.h"
+
 #include <imgui.h>
 
 namespace raylab::ui {
@@ -29,7 +31,15 @@ void drawStatsPanel(Viewer& viewer, UiState&) {
         ImGui::Text("elapsed %.1f s, ETA %.1f s", elapsed, viewer.converged() ? 0.0 : eta);
         ImGui::Text("NaN/Inf samples: %llu", (unsigned long long)t->nonFiniteSamples());
         ImGui::Text("shader: %s, compiled in %.2f s", viewer.shaderVariant().c_str(), s.shaderCompileSeconds);
-        ImGui::Text("scene: %zu spheres, %zu materials", viewer.scene().spheres.size(), viewer.scene().materials.size());
+        if (const SceneGeometry* g = viewer.geometry()) {   // render/scene_stats.h
+            const SceneStats st = sceneStats(viewer.scene(), *g);
+            ImGui::Text("objects %zu: %zu spheres, %zu meshes; %zu triangles", st.objects, st.spheres, st.instances,
+                        st.triangles);
+            ImGui::Text("BVH nodes: %zu top + %zu mesh, depth %d", st.topBvhNodes, st.meshBvhNodes, st.bvhDepth);
+            ImGui::Text("textures %zu (%s on the GPU), materials %zu", st.textures, formatBytes(st.textureBytes).c_str(),
+                        st.materials);
+            ImGui::Text("lights: %zu emissive spheres, %zu triangles", st.emissiveSpheres, st.emissiveTriangles);
+        }
         ImGui::Text("image %d x %d, restarts %llu", t->width(), t->height(), (unsigned long long)s.restarts);
     }
     ImGui::End();

@@ -2,12 +2,15 @@
 // value under the cursor, and the mouse and key camera controls.
 #include "panels/panels.h"
 
+#include "app/bvh_overlay.h"
 #include "app/camera_control.h"
+#include "panels/heat_legend.h"
 #include "app/view_geometry.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -23,11 +26,20 @@ ImVec2 toWindow(const ImageRect& r, int w, int h, ImagePoint p) {
 
 void drawOverlays(Viewer& viewer, const ImageRect& r) {
     const Scene& scene = viewer.scene();
-    if (!viewer.overlays.boxes && !viewer.overlays.selectedOnly) return;
+    const OverlaySettings& o = viewer.overlays;
+    if (!o.boxes && !o.selectedOnly && !o.bvh && !o.meshBvh) return;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.width, r.y + r.height), true);
     const int w = viewer.imageWidth(), h = viewer.imageHeight();
-    for (int i = 0; i < int(scene.spheres.size()); ++i) {
+    if (const SceneGeometry* g = viewer.geometry()) {
+        if (o.meshBvh)
+            for (const Segment& s : meshBvhSegments(scene, *g, w, h, o.bvhDepth))
+                dl->AddLine(toWindow(r, w, h, s.a), toWindow(r, w, h, s.b), IM_COL32(255, 140, 0, 255), 1.0f);
+        if (o.bvh)
+            for (const Segment& s : topLevelBvhSegments(scene, *g, w, h, o.bvhDepth))
+                dl->AddLine(toWindow(r, w, h, s.a), toWindow(r, w, h, s.b), IM_COL32(255, 0, 255, 255), 1.0f);
+    }
+    for (int i = 0; i < int(scene.spheres.size()) && (o.boxes || o.selectedOnly); ++i) {
         const bool sel = i == viewer.selected;
         if (viewer.overlays.selectedOnly && !sel) continue;
         const ImU32 colour = sel ? IM_COL32(0, 255, 255, 255) : IM_COL32(255, 255, 0, 255);
@@ -66,7 +78,12 @@ void tooltip(Viewer& viewer, const ImageRect& r) {
     const auto obj = pickObject(viewer.scene(), viewer.imageWidth(), viewer.imageHeight(), ImagePoint{fx, fy});
     ImGui::BeginTooltip();
     ImGui::Text("pixel (%d, %d)", x, y);
-    ImGui::Text("%s: %.4g %.4g %.4g", std::string(debugViewName(viewer.debugView())).c_str(), double(v.x), double(v.y), double(v.z));
+    if (heatMapView(viewer.debugView()))
+        ImGui::Text("camera ray: %.4g box tests, %.4g triangle tests (mean over the pixel's samples)", double(v.x), double(v.y));
+    else if (viewer.debugView() == DebugView::Uv)
+        ImGui::Text("uv (fractional part): %.4f %.4f", double(v.x), double(v.y));
+    else
+        ImGui::Text("%s: %.4g %.4g %.4g", std::string(debugViewName(viewer.debugView())).c_str(), double(v.x), double(v.y), double(v.z));
     if (obj) {
         const Sphere& s = viewer.scene().spheres[std::size_t(*obj)];
         ImGui::Text("object %d, material %d '%s'", *obj, s.material, viewer.scene().materials[std::size_t(s.material)].name.c_str());
@@ -119,6 +136,15 @@ void drawViewport(Viewer& viewer, UiState& ui) {
                                          ImVec2(0, 1), ImVec2(1, 0));
     drawOverlays(viewer, ui.image);
     drawPathOverlay(viewer, ui.image);
+    if (heatMapView(viewer.debugView())) {   // the heat map's scale, on the image's bottom-left
+        const std::string hi = std::to_string(int(std::lround(viewer.heatScaleInUse()))) +
+                               (viewer.debugView() == DebugView::Boxes ? " box tests" : " triangle tests");
+        const float bw = std::min(160.0f, w * 0.4f), th = ImGui::GetTextLineHeight();
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        const ImVec2 at(pos.x + 6.0f, pos.y + h - 14.0f - th);
+        dl->AddRectFilled(ImVec2(at.x - 3.0f, at.y - 3.0f), ImVec2(at.x + bw + 3.0f, at.y + 10.0f + th + 3.0f), IM_COL32(0, 0, 0, 160));
+        drawHeatLegend(dl, at, bw, 8.0f, "0", hi.c_str());
+    }
 
     const ImGuiIO& io = ImGui::GetIO();
     Camera& cam = viewer.scene().camera;
@@ -160,11 +186,11 @@ void drawWorkspace(Viewer& viewer, UiState& ui, float W, float H) {
     drawRenderPanel(viewer, ui);
     place(0, H * 0.62f, left, H * 0.38f);
     drawCameraPanel(viewer, ui);
-    place(left + mid, 0, right, H * 0.55f);
+    place(left + mid, 0, right, H * 0.40f);
     drawMaterialPanel(viewer, ui);
-    place(left + mid, H * 0.55f, right, H * 0.17f);
+    place(left + mid, H * 0.40f, right, H * 0.22f);
     drawOverlaysPanel(viewer, ui);
-    place(left + mid, H * 0.72f, right, H * 0.28f);
+    place(left + mid, H * 0.62f, right, H * 0.38f);
     drawDebugPanel(viewer, ui);
     place(left, H - bottom, mid * 0.5f, bottom);
     drawStatsPanel(viewer, ui);

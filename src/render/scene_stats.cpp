@@ -1,0 +1,67 @@
+#include "render/scene_stats.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace raylab {
+namespace {
+
+bool emissive(const Scene& scene, int material) {
+    if (material < 0 || material >= int(scene.materials.size())) return false;
+    const glm::vec3 r = scene.materials[std::size_t(material)].radiance();
+    return std::max({r.r, r.g, r.b}) > 0.0f;
+}
+
+} // namespace
+
+SceneStats sceneStats(const Scene& scene, const SceneGeometry& geometry) {
+    SceneStats s;
+    s.spheres = scene.spheres.size();
+    s.instances = scene.meshes.size();
+    s.objects = s.spheres + s.instances;
+    s.triangles = geometry.triangles.size();
+    s.vertices = geometry.vertices.size();
+    s.materials = scene.materials.size();
+    s.topBvhNodes = geometry.topNodes.size();
+    s.meshBvhNodes = geometry.meshNodes.size();
+    s.bvhDepth = geometry.maxDepth;
+    s.textures = scene.textures.size();
+    // The layout render/gpu_scene.cpp uploads: every level's texels as vec4 (float RGBA) in one
+    // buffer, and a table of uvec4: one header, one row per material, one per texture.
+    std::size_t texels = 0;
+    for (const Texture& t : scene.textures)
+        for (const MipLevel& l : t.levels) texels += l.texels.size();
+    if (!scene.textures.empty())
+        s.textureBytes = texels * sizeof(glm::vec4) + (1 + scene.materials.size() + scene.textures.size()) * sizeof(glm::uvec4);
+    for (const Sphere& sp : scene.spheres) s.emissiveSpheres += emissive(scene, sp.material) ? 1 : 0;
+    for (const Mesh& m : scene.meshes)
+        if (emissive(scene, m.material)) s.emissiveTriangles += m.triangles.size();
+    return s;
+}
+
+std::string formatBytes(std::size_t bytes) {
+    static const char* const units[] = {"B", "KiB", "MiB", "GiB"};
+    double v = double(bytes);
+    int u = 0;
+    while (v >= 1024.0 && u < 3) {
+        v /= 1024.0;
+        ++u;
+    }
+    char buf[32];
+    std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.1f %s", v, units[u]);
+    return buf;
+}
+
+std::string describeSceneStats(const SceneStats& s) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "scene: %zu objects (%zu spheres, %zu mesh instances), %zu triangles, %zu materials\n"
+                  "scene: BVH %zu top + %zu mesh nodes (depth %d); %zu textures, %s on the GPU; "
+                  "lights: %zu emissive spheres, %zu emissive triangles",
+                  s.objects, s.spheres, s.instances, s.triangles, s.materials, s.topBvhNodes, s.meshBvhNodes,
+                  s.bvhDepth, s.textures, formatBytes(s.textureBytes).c_str(), s.emissiveSpheres,
+                  s.emissiveTriangles);
+    return buf;
+}
+
+} // namespace raylab
