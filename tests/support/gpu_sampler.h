@@ -1,81 +1,10 @@
 #pragma once
-// Runs tests/support/bsdf_samples.comp: samples drawn by the real GLSL sampling code on the
-// current GL context, read back for statistics on the CPU.
-#include "gl/shader_program.h"
-#include "shaders/include/bsdf.glsl"
-
-#include <glad/gl.h>
-#include <glm/glm.hpp>
-
-#include <filesystem>
-#include <vector>
+// The GLSL sampler harness lives in src/selftest (the viewer's self-test runs it too).
+#include "selftest/gpu_sampler.h"
 
 namespace raylab::test {
 
-struct GpuSample {
-    glm::vec4 wiPdf;
-    glm::vec4 weightLobe;
-    glm::vec3 wi() const { return glm::vec3(wiPdf); }
-    float pdf() const { return wiPdf.w; }
-    glm::vec3 weight() const { return glm::vec3(weightLobe); }
-    int lobe() const { return int(weightLobe.w) % 8; }
-    bool delta() const { return int(weightLobe.w) >= 8; }
-};
-
-class GpuSampler {
-public:
-    GpuSampler()
-        : program_(ShaderProgram::computeFromFile(std::filesystem::path(RAYLAB_SOURCE_DIR) / "tests" / "support" /
-                                                  "bsdf_samples.comp")) {}
-
-    std::vector<GpuSample> cosineHemisphere(unsigned count, unsigned seed) const { return run(0, count, seed, {}, {}); }
-
-    std::vector<GpuSample> bsdf(const glsl::BsdfParams& m, glm::vec3 wo, unsigned count, unsigned seed) const {
-        return run(1, count, seed, m, wo);
-    }
-
-    // Directions towards a sphere (centre, radius) seen from the origin.
-    std::vector<GpuSample> sphereCone(glm::vec3 center, float radius, unsigned count, unsigned seed) const {
-        program_.set("uSphereCenter", center);
-        program_.set("uSphereRadius", radius);
-        return run(2, count, seed, {}, {});
-    }
-
-    // Directions from the sky map of a scene uploaded and bound by a GpuScene, with the rotation
-    // and mean weight uniforms the tracer would set.
-    std::vector<GpuSample> skyMap(float rotationRadians, float meanWeight, unsigned count, unsigned seed) const {
-        program_.set("uSkyRotation", rotationRadians);
-        program_.set("uEnvMeanWeight", meanWeight);
-        return run(3, count, seed, {}, {});
-    }
-
-private:
-    std::vector<GpuSample> run(int mode, unsigned count, unsigned seed, const glsl::BsdfParams& m,
-                               glm::vec3 wo) const {
-        GLuint buffer = 0;
-        glCreateBuffers(1, &buffer);
-        glNamedBufferStorage(buffer, GLsizeiptr(count * sizeof(GpuSample)), nullptr, GL_MAP_READ_BIT);
-        const ShaderProgram& p = program_;
-        p.set("uCount", count);
-        p.set("uSeed", seed);
-        p.set("uMode", mode);
-        p.set("uWo", wo);
-        p.set("uAlbedo", m.albedo);
-        p.set("uF0", m.f0);
-        p.set("uAlpha", m.alpha);
-        p.set("uTransmission", m.transmission);
-        p.set("uIor", m.ior);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, buffer);
-        glUseProgram(p.id());
-        glDispatchCompute((count + 63) / 64, 1, 1);
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        std::vector<GpuSample> out(count);
-        glGetNamedBufferSubData(buffer, 0, GLsizeiptr(count * sizeof(GpuSample)), out.data());
-        glDeleteBuffers(1, &buffer);
-        return out;
-    }
-
-    ShaderProgram program_;
-};
+using raylab::GpuSample;
+using raylab::GpuSampler;
 
 } // namespace raylab::test

@@ -1,0 +1,52 @@
+#include "selftest/gpu_sampler.h"
+
+#include <glad/gl.h>
+
+namespace raylab {
+
+GpuSampler::GpuSampler() : program_(ShaderProgram::compute("entry/bsdf_samples.comp")) {}
+
+std::vector<GpuSample> GpuSampler::cosineHemisphere(unsigned count, unsigned seed) const { return run(0, count, seed, {}, {}); }
+
+std::vector<GpuSample> GpuSampler::bsdf(const glsl::BsdfParams& m, glm::vec3 wo, unsigned count, unsigned seed) const {
+    return run(1, count, seed, m, wo);
+}
+
+std::vector<GpuSample> GpuSampler::sphereCone(glm::vec3 center, float radius, unsigned count, unsigned seed) const {
+    program_.set("uSphereCenter", center);
+    program_.set("uSphereRadius", radius);
+    return run(2, count, seed, {}, {});
+}
+
+std::vector<GpuSample> GpuSampler::skyMap(float rotationRadians, float meanWeight, unsigned count, unsigned seed) const {
+    program_.set("uSkyRotation", rotationRadians);
+    program_.set("uEnvMeanWeight", meanWeight);
+    return run(3, count, seed, {}, {});
+}
+
+std::vector<GpuSample> GpuSampler::run(int mode, unsigned count, unsigned seed, const glsl::BsdfParams& m,
+                                       glm::vec3 wo) const {
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    glNamedBufferStorage(buffer, GLsizeiptr(count * sizeof(GpuSample)), nullptr, GL_MAP_READ_BIT);
+    const ShaderProgram& p = program_;
+    p.set("uCount", count);
+    p.set("uSeed", seed);
+    p.set("uMode", mode);
+    p.set("uWo", wo);
+    p.set("uAlbedo", m.albedo);
+    p.set("uF0", m.f0);
+    p.set("uAlpha", m.alpha);
+    p.set("uTransmission", m.transmission);
+    p.set("uIor", m.ior);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, buffer);   // binding 7: sampler output (harness only)
+    glUseProgram(p.id());
+    glDispatchCompute((count + 63) / 64, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<GpuSample> out(count);
+    glGetNamedBufferSubData(buffer, 0, GLsizeiptr(count * sizeof(GpuSample)), out.data());
+    glDeleteBuffers(1, &buffer);
+    return out;
+}
+
+} // namespace raylab

@@ -1,0 +1,41 @@
+#pragma once
+// Runs shaders/entry/bsdf_samples.comp: samples drawn by the real GLSL sampling code on the
+// current GL context, read back for statistics on the CPU (the tests' χ² tests and the viewer's
+// self-test on the user's own driver). Needs a current GL 4.5 context.
+#include "gl/shader_program.h"
+#include "shaders/include/bsdf.glsl"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace raylab {
+
+struct GpuSample {
+    glm::vec4 wiPdf;
+    glm::vec4 weightLobe;
+    glm::vec3 wi() const { return glm::vec3(wiPdf); }
+    float pdf() const { return wiPdf.w; }
+    glm::vec3 weight() const { return glm::vec3(weightLobe); }
+    int lobe() const { return int(weightLobe.w) % 8; }
+    bool delta() const { return int(weightLobe.w) >= 8; }
+};
+
+class GpuSampler {
+public:
+    GpuSampler();   // throws ShaderError
+
+    std::vector<GpuSample> cosineHemisphere(unsigned count, unsigned seed) const;
+    std::vector<GpuSample> bsdf(const glsl::BsdfParams& m, glm::vec3 wo, unsigned count, unsigned seed) const;
+    // Directions towards a sphere (centre, radius) seen from the origin.
+    std::vector<GpuSample> sphereCone(glm::vec3 center, float radius, unsigned count, unsigned seed) const;
+    // Directions from the sky map of a scene uploaded and bound by a GpuScene, with the rotation
+    // and mean weight uniforms the tracer would set.
+    std::vector<GpuSample> skyMap(float rotationRadians, float meanWeight, unsigned count, unsigned seed) const;
+
+private:
+    std::vector<GpuSample> run(int mode, unsigned count, unsigned seed, const glsl::BsdfParams& m, glm::vec3 wo) const;
+    ShaderProgram program_;
+};
+
+} // namespace raylab
