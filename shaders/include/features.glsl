@@ -12,6 +12,7 @@
 //   RAYLAB_NEE                     next-event estimation (render.nee)
 //   RAYLAB_GENERAL_BSDF            GGX specular and glass (some material has f0 or transmission)
 //   RAYLAB_SKY_MAP                 an HDR environment image (sky.type map)
+//   RAYLAB_STAGE                   render.stage below full (teaching): RAYLAB_STAGE_* below; absent = full
 #ifndef RAYLAB_FEATURES_GLSL
 #define RAYLAB_FEATURES_GLSL
 #ifndef RAYLAB_FEATURES_SPECIALISED
@@ -23,5 +24,15 @@
 #define RAYLAB_NEE 1
 #define RAYLAB_GENERAL_BSDF 1
 #define RAYLAB_SKY_MAP 1
+#endif
+// The teaching stages of render.stage (scene.h RenderStage): each adds to the one before.
+#define RAYLAB_STAGE_PRIMARY 0    // flat albedo of the first hit
+#define RAYLAB_STAGE_EMISSION 1   // + emitters and sky seen directly
+#define RAYLAB_STAGE_LAMBERT 2    // + path tracing, every material Lambertian
+#define RAYLAB_STAGE_GGX 3        // + the general BSDF (the host also defines RAYLAB_GENERAL_BSDF)
+#define RAYLAB_STAGE_TEXTURES 4   // + textures (RAYLAB_FEATURE_TEXTURES)
+#define RAYLAB_STAGE_FULL 5       // + depth of field (RAYLAB_FEATURE_DOF)
+#ifndef RAYLAB_STAGE
+#define RAYLAB_STAGE RAYLAB_STAGE_FULL
 #endif
 #endif

@@ -47,6 +47,9 @@ float skyLightPdf(vec3 dir) { return skyByMap() ? environmentPdf(dir) : UNIFORM_
 #endif
 
 BsdfParams materialBsdf(GpuMaterial m) {
+#if RAYLAB_STAGE < RAYLAB_STAGE_GGX
+    return BsdfParams(m.albedo.rgb, vec3(0.0f), 1.0f, 0.0f, 1.0f);   // render.stage: Lambert only
+#endif
     return BsdfParams(m.albedo.rgb, m.f0Ior.rgb, ggxAlpha(m.albedo.a), m.emission.a, m.f0Ior.a);
 }
 
@@ -99,6 +102,9 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         Hit hit;
         ++rays;
         if (!intersectScene(ray, hit)) {
+#if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
+            break;   // render.stage primary: black sky, as the albedo view
+#endif
             vec3 dir = normalize(ray.dir);
             float w = 1.0f;
 #ifdef RAYLAB_NEE
@@ -111,6 +117,9 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             break;
         }
         GpuMaterial m = materials[hit.material];
+#if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
+        return m.albedo.rgb;   // render.stage primary: the flat albedo of the first hit
+#endif
         vec3 Le = m.emission.rgb;
         if (max(Le.r, max(Le.g, Le.b)) > 0.0f) {
             float w = 1.0f;
@@ -122,7 +131,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
 #endif
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
         }
-        if (bounce >= uMaxBounces) break;
+        if (bounce >= uMaxBounces || RAYLAB_STAGE == RAYLAB_STAGE_EMISSION) break;
         vec3 albedo = m.albedo.rgb;
 #ifdef RAYLAB_FEATURE_TEXTURES
         coneWidth += uCamPixelSpread * hit.t * length(ray.dir);

@@ -1,6 +1,7 @@
 #include "render/shader_variant.h"
 
 #include <algorithm>
+#include <string>
 
 namespace raylab {
 
@@ -19,6 +20,11 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     for (const Material& m : scene.materials)
         f.generalBsdf |= m.transmission > 0.0f || std::max({m.f0.r, m.f0.g, m.f0.b}) > 0.0f;
     f.skyMap = scene.sky.type == Sky::Type::Map;
+    // Teaching stages leave out what comes later: the variant has none of its code.
+    f.stage = scene.render.stage;
+    if (f.stage < RenderStage::Ggx) f.generalBsdf = false;
+    if (f.stage < RenderStage::Textures) f.textures = f.showMipLevel = false;
+    if (f.stage < RenderStage::Full) f.depthOfField = false;
     return f;
 }
 
@@ -36,6 +42,7 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     if (f.nee) d.emplace_back("RAYLAB_NEE", "1");
     if (f.generalBsdf) d.emplace_back("RAYLAB_GENERAL_BSDF", "1");
     if (f.skyMap) d.emplace_back("RAYLAB_SKY_MAP", "1");
+    if (f.stage != RenderStage::Full) d.emplace_back("RAYLAB_STAGE", std::to_string(int(f.stage)));
     return d;
 }
 
@@ -56,6 +63,8 @@ std::string featureName(const SceneFeatures& f) {
     add(f.nee, "nee");
     add(f.generalBsdf, "ggx+glass");
     add(f.skyMap, "sky-map");
+    static const char* const stages[] = {"stage-primary", "stage-emission", "stage-lambert", "stage-ggx", "stage-textures"};
+    add(f.stage != RenderStage::Full, stages[std::min(int(f.stage), 4)]);
     return name.empty() ? "none" : name;
 }
 

@@ -22,6 +22,7 @@ struct SceneFeatures {
     bool skyMap = true;          // sky.type map (RAYLAB_SKY_MAP)
     bool linearTopLevel = false; // at most kLinearTopLevelMax objects: no top-level BVH
     bool showMipLevel = false;   // debug view (render.show_mip_level), never part of "all features"
+    RenderStage stage = RenderStage::Full;   // render.stage below full: RAYLAB_STAGE (teaching)
     bool operator==(const SceneFeatures&) const = default;
 };
 
