@@ -22,6 +22,9 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"pause", {0, 0}},       {"resume", {0, 0}},      {"reset", {0, 0}},      {"wait-spp", {1, 1}},
         {"wait-frames", {1, 1}}, {"screenshot", {1, 1}},  {"export", {1, 1}},     {"save", {1, 1}},
         {"window", {2, 2}},      {"quit", {0, 0}},        {"debug-bounce", {1, 1}},
+        {"bounce-step", {1, 1}}, {"stage", {1, 1}},       {"split", {1, 1}},      {"split-a", {2, 2}},
+        {"split-b", {2, 2}},     {"split-divider", {1, 1}}, {"ui-scale", {1, 1}}, {"key", {1, 1}},
+        {"lesson", {1, 1}},      {"lesson-step", {1, 1}}, {"self-test", {0, 0}},
     };
     return table;
 }
@@ -30,6 +33,9 @@ const std::map<std::string, Arity, std::less<>>& commands() {
 constexpr std::array<std::string_view, 10> kDebugViews = {"beauty", "normals", "albedo",      "depth",
                                                           "material-id", "nan", "noise", "bounce",
                                                           "direct", "indirect"};
+
+// render.stage's names (scene/parameters.cpp; tests/script keeps the two in step).
+constexpr std::array<std::string_view, 6> kStages = {"primary", "emission", "lambert", "ggx", "textures", "full"};
 
 bool isNumber(const std::string& s) {
     double v = 0;
@@ -64,12 +70,12 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         if (!(words >> c.name)) continue;
         const auto it = commands().find(c.name);
         if (it == commands().end()) fail("unknown command '" + c.name + "'");
-        if (c.name == "set") {
+        if (c.name == "set" || c.name == "split-a" || c.name == "split-b") {
             std::string key, rest;
             words >> key;
             std::getline(words, rest);
             const auto first = rest.find_first_not_of(" \t");
-            if (key.empty() || first == std::string::npos) fail("set needs KEY VALUE");
+            if (key.empty() || first == std::string::npos) fail(c.name + " needs KEY VALUE");
             c.args = {key, rest.substr(first, rest.find_last_not_of(" \t\r") - first + 1)};
         } else {
             for (std::string w; words >> w;) c.args.push_back(w);
@@ -79,7 +85,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
             fail(c.name + " takes " + std::to_string(it->second.min) + " argument(s), got " + std::to_string(n));
         const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "scale" ||
                              c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window" ||
-                             c.name == "debug-bounce";
+                             c.name == "debug-bounce" || c.name == "split-divider" || c.name == "ui-scale" ||
+                             c.name == "lesson-step";
         if (numeric)
             for (const std::string& a : c.args)
                 if (!isNumber(a)) fail(c.name + ": '" + a + "' is not a number");
@@ -87,6 +94,14 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
             std::find(kDebugViews.begin(), kDebugViews.end(), c.args[0]) == kDebugViews.end())
             fail("unknown debug view '" + c.args[0] +
                  "' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect)");
+        if (c.name == "bounce-step" && c.args[0] != "next" && c.args[0] != "off" && !isNumber(c.args[0]))
+            fail("bounce-step takes a number, next or off");
+        if (c.name == "stage" && std::find(kStages.begin(), kStages.end(), c.args[0]) == kStages.end())
+            fail("unknown stage '" + c.args[0] + "' (primary, emission, lambert, ggx, textures, full)");
+        if (c.name == "split" && c.args[0] != "samples" && c.args[0] != "time" && c.args[0] != "off")
+            fail("split takes samples, time or off");
+        if (c.name == "key" && c.args[0] != "page-down" && c.args[0] != "page-up")
+            fail("key takes page-down or page-up");
         if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected") ||
                                     (c.args[1] != "on" && c.args[1] != "off")))
             fail("overlay takes boxes|selected on|off");

@@ -17,6 +17,22 @@ void drawDebugPanel(Viewer& viewer, UiState& ui);     // debug_panel.cpp
 void drawStatsPanel(Viewer& viewer, UiState& ui);     // stats_panel.cpp
 void drawLogPanel(Viewer& viewer, UiState& ui);       // log_panel.cpp
 
+// Teaching (issue 6): the Teach window (teach_panel.cpp) with the Lesson (lesson_panel.cpp),
+// Classroom (classroom_panel.cpp) and Self-test (self_test_panel.cpp) tabs.
+void drawTeachWindow(Viewer& viewer, UiState& ui, float windowHeight);
+void drawLessonPanel(Viewer& viewer, UiState& ui);
+void drawClassroomPanel(Viewer& viewer, UiState& ui);
+void drawSelfTestPanel(Viewer& viewer, UiState& ui);
+// Presenter keys (lesson_panel.cpp): PageDown/PageUp always, Right/Left/Space while the Teach
+// window has the keyboard. Call between NewFrame and drawing.
+void presenterKeys(UiState& ui);
+// The A/B split screen over the image (split_view.cpp); the viewport calls it after the image.
+void drawSplitView(UiState& ui, const ImageRect& image);
+// UI scale (ui_scale.cpp): register the imgui.ini entry before the first frame; apply once a frame
+// before NewFrame (Ctrl + = / - / 0 change it).
+void installUiScaleSettings(UiState& ui);
+void applyUiScale(UiState& ui);
+
 // All of the above, laid out for a window of the given size on first use (imgui.ini keeps what
 // the user changes afterwards).
 void drawWorkspace(Viewer& viewer, UiState& ui, float windowWidth, float windowHeight);

@@ -117,11 +117,12 @@ void drawViewport(Viewer& viewer, UiState& ui) {
     // GL textures start at the bottom row: flip v.
     ImGui::GetWindowDrawList()->AddImage(ImTextureID(std::uintptr_t(texture)), pos, ImVec2(pos.x + w, pos.y + h),
                                          ImVec2(0, 1), ImVec2(1, 0));
+    drawSplitView(ui, ui.image);   // classroom: A | B over the image
     drawOverlays(viewer, ui.image);
 
     const ImGuiIO& io = ImGui::GetIO();
     Camera& cam = viewer.scene().camera;
-    if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 3.0f) || ImGui::IsMouseDragging(ImGuiMouseButton_Right, 3.0f))) {
+    if (ImGui::IsItemActive() && !ui.draggingDivider && (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 3.0f) || ImGui::IsMouseDragging(ImGuiMouseButton_Right, 3.0f))) {
         ui.dragging = true;
         if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
             if (io.MouseDown[0]) orbitCamera(cam, io.MouseDelta.x * kRadiansPerPixel, io.MouseDelta.y * kRadiansPerPixel);
@@ -130,7 +131,7 @@ void drawViewport(Viewer& viewer, UiState& ui) {
         }
     }
     if (ImGui::IsItemDeactivated()) {
-        if (!ui.dragging && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) viewportClick(viewer, ui, io.MousePos.x, io.MousePos.y);
+        if (!ui.dragging && !ui.draggingDivider && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) viewportClick(viewer, ui, io.MousePos.x, io.MousePos.y);
         ui.dragging = false;
     }
     if (ImGui::IsItemHovered()) {
@@ -169,6 +170,7 @@ void drawWorkspace(Viewer& viewer, UiState& ui, float W, float H) {
     drawStatsPanel(viewer, ui);
     place(left + mid * 0.5f, H - bottom, mid * 0.5f, bottom);
     drawLogPanel(viewer, ui);
+    drawTeachWindow(viewer, ui, H);   // on top, when open (F1)
 }
 
 } // namespace raylab::ui
