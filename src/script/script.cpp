@@ -24,7 +24,7 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"window", {2, 2}},      {"quit", {0, 0}},        {"debug-bounce", {1, 1}},
         {"bounce-step", {1, 1}}, {"stage", {1, 1}},       {"split", {1, 1}},      {"split-a", {2, 2}},
         {"split-b", {2, 2}},     {"split-divider", {1, 1}}, {"ui-scale", {1, 1}}, {"key", {1, 1}},
-        {"lesson", {1, 1}},      {"lesson-step", {1, 1}}, {"self-test", {0, 0}},
+        {"lesson", {1, 1}},      {"lesson-step", {1, 1}}, {"self-test", {0, 0}},   {"teach", {1, 1}},
     };
     return table;
 }
@@ -100,6 +100,9 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
             fail("unknown stage '" + c.args[0] + "' (primary, emission, lambert, ggx, textures, full)");
         if (c.name == "split" && c.args[0] != "samples" && c.args[0] != "time" && c.args[0] != "off")
             fail("split takes samples, time or off");
+        if (c.name == "teach" && c.args[0] != "lesson" && c.args[0] != "classroom" && c.args[0] != "self-test" &&
+            c.args[0] != "off")
+            fail("teach takes lesson, classroom, self-test or off");
         if (c.name == "key" && c.args[0] != "page-down" && c.args[0] != "page-up")
             fail("key takes page-down or page-up");
         if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected") ||

@@ -30,6 +30,7 @@
 //   key NAME               press a presenter key: page-down, page-up (next / previous step)
 //   lesson PATH            open a lesson in the Lesson panel;  lesson-step N: apply its step N
 //   self-test              run the self-test (furnace, χ² of the GLSL samplers), log the verdicts
+//   teach TAB              show the Teach window at lesson, classroom or self-test; off hides it
 #include <filesystem>
 #include <span>
 #include <stdexcept>

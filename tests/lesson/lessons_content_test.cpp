@@ -136,7 +136,7 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
             } else {
                 // A lesson step sets state; it never ends the viewer or writes files.
                 for (const char* banned : {"quit", "screenshot", "export", "save", "window", "click", "ui-scale", "key",
-                                           "lesson", "lesson-step", "self-test"})
+                                           "lesson", "lesson-step", "self-test", "teach"})
                     EXPECT_NE(c.name, banned) << at << ": not for lessons";
             }
         }

@@ -83,9 +83,10 @@ TEST(Script, ParsesTheTeachingCommands) {
     const auto cmds = parseScript("bounce-step 2\nbounce-step next\nbounce-step off\nstage lambert\nsplit time\n"
                                   "split-a render.nee false\nsplit-b materials.red.albedo [1, 0, 0]\nsplit-divider 0.3\n"
                                   "ui-scale 1.5\nkey page-down\nkey page-up\nlesson lessons/01-rendering-equation.md\n"
-                                  "lesson-step 2\nself-test\nsplit off\n",
+                                  "lesson-step 2\nself-test\nsplit off\nteach classroom\n",
                                   "s.txt");
-    ASSERT_EQ(cmds.size(), 15u);
+    ASSERT_EQ(cmds.size(), 16u);
+    EXPECT_EQ(errorOf("teach stats\n"), "s.txt:1: error: teach takes lesson, classroom, self-test or off");
     EXPECT_EQ(cmds[6].args[1], "[1, 0, 0]");   // split-b takes the rest of the line, as set
     EXPECT_EQ(errorOf("bounce-step many\n"), "s.txt:1: error: bounce-step takes a number, next or off");
     EXPECT_EQ(errorOf("stage phong\n"), "s.txt:1: error: unknown stage 'phong' (primary, emission, lambert, ggx, textures, full)");

@@ -143,6 +143,11 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         return true;
     }
     if (c.name == "lesson-step") return ui.lesson.apply(int(num(0)) - 1);
+    if (c.name == "teach") {
+        ui.showTeach = a[0] != "off";
+        ui.teachTab = a[0] == "lesson" ? 0 : a[0] == "classroom" ? 1 : a[0] == "self-test" ? 2 : -1;
+        return true;
+    }
     if (c.name == "self-test") {
         ui.selfTest = runSelfTest();
         for (const SelfTestResult& r : ui.selfTest.results) viewer.log().info("self-test: " + describe(r));

@@ -85,7 +85,7 @@ void drawClassroomPanel(Viewer& viewer, UiState& ui) {
             for (int i = 0; i < 2; ++i)
                 ImGui::Text("%s: %llu spp, %.2f s traced", i ? "B" : "A", (unsigned long long)a.side(i).spp, a.side(i).seconds);
             if (ui.split.budget() == SplitBudget::EqualTime)
-                ImGui::Text("time apart %.3f s (bound: the longest pass, %.3f s)", a.imbalance(), a.bound(ui.split.rpp()));
+                ImGui::TextWrapped("time apart %.3f s (bound: the longest pass, %.3f s)", a.imbalance(), a.bound(ui.split.rpp()));
         }
     }
     if (ImGui::CollapsingHeader("Convergence", ImGuiTreeNodeFlags_DefaultOpen)) {

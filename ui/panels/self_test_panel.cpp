@@ -19,29 +19,23 @@ void drawSelfTestPanel(Viewer& viewer, UiState& ui) {
     ImGui::TextColored(r.pass() ? ImVec4(0.3f, 0.9f, 0.3f, 1.0f) : ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s  (%.1f s)",
                        r.pass() ? "ALL PASS" : "FAILED", r.seconds);
     ImGui::TextWrapped("driver: %s", r.driver.c_str());
-    if (ImGui::BeginTable("##selftest", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-        ImGui::TableSetupColumn("test");
-        ImGui::TableSetupColumn("verdict");
-        ImGui::TableSetupColumn("statistic");
-        ImGui::TableSetupColumn("dof");
-        ImGui::TableSetupColumn("p-value");
-        ImGui::TableSetupColumn("alpha / tol.");
+    // Two columns (test and verdict, then the numbers, wrapped): the panel is narrow.
+    if (ImGui::BeginTable("##selftest", 2, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+        ImGui::TableSetupColumn("test", ImGuiTableColumnFlags_WidthStretch, 0.45f);
+        ImGui::TableSetupColumn("numbers", ImGuiTableColumnFlags_WidthStretch, 0.55f);
         ImGui::TableHeadersRow();
         for (const SelfTestResult& t : r.results) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(t.name.c_str());
-            if (!t.detail.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.detail.c_str());
-            ImGui::TableNextColumn();
             ImGui::TextColored(t.pass ? ImVec4(0.3f, 0.9f, 0.3f, 1.0f) : ImVec4(1.0f, 0.35f, 0.3f, 1.0f), t.pass ? "pass" : "FAIL");
+            ImGui::SameLine();
+            ImGui::TextWrapped("%s", t.name.c_str());
             ImGui::TableNextColumn();
-            ImGui::Text("%.4g", t.statistic);
-            ImGui::TableNextColumn();
-            if (t.dof > 0) ImGui::Text("%d", t.dof);
-            ImGui::TableNextColumn();
-            if (t.kind == "chi2") ImGui::Text("%.3g", t.pValue);
-            ImGui::TableNextColumn();
-            ImGui::Text("%.2g", t.alpha);
+            if (t.kind == "chi2")
+                ImGui::TextWrapped("chi2 %.1f, dof %d, p %.3g (alpha %.2g)", t.statistic, t.dof, t.pValue, t.alpha);
+            else if (t.kind == "max deviation")
+                ImGui::TextWrapped("max |pixel - 0.5| %.2g (tolerance %.2g)", t.statistic, t.alpha);
+            if (!t.detail.empty()) ImGui::TextWrapped("%s", t.detail.c_str());
         }
         ImGui::EndTable();
     }
