@@ -282,6 +282,15 @@ int main(int argc, char** argv) {
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
+            // The script's `key`: down for one frame, up the next, as GLFW's key events would leave it.
+            static int scriptKey = -1;
+            if (scriptKey >= 0) io.KeysDown[scriptKey] = false;
+            scriptKey = -1;
+            if (!ui.pendingKey.empty()) {
+                scriptKey = ui.pendingKey == "page-up" ? GLFW_KEY_PAGE_UP : GLFW_KEY_PAGE_DOWN;
+                io.KeysDown[scriptKey] = true;
+                ui.pendingKey.clear();
+            }
             ImGui::NewFrame();
             applyUiScale(ui);
             presenterKeys(ui);

@@ -27,7 +27,7 @@
 //   split-a KEY VALUE      an override of side A (left); split-b KEY VALUE: of side B (right)
 //   split-divider X        where the sides meet, 0 to 1 of the image width
 //   ui-scale S             UI scale for projectors (0.5 to 4)
-//   key NAME               press a presenter key: page-down, page-up (next / previous step)
+//   key NAME               press a presenter key in the window: page-down, page-up (next / previous step)
 //   lesson PATH            open a lesson in the Lesson panel;  lesson-step N: apply its step N
 //   self-test              run the self-test (furnace, χ² of the GLSL samplers), log the verdicts
 //   teach TAB              show the Teach window at lesson, classroom or self-test; off hides it

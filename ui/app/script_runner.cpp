@@ -131,7 +131,11 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         ui.uiScale = std::clamp(float(num(0)), kMinUiScale, kMaxUiScale);
         return true;
     }
-    if (c.name == "key") return a[0] == "page-down" ? ui.lesson.next() : ui.lesson.previous();
+    if (c.name == "key") {   // pressed in the window loop, as a presenter's clicker would
+        ui.pendingKey = a[0];
+        waitFrames_ = 2;
+        return true;
+    }
     if (c.name == "lesson") {
         if (const auto error = ui.lesson.open(a[0])) {
             viewer.log().error(*error);

@@ -34,6 +34,7 @@ struct UiState {
     // Teaching and classroom mode (the Teach window: Lesson, Classroom and Self-test tabs).
     bool showTeach = false;        // the Teach window is open (F1, --lesson, the script's lesson)
     int teachTab = -1;             // a tab to bring to the front next frame (0 lesson, 1 classroom, 2 self-test)
+    std::string pendingKey;        // a key the script presses next frame ("page-down", "page-up")
     bool teachFocused = false;     // the Teach window had the keyboard last frame (arrows and Space step)
     LessonSession lesson;          // the Lesson panel's model; its step scripts run in the window loop
     bool stepScriptRunning = false;   // a lesson step's script is running (an automation script waits)
