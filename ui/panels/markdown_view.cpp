@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <string>
+#include <unordered_map>
 
 namespace raylab::ui {
 namespace {
@@ -183,6 +184,15 @@ void loadLessonFonts(float pixels) {
 
 ImFont* lessonFont() { return g_fonts.regular; }
 
-void drawMarkdown(std::string_view markdown) { drawMarkdown(parseMarkdownBlocks(markdown)); }
+void drawMarkdown(std::string_view markdown) {
+    // Lesson texts do not change between frames: parse each once (the cache is dropped when large).
+    static std::unordered_map<std::string, std::vector<MarkdownBlock>> cache;
+    auto it = cache.find(std::string(markdown));
+    if (it == cache.end()) {
+        if (cache.size() > 512) cache.clear();
+        it = cache.emplace(std::string(markdown), parseMarkdownBlocks(markdown)).first;
+    }
+    drawMarkdown(it->second);
+}
 
 } // namespace raylab::ui
