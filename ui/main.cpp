@@ -6,8 +6,11 @@
 #include "script/script.h"
 #include "app/script_runner.h"
 #include "app/viewer.h"
+#include "app/convergence_watch.h"
+#include "lesson/lesson.h"
 #include "glfw_context.h"
 #include "gl/shader_source.h"
+#include "panels/markdown_view.h"
 #include "panels/panels.h"
 
 #include <CLI/CLI.hpp>
@@ -139,6 +142,8 @@ int main(int argc, char** argv) {
     bool reportFrames = false;
     bool vsync = false;
     bool continuous = false;
+    std::string lessonPath;
+    float uiScale = 0.0f;
     app.add_option("scene", scenePath, "Scene file (default: scenes/default.json)");
     app.add_option("--script", scriptPath, "Automation script: one command a line (see src/script/script.h)");
     app.add_option("--script-timeout", scriptTimeout, "Seconds before a script that has not quit fails")->capture_default_str();
@@ -155,7 +160,19 @@ int main(int argc, char** argv) {
     app.add_flag("--continuous", continuous,
                  "Redraw the UI every frame even when idle (by default, with no input the UI redraws when a "
                  "pass completes or every 0.25 s, and tracing gets the time in between)");
+    app.add_option("--lesson", lessonPath, "Open a lesson (lessons/NN-topic.md) in the Teach window; its scene unless SCENE is given");
+    app.add_option("--ui-scale", uiScale, "UI scale for projectors (default: as last time, from the layout file)")
+        ->check(CLI::Range(double(kMinUiScale), double(kMaxUiScale)));
     CLI11_PARSE(app, argc, argv);
+    if (!lessonPath.empty()) {
+        try {
+            const Lesson lesson = loadLesson(lessonPath);   // fail before a window opens
+            if (scenePath.empty()) scenePath = lesson.scenePath.string();
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "raylab: %s\n", e.what());
+            return 1;
+        }
+    }
 
     std::optional<ScriptRunner> script;
     if (!scriptPath.empty()) {
@@ -188,6 +205,7 @@ int main(int argc, char** argv) {
     ImGui::StyleColorsDark();
     // Panels do not overlap in the default layout: opaque backgrounds cost llvmpipe less to draw.
     ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 1.0f;
+    loadLessonFonts();   // the Lesson panel's fonts (before the backend builds the font texture)
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 450 core");
 
@@ -197,6 +215,15 @@ int main(int argc, char** argv) {
     {
         Viewer viewer(log);
         UiState ui;
+        installUiScaleSettings(ui);
+        if (io.IniFilename) ImGui::LoadIniSettingsFromDisk(io.IniFilename);   // now, so --ui-scale wins
+        if (uiScale > 0.0f) ui.uiScale = uiScale;
+        if (!lessonPath.empty() && !ui.lesson.open(lessonPath)) {
+            ui.showTeach = true;
+            ui.teachTab = 0;
+            log.info("lesson " + ui.lesson.lesson().title);
+        }
+        std::optional<ScriptRunner> stepScript;   // the lesson step being applied
         // Scripted runs take screenshots: no tooltip where the (unmoved) pointer happens to rest.
         if (script) ui.pixelTooltip = false;
         if (!scenePath.empty()) {
@@ -222,15 +249,23 @@ int main(int argc, char** argv) {
             }
             windowEvents.drops.clear();
             viewer.pollFileChanges();
+            if (auto steps = ui.lesson.takeScript()) {
+                stepScript.emplace(std::move(*steps), scriptTimeout);
+                stepScript->markLessonStep();
+            }
+            if (stepScript && !stepScript->step(viewer, ui, host, glfwGetTime())) stepScript.reset();
+            ui.stepScriptRunning = stepScript.has_value();
             if (script && frame >= 2 && !script->step(viewer, ui, host, glfwGetTime())) {
                 exitCode = script->exitCode();
                 break;
             }
-            viewer.update(pacer.traceBudget());
+            if (ui.split.on()) ui.split.update(viewer, pacer.traceBudget());   // A/B split screen traces instead
+            else viewer.update(pacer.traceBudget());
+            watchConvergence(viewer, ui);
             // Idle (no input, nothing held, no script): keep tracing in short slices, watching for
             // input, until there is a new image to show or a quarter second has passed. The UI then
             // costs nothing while the user watches the image converge, and still answers at once.
-            const bool idle = !continuous && !script && !windowEvents.input && !anyInputHeld() && frame > 2;
+            const bool idle = !continuous && !script && !ui.split.on() && !stepScript && !windowEvents.input && !anyInputHeld() && frame > 2;
             windowEvents.input = false;
             double idleSeconds = 0.0;
             if (idle) {
@@ -247,12 +282,25 @@ int main(int argc, char** argv) {
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
+            // The script's `key`: down for one frame, up the next, as GLFW's key events would leave it.
+            static int scriptKey = -1;
+            if (scriptKey >= 0) io.KeysDown[scriptKey] = false;
+            scriptKey = -1;
+            if (!ui.pendingKey.empty()) {
+                scriptKey = ui.pendingKey == "page-up" ? GLFW_KEY_PAGE_UP : GLFW_KEY_PAGE_DOWN;
+                io.KeysDown[scriptKey] = true;
+                ui.pendingKey.clear();
+            }
             ImGui::NewFrame();
+            applyUiScale(ui);
+            presenterKeys(ui);
             if (!io.WantTextInput) {
                 if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) ui.pendingScreenshot = ui.screenshotPath;
                 if (ImGui::IsKeyPressed(GLFW_KEY_F9, false)) viewer.exportRender(ui.exportPath);
                 if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) viewer.reloadShaders();
-                if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) viewer.setPaused(!viewer.paused());
+                if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false) && !(ui.teachFocused && ui.lesson.isOpen()))
+                    viewer.setPaused(!viewer.paused());   // in the Teach window Space is the next step
+                if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) ui.showTeach = !ui.showTeach;
                 if (ImGui::IsKeyPressed(GLFW_KEY_R, false) && !io.KeyCtrl) viewer.resetAccumulation();
                 if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S, false) && !ui.savePath.empty()) viewer.saveScene(ui.savePath);
             }

@@ -1,7 +1,8 @@
 #version 450 core
-// Draws samples with the real GLSL sampling code and stores them for χ² tests on the CPU: the
-// test suite's (tests/shaders/gpu_sampling_test.cpp) and the viewer's BRDF explorer, both through
-// src/inspect/gpu_bsdf_sampler.h. One invocation per sample.
+// Sampler harness: draws samples with the real GLSL sampling code and stores them for χ² tests on
+// the CPU: the test suite's (tests/shaders/gpu_sampling_test.cpp), the viewer's self-test and its BRDF explorer
+// (host: src/selftest/gpu_sampler.cpp).
+// One invocation per sample.
 // Defines set by the host: none. Uniforms below; the output buffer is at binding 7 so that the
 // scene's bindings (sky map tables at 5 and 6) can stay bound.
 #include "random.glsl"

@@ -17,6 +17,7 @@
 //                                  albedo texture (with TEXTURES)
 //   RAYLAB_TEXTURE_EMISSION        some material has an emission texture (with TEXTURES)
 //   RAYLAB_TEXTURE_WRAP_MODES      some texture clamps or mirrors instead of repeating (glTF)
+//   RAYLAB_STAGE                   render.stage below full (teaching): RAYLAB_STAGE_* below; absent = full
 #ifndef RAYLAB_FEATURES_GLSL
 #define RAYLAB_FEATURES_GLSL
 #ifndef RAYLAB_FEATURES_SPECIALISED
@@ -32,5 +33,15 @@
 #define RAYLAB_TEXTURE_METALLIC 1
 #define RAYLAB_TEXTURE_EMISSION 1
 #define RAYLAB_TEXTURE_WRAP_MODES 1
+#endif
+// The teaching stages of render.stage (scene.h RenderStage): each adds to the one before.
+#define RAYLAB_STAGE_PRIMARY 0    // flat albedo of the first hit
+#define RAYLAB_STAGE_EMISSION 1   // + emitters and sky seen directly
+#define RAYLAB_STAGE_LAMBERT 2    // + path tracing, every material Lambertian
+#define RAYLAB_STAGE_GGX 3        // + the general BSDF (the host also defines RAYLAB_GENERAL_BSDF)
+#define RAYLAB_STAGE_TEXTURES 4   // + textures (RAYLAB_FEATURE_TEXTURES)
+#define RAYLAB_STAGE_FULL 5       // + depth of field (RAYLAB_FEATURE_DOF)
+#ifndef RAYLAB_STAGE
+#define RAYLAB_STAGE RAYLAB_STAGE_FULL
 #endif
 #endif

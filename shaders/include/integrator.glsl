@@ -51,6 +51,9 @@ float skyLightPdf(vec3 dir) { return skyByMap() ? environmentPdf(dir) : UNIFORM_
 #endif
 
 BsdfParams materialBsdf(GpuMaterial m) {
+#if RAYLAB_STAGE < RAYLAB_STAGE_GGX
+    return BsdfParams(m.albedo.rgb, vec3(0.0f), 1.0f, 0.0f, 1.0f);   // render.stage: Lambert only
+#endif
     return BsdfParams(m.albedo.rgb, m.f0Ior.rgb, ggxAlpha(m.albedo.a), m.emission.a, m.f0Ior.a);
 }
 
@@ -106,6 +109,9 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         bool found = intersectScene(ray, hit);
         RAYLAB_RECORD(recordSegment(bounce, ray, found, hit, beta));
         if (!found) {
+#if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
+            break;   // render.stage primary: black sky, as the albedo view
+#endif
             vec3 dir = normalize(ray.dir);
             float w = 1.0f;
 #ifdef RAYLAB_NEE
@@ -119,6 +125,9 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             break;
         }
         GpuMaterial m = materials[hit.material];
+#if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
+        return m.albedo.rgb;   // render.stage primary: the flat albedo of the first hit
+#endif
         vec3 Le = m.emission.rgb;
 #ifdef RAYLAB_FEATURE_TEXTURES
         coneWidth += coneSpread * hit.t * length(ray.dir);
@@ -135,7 +144,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
             RAYLAB_RECORD(recordEmission(bounce, Le, w));
         }
-        if (bounce >= uMaxBounces) break;
+        if (bounce >= uMaxBounces || RAYLAB_STAGE == RAYLAB_STAGE_EMISSION) break;
         BsdfParams bsdf = materialBsdf(m);
 #ifdef RAYLAB_FEATURE_TEXTURES
         applyMaterialTextures(hit, ray.dir, coneWidth, bsdf);

@@ -1,10 +1,10 @@
 #pragma once
 // The BRDF explorer's model (the viewer's panel is a thin view of it): for a material and an
 // incoming direction, the lobe f·cosθ in the plane of incidence, a hemisphere heat map, and a χ²
-// test of the real GLSL sampler's directions (inspect/gpu_bsdf_sampler.h) against the density
+// test of the real GLSL sampler's directions (selftest/gpu_sampler.h) against the density
 // bsdfPdf says it has. The maths is the tracer's own: shaders/include/bsdf.glsl, shared by C++
 // and GLSL. Everything here but the sampling itself runs without GL.
-#include "inspect/gpu_bsdf_sampler.h"
+#include "selftest/gpu_sampler.h"
 #include "scene/scene.h"
 #include "stats/chi_square.h"
 

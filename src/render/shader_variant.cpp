@@ -3,6 +3,7 @@
 #include "render/gpu_scene.h"
 
 #include <algorithm>
+#include <string>
 
 namespace raylab {
 
@@ -29,6 +30,11 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     for (const Texture& t : scene.textures)
         f.textureWrapModes |= t.wrapU != TextureWrap::Repeat || t.wrapV != TextureWrap::Repeat;
     f.skyMap = scene.sky.type == Sky::Type::Map;
+    // Teaching stages leave out what comes later: the variant has none of its code.
+    f.stage = scene.render.stage;
+    if (f.stage < RenderStage::Ggx) f.generalBsdf = false;
+    if (f.stage < RenderStage::Textures) f.textures = f.showMipLevel = false;
+    if (f.stage < RenderStage::Full) f.depthOfField = false;
     return f;
 }
 
@@ -50,6 +56,7 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     if (f.textures && f.metallicTextures) d.emplace_back("RAYLAB_TEXTURE_METALLIC", "1");
     if (f.textures && f.emissionTextures) d.emplace_back("RAYLAB_TEXTURE_EMISSION", "1");
     if (f.textures && f.textureWrapModes) d.emplace_back("RAYLAB_TEXTURE_WRAP_MODES", "1");
+    if (f.stage != RenderStage::Full) d.emplace_back("RAYLAB_STAGE", std::to_string(int(f.stage)));
     return d;
 }
 
@@ -74,6 +81,8 @@ std::string featureName(const SceneFeatures& f) {
     add(f.textures && f.metallicTextures, "metallic-tex");
     add(f.textures && f.emissionTextures, "emission-tex");
     add(f.textures && f.textureWrapModes, "wrap-modes");
+    static const char* const stages[] = {"stage-primary", "stage-emission", "stage-lambert", "stage-ggx", "stage-textures"};
+    add(f.stage != RenderStage::Full, stages[std::min(int(f.stage), 4)]);
     return name.empty() ? "none" : name;
 }
 

@@ -26,6 +26,7 @@ struct SceneFeatures {
     bool metallicTextures = true;    // metallic mixed per hit (RAYLAB_TEXTURE_METALLIC, gpu_scene.h)
     bool emissionTextures = true;    // some material has an emission_texture (RAYLAB_TEXTURE_EMISSION)
     bool textureWrapModes = true;    // some texture clamps or mirrors (RAYLAB_TEXTURE_WRAP_MODES)
+    RenderStage stage = RenderStage::Full;   // render.stage below full: RAYLAB_STAGE (teaching)
     bool operator==(const SceneFeatures&) const = default;
 };
 

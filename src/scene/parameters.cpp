@@ -150,6 +150,18 @@ std::vector<ParamSpec> buildSceneTable() {
              "1 = textured surfaces show the mip level chosen by ray cones (blue 0, green 4, red 8+).",
              G::RecompileShader),
         [](auto& s) -> auto& { return s.render.showMipLevel; });
+    add(spec("render.stage", T::Enum, kAny, kAny, "",
+             "Teaching: the renderer built up in stages: primary (flat albedo of the first hit), emission "
+             "(+ emitters and sky seen directly), lambert (+ path tracing, all materials Lambertian), ggx "
+             "(+ specular and glass), textures (+ image textures), full (+ depth of field).",
+             G::RecompileShader,
+             {{"primary", static_cast<int>(RenderStage::Primary)},
+              {"emission", static_cast<int>(RenderStage::Emission)},
+              {"lambert", static_cast<int>(RenderStage::Lambert)},
+              {"ggx", static_cast<int>(RenderStage::Ggx)},
+              {"textures", static_cast<int>(RenderStage::Textures)},
+              {"full", static_cast<int>(RenderStage::Full)}}),
+        [](auto& s) -> auto& { return s.render.stage; });
 
     // --- sky ---
     add(spec("sky.type", T::Enum, kAny, kAny, "",

@@ -25,6 +25,17 @@ struct Camera {
 // How the linear image is turned into display values for PNG (EXR stays linear).
 enum class ToneMap { Clamp, Reinhard, AcesFit };
 
+// The renderer built up stage by stage, as a class watches it grow (render.stage; each stage is its
+// own compiled variant, render/shader_variant.cpp). The numbers are RAYLAB_STAGE_* of features.glsl.
+enum class RenderStage {
+    Primary = 0,    // camera rays only: the flat albedo of the first hit (= the albedo view)
+    Emission = 1,   // + emitters and sky seen directly (= max_bounces 0)
+    Lambert = 2,    // + path tracing with every material Lambertian (albedo only)
+    Ggx = 3,        // + GGX specular, Fresnel and glass
+    Textures = 4,   // + image and normal textures
+    Full = 5,       // + depth of field: everything
+};
+
 struct RenderSettings {
     int width = 640;             // pixels
     int height = 360;            // pixels
@@ -39,6 +50,7 @@ struct RenderSettings {
     float exposure = 0.0f;       // EV stops: display value = linear × 2^exposure
     ToneMap toneMap = ToneMap::AcesFit;
     int showMipLevel = 0;        // 1: textured surfaces show their mip level as colours (debug)
+    RenderStage stage = RenderStage::Full;   // teaching: build the renderer up stage by stage
 };
 
 struct Material {

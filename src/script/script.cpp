@@ -24,6 +24,9 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"window", {2, 2}},      {"quit", {0, 0}},        {"debug-bounce", {1, 1}},
         {"inspect", {2, 3}},     {"inspect-export", {1, 1}}, {"explore", {1, 2}},  {"panel", {2, 2}},
         {"focus", {2, 2}},       {"focus-mode", {1, 1}},  {"bvh-depth", {1, 1}},  {"heat-scale", {1, 1}},
+        {"bounce-step", {1, 1}}, {"stage", {1, 1}},       {"split", {1, 1}},      {"split-a", {2, 2}},
+        {"split-b", {2, 2}},     {"split-divider", {1, 1}}, {"ui-scale", {1, 1}}, {"key", {1, 1}},
+        {"lesson", {1, 1}},      {"lesson-step", {1, 1}}, {"self-test", {0, 0}},   {"teach", {1, 1}},
     };
     return table;
 }
@@ -32,6 +35,9 @@ const std::map<std::string, Arity, std::less<>>& commands() {
 constexpr std::array<std::string_view, 13> kDebugViews = {"beauty", "normals", "albedo",      "depth",
                                                           "material-id", "nan", "noise", "bounce",
                                                           "direct", "indirect", "boxes", "triangles", "uv"};
+
+// render.stage's names (scene/parameters.cpp; tests/script keeps the two in step).
+constexpr std::array<std::string_view, 6> kStages = {"primary", "emission", "lambert", "ggx", "textures", "full"};
 
 bool isNumber(const std::string& s) {
     double v = 0;
@@ -66,12 +72,12 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         if (!(words >> c.name)) continue;
         const auto it = commands().find(c.name);
         if (it == commands().end()) fail("unknown command '" + c.name + "'");
-        if (c.name == "set") {
+        if (c.name == "set" || c.name == "split-a" || c.name == "split-b") {
             std::string key, rest;
             words >> key;
             std::getline(words, rest);
             const auto first = rest.find_first_not_of(" \t");
-            if (key.empty() || first == std::string::npos) fail("set needs KEY VALUE");
+            if (key.empty() || first == std::string::npos) fail(c.name + " needs KEY VALUE");
             c.args = {key, rest.substr(first, rest.find_last_not_of(" \t\r") - first + 1)};
         } else {
             for (std::string w; words >> w;) c.args.push_back(w);
@@ -82,7 +88,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "scale" ||
                              c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window" ||
                              c.name == "debug-bounce" || c.name == "inspect" || c.name == "explore" ||
-                             c.name == "focus" || c.name == "bvh-depth";
+                             c.name == "focus" || c.name == "bvh-depth" || c.name == "split-divider" ||
+                             c.name == "ui-scale" || c.name == "lesson-step";
         if (numeric)
             for (const std::string& a : c.args)
                 if (!isNumber(a)) fail(c.name + ": '" + a + "' is not a number");
@@ -101,6 +108,17 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         if (c.name == "focus-mode" && !onOff(c.args[0])) fail("focus-mode takes on|off");
         if (c.name == "heat-scale" && c.args[0] != "auto" && (!isNumber(c.args[0]) || std::stod(c.args[0]) <= 0.0))
             fail("heat-scale takes auto or a count > 0");
+        if (c.name == "bounce-step" && c.args[0] != "next" && c.args[0] != "off" && !isNumber(c.args[0]))
+            fail("bounce-step takes a number, next or off");
+        if (c.name == "stage" && std::find(kStages.begin(), kStages.end(), c.args[0]) == kStages.end())
+            fail("unknown stage '" + c.args[0] + "' (primary, emission, lambert, ggx, textures, full)");
+        if (c.name == "split" && c.args[0] != "samples" && c.args[0] != "time" && c.args[0] != "off")
+            fail("split takes samples, time or off");
+        if (c.name == "teach" && c.args[0] != "lesson" && c.args[0] != "classroom" && c.args[0] != "self-test" &&
+            c.args[0] != "off")
+            fail("teach takes lesson, classroom, self-test or off");
+        if (c.name == "key" && c.args[0] != "page-down" && c.args[0] != "page-up")
+            fail("key takes page-down or page-up");
         out.push_back(std::move(c));
     }
     return out;

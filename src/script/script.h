@@ -33,6 +33,17 @@
 //   save PATH              the scene as JSON
 //   window W H             resize the window
 //   quit                   exit with status 0 (non-zero if any command failed)
+// Teaching and classroom (the viewer's Teach window; lessons use the first five):
+//   bounce-step K|next|off trace with at most K bounces (bounce views 0..K); next: K + 1; off
+//   stage NAME             = set render.stage NAME (primary, emission, lambert, ggx, textures, full)
+//   split samples|time|off A/B split screen at equal samples or equal time; off clears it
+//   split-a KEY VALUE      an override of side A (left); split-b KEY VALUE: of side B (right)
+//   split-divider X        where the sides meet, 0 to 1 of the image width
+//   ui-scale S             UI scale for projectors (0.5 to 4)
+//   key NAME               press a presenter key in the window: page-down, page-up (next / previous step)
+//   lesson PATH            open a lesson in the Lesson panel;  lesson-step N: apply its step N
+//   self-test              run the self-test (furnace, χ² of the GLSL samplers), log the verdicts
+//   teach TAB              show the Teach window at lesson, classroom or self-test; off hides it
 #include <filesystem>
 #include <span>
 #include <stdexcept>

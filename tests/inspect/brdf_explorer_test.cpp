@@ -82,7 +82,7 @@ TEST(BrdfExplorer, PolarCurvePutsTheGgxPeakAtTheMirrorDirection) {
 using BrdfExplorerGpu = GlTest;
 
 TEST_F(BrdfExplorerGpu, ChiSquareVerdictPassesTheRealSamplerAndFailsAWrongPdf) {
-    GpuBsdfSampler sampler;
+    GpuSampler sampler;
     struct Case {
         const char* name;
         Material m;

@@ -86,8 +86,16 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
         fs::path scene = lesson.scenePath;   // a step starts on the lesson's scene
         bool elsewhere = false;              // the step opened an allow-listed scene
         std::vector<std::string> overrides;
-        for (const ScriptCommand& c : step.commands) {
+        for (ScriptCommand c : step.commands) {
             const std::string at = where(lesson, c);
+            if (c.name == "stage") c = ScriptCommand{c.line, "set", {"render.stage", c.args[0]}};   // its meaning
+            if ((c.name == "split-a" || c.name == "split-b") && !elsewhere) {
+                // A side's override applies to the step's scene as it stands (the split screen checks it).
+                std::vector<std::string> with = overrides;
+                with.push_back(c.args[0] + "=" + c.args[1]);
+                EXPECT_EQ(loadError(scene, with), "") << at << ": " << c.args[0] << " " << c.args[1];
+                continue;
+            }
             if (c.name == "open") {
                 const fs::path path = lesson.resolve(c.args[0]);
                 const std::string error = fs::exists(path) ? loadError(path, {}) : "missing";
@@ -127,7 +135,8 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
                 EXPECT_TRUE(v >= 0.125 && v <= 2) << at << ": scale is 0.125 to 2";
             } else {
                 // A lesson step sets state; it never ends the viewer or writes files.
-                for (const char* banned : {"quit", "screenshot", "export", "save", "window", "click"})
+                for (const char* banned : {"quit", "screenshot", "export", "save", "window", "click", "ui-scale", "key",
+                                           "lesson", "lesson-step", "self-test", "teach"})
                     EXPECT_NE(c.name, banned) << at << ": not for lessons";
             }
         }

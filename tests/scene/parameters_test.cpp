@@ -23,7 +23,7 @@ TEST(SceneParameters, TableCoversTheSectionsWithUniqueKeys) {
     }
     const std::set<std::string> expected = {
         "camera.position", "camera.look_at", "camera.up",        "camera.fov",      "camera.aperture",
-        "camera.focus_distance", "render.show_mip_level",                          "render.width",
+        "camera.focus_distance", "render.show_mip_level", "render.stage",           "render.width",
         "render.height",   "render.rpp",     "render.spp",       "render.time",     "render.max_bounces",
         "render.rr_depth", "render.seed",    "render.nee",       "render.mis",      "render.exposure",  "render.tone_map", "sky.type",
         "sky.color",       "sky.top",        "sky.bottom",       "sky.rotation",    "sky.strength"};

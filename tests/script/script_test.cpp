@@ -101,3 +101,21 @@ TEST(Script, MissingFileIsAnError) {
         EXPECT_EQ(std::string(e.what()), "/nonexistent/raylab.script: error: cannot open the script");
     }
 }
+
+TEST(Script, ParsesTheTeachingCommands) {
+    const auto cmds = parseScript("bounce-step 2\nbounce-step next\nbounce-step off\nstage lambert\nsplit time\n"
+                                  "split-a render.nee false\nsplit-b materials.red.albedo [1, 0, 0]\nsplit-divider 0.3\n"
+                                  "ui-scale 1.5\nkey page-down\nkey page-up\nlesson lessons/01-rendering-equation.md\n"
+                                  "lesson-step 2\nself-test\nsplit off\nteach classroom\n",
+                                  "s.txt");
+    ASSERT_EQ(cmds.size(), 16u);
+    EXPECT_EQ(errorOf("teach stats\n"), "s.txt:1: error: teach takes lesson, classroom, self-test or off");
+    EXPECT_EQ(cmds[6].args[1], "[1, 0, 0]");   // split-b takes the rest of the line, as set
+    EXPECT_EQ(errorOf("bounce-step many\n"), "s.txt:1: error: bounce-step takes a number, next or off");
+    EXPECT_EQ(errorOf("stage phong\n"), "s.txt:1: error: unknown stage 'phong' (primary, emission, lambert, ggx, textures, full)");
+    EXPECT_EQ(errorOf("split halves\n"), "s.txt:1: error: split takes samples, time or off");
+    EXPECT_EQ(errorOf("split-a render.nee\n"), "s.txt:1: error: split-a needs KEY VALUE");
+    EXPECT_EQ(errorOf("key escape\n"), "s.txt:1: error: key takes page-down or page-up");
+    EXPECT_EQ(errorOf("ui-scale big\n"), "s.txt:1: error: ui-scale: 'big' is not a number");
+    EXPECT_EQ(errorOf("lesson-step two\n"), "s.txt:1: error: lesson-step: 'two' is not a number");
+}

@@ -45,7 +45,7 @@ void BrdfExplorerModel::update(Viewer& viewer) {
     map_ = hemisphereMap(p, w, 48);
     pdfMap_ = hemisphereMap(p, w, 48, MapQuantity::Pdf);
     try {
-        if (!sampler_) sampler_ = std::make_unique<GpuBsdfSampler>();
+        if (!sampler_) sampler_ = std::make_unique<GpuSampler>();
         samples_ = sampler_->bsdf(p, w, unsigned(sampleCount), seed);
         test_ = testSampler(p, w, samples_, cells, alpha);
         error_.clear();

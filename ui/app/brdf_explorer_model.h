@@ -4,7 +4,7 @@
 // hemisphere maps, the GPU sampler's directions and their χ² verdict. Recomputed only when an
 // input changes. No ImGui here.
 #include "inspect/brdf_explorer.h"
-#include "inspect/gpu_bsdf_sampler.h"
+#include "selftest/gpu_sampler.h"
 #include "inspect/path_record.h"
 
 #include <memory>
@@ -45,7 +45,7 @@ public:
     const std::string& error() const { return error_; }
 
 private:
-    std::unique_ptr<GpuBsdfSampler> sampler_;
+    std::unique_ptr<GpuSampler> sampler_;
     glsl::BsdfParams params_{};
     std::vector<float> key_;   // the inputs the results are for
     std::vector<PolarPoint> polar_;

@@ -20,6 +20,7 @@ bool ScriptRunner::step(Viewer& viewer, UiState& ui, ScriptHost& host, double no
         finished_ = true;
         return false;
     }
+    if (!lessonStep_ && (ui.stepScriptRunning || ui.lesson.hasPending())) return true;   // a lesson step first
     // Waits of the previous command.
     if (!ui.pendingScreenshot.empty()) return true;
     if (waitFrames_ > 0) {
@@ -27,8 +28,10 @@ bool ScriptRunner::step(Viewer& viewer, UiState& ui, ScriptHost& host, double no
         return true;
     }
     if (waitSpp_ >= 0) {
-        const bool reached = !viewer.hasScene() || viewer.converged() ||
-                             (viewer.tracer() && viewer.tracer()->samplesPerPixel() >= std::uint64_t(waitSpp_));
+        const bool reached = !viewer.hasScene() ||
+                             (ui.split.on() ? ui.split.converged() || ui.split.minSpp() >= std::uint64_t(waitSpp_)
+                                            : viewer.converged() || (viewer.tracer() && viewer.tracer()->samplesPerPixel() >=
+                                                                                            std::uint64_t(waitSpp_)));
         if (!reached) return true;
         waitSpp_ = -1;
         waitFrames_ = 1;   // one more frame so the display shows the samples
@@ -143,13 +146,64 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         viewer.setResolutionScale(float(num(0)));
         return true;
     }
+    if (c.name == "bounce-step") {
+        viewer.setBounceStep(a[0] == "off" ? 0 : a[0] == "next" ? viewer.bounceStep() + 1 : int(num(0)));
+        return true;
+    }
+    if (c.name == "stage") return viewer.set("render.stage", a[0]);
+    if (c.name == "split") {
+        if (a[0] == "off") ui.split.stop();
+        else ui.split.start(a[0] == "time" ? SplitBudget::EqualTime : SplitBudget::EqualSamples);
+        return true;
+    }
+    if (c.name == "split-a" || c.name == "split-b") {
+        const std::string error = ui.split.addOverride(c.name == "split-a" ? 0 : 1, a[0], a[1], viewer.scene());
+        if (!error.empty()) viewer.log().error(c.name + ": " + error);
+        return error.empty();
+    }
+    if (c.name == "split-divider") {
+        ui.split.divider = std::clamp(float(num(0)), 0.0f, 1.0f);
+        return true;
+    }
+    if (c.name == "ui-scale") {
+        ui.uiScale = std::clamp(float(num(0)), kMinUiScale, kMaxUiScale);
+        return true;
+    }
+    if (c.name == "key") {   // pressed in the window loop, as a presenter's clicker would
+        ui.pendingKey = a[0];
+        waitFrames_ = 2;
+        return true;
+    }
+    if (c.name == "lesson") {
+        if (const auto error = ui.lesson.open(a[0])) {
+            viewer.log().error(*error);
+            return false;
+        }
+        ui.showTeach = true;
+        ui.teachTab = 0;
+        viewer.log().info("lesson " + ui.lesson.lesson().title);
+        return true;
+    }
+    if (c.name == "lesson-step") return ui.lesson.apply(int(num(0)) - 1);
+    if (c.name == "teach") {
+        ui.showTeach = a[0] != "off";
+        ui.teachTab = a[0] == "lesson" ? 0 : a[0] == "classroom" ? 1 : a[0] == "self-test" ? 2 : -1;
+        return true;
+    }
+    if (c.name == "self-test") {
+        ui.selfTest = runSelfTest();
+        for (const SelfTestResult& r : ui.selfTest.results) viewer.log().info("self-test: " + describe(r));
+        viewer.log().info("self-test: " + std::string(ui.selfTest.pass() ? "all pass" : "FAILED") + " in " +
+                          std::to_string(ui.selfTest.seconds) + " s on " + ui.selfTest.driver);
+        return ui.selfTest.pass();
+    }
     if (c.name == "pause") viewer.setPaused(true);
     else if (c.name == "resume") viewer.setPaused(false);
     else if (c.name == "reset") viewer.resetAccumulation();
-    else if (c.name == "wait-spp") waitSpp_ = (long long)num(0);
+    else if (c.name == "wait-spp") waitSpp_ = std::min((long long)num(0), maxWaitSpp_);
     else if (c.name == "wait-frames") waitFrames_ = int(num(0));
     else if (c.name == "screenshot") ui.pendingScreenshot = a[0];
-    else if (c.name == "export") return viewer.exportRender(a[0]);
+    else if (c.name == "export") return ui.split.on() ? ui.split.exportComposite(a[0], viewer) : viewer.exportRender(a[0]);
     else if (c.name == "save") return viewer.saveScene(a[0]);
     else if (c.name == "window") host.resizeWindow(int(num(0)), int(num(1)));
     return true;

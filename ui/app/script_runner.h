@@ -24,6 +24,11 @@ public:
     // (quit, end of file or timeout); exitCode() then says how.
     bool step(Viewer& viewer, UiState& ui, ScriptHost& host, double now);
     int exitCode() const { return exitCode_; }
+    // Tests: wait-spp N waits for at most this many samples (lesson steps ask for up to 1024).
+    void limitWaits(long long maxSpp) { maxWaitSpp_ = maxSpp; }
+    // This runner runs a lesson step's script: it does not wait for lesson steps (as an automation
+    // script does, so its next command sees the step's state).
+    void markLessonStep() { lessonStep_ = true; }
     int failures() const { return failures_; }
 
 private:
@@ -34,6 +39,8 @@ private:
     double start_ = -1.0;
     int waitFrames_ = 0;
     long long waitSpp_ = -1;
+    long long maxWaitSpp_ = (1LL << 62);
+    bool lessonStep_ = false;
     int failures_ = 0;
     int exitCode_ = 0;
     bool finished_ = false;

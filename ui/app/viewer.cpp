@@ -191,6 +191,13 @@ bool Viewer::set(const std::string& key, const std::string& valueText) {
         const Trigger t = setParam(next, key, valueText);
         return applyScene(std::move(next), t);
     } catch (const std::exception& e) {
+        // Keys the live-edit table lacks but the file format has (a material's texture files): the
+        // scene as it stands, re-read by the loader with the key as an override (as --set).
+        try {
+            Scene reloaded = parseScene(sceneToJson(scene_).dump(), scenePath_.string(), {key + "=" + valueText});
+            return applyScene(std::move(reloaded), Trigger::ReloadScene);
+        } catch (const std::exception&) {
+        }
         lastError_ = std::string("set ") + e.what();
         log_.error(lastError_);
         return false;
@@ -230,10 +237,7 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
     // ResetAccumulation and ReloadScene: the upload is cheap for these scenes, and setScene
     // reallocates only when the image size changed.
     try {
-        Scene traced = next;
-        traced.render.width = std::max(1, int(std::lround(float(next.render.width) * scale_)));
-        traced.render.height = std::max(1, int(std::lround(float(next.render.height) * scale_)));
-        tracer_->setScene(traced);
+        tracer_->setScene(traced(next));
     } catch (const std::exception& e) {
         lastError_ = e.what();
         log_.error(lastError_);
@@ -247,11 +251,13 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
     return true;
 }
 
-Scene Viewer::tracedScene() const {
-    Scene traced = scene_;
-    traced.render.width = imageWidth();
-    traced.render.height = imageHeight();
-    return traced;
+Scene Viewer::tracedScene() const { return traced(scene_); }
+
+Scene Viewer::traced(Scene s) const {
+    s.render.width = std::max(1, int(std::lround(float(s.render.width) * scale_)));
+    s.render.height = std::max(1, int(std::lround(float(s.render.height) * scale_)));
+    if (bounceStep_ > 0) s.render.maxBounces = std::min(s.render.maxBounces, bounceStep_);
+    return s;
 }
 
 void Viewer::restart() {
@@ -319,6 +325,13 @@ void Viewer::setDebugBounce(int k) {
     if (k == bounce_) return;
     bounce_ = k;
     if (view_ == DebugView::BounceK) resetAccumulation();
+}
+
+void Viewer::setBounceStep(int k) {
+    k = std::max(k, 0);
+    if (k == bounceStep_) return;
+    bounceStep_ = k;
+    if (hasScene()) applyScene(scene_, Trigger::ResetAccumulation);
 }
 
 int Viewer::imageWidth() const { return std::max(1, int(std::lround(float(scene_.render.width) * scale_))); }

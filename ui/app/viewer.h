@@ -79,6 +79,11 @@ public:
     DebugView debugView() const { return view_; }
     void setDebugBounce(int k);   // the k of DebugView::BounceK, >= 0
     int debugBounce() const { return bounce_; }
+    // Bounce stepping (teaching): k > 0 traces with render.max_bounces capped at k, so the image
+    // holds the light of bounce views 0..k (0: emitters and sky seen directly); 0 = off. The
+    // scene's own max_bounces is untouched (saving the scene does not save the cap).
+    void setBounceStep(int k);
+    int bounceStep() const { return bounceStep_; }
     float depthScale = 20.0f;   // depth view: distance shown black
     float noiseScale = 0.2f;    // noise view: relative error shown red
     bool heatScaleAuto = true;  // heat maps: red at the largest count of one camera ray so far
@@ -126,6 +131,7 @@ public:
     Log& log() { return log_; }
 
 private:
+    Scene traced(Scene s) const;  // s with the resolution scale and the bounce step applied
     bool applyScene(Scene next, Trigger trigger);
     void restart();   // after a scene upload: clear moments, restart the slicer
     void ensureDisplayTargets();
@@ -151,6 +157,7 @@ private:
     float scale_ = 1.0f;
     DebugView view_ = DebugView::Beauty;
     int bounce_ = 1;
+    int bounceStep_ = 0;
     ViewerStats stats_;
     std::string lastError_;
     double passWall_ = 0.0;

@@ -34,6 +34,9 @@ void drawRenderPanel(Viewer& viewer, UiState& ui) {
         ImGui::SameLine();
         if (ImGui::Button("Export (F9)")) viewer.exportRender(ui.exportPath);
         if (ImGui::Button("Reload shaders (F5)")) viewer.reloadShaders();
+        ImGui::SameLine();
+        if (ImGui::Button("Teach (F1)")) ui.showTeach = !ui.showTeach;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lessons, classroom mode (split screen, stepping, stages) and the self-test");
     }
     if (!viewer.hasScene()) {
         ImGui::TextWrapped("No scene: open one above.");

@@ -134,6 +134,7 @@ void drawViewport(Viewer& viewer, UiState& ui) {
     // GL textures start at the bottom row: flip v.
     ImGui::GetWindowDrawList()->AddImage(ImTextureID(std::uintptr_t(texture)), pos, ImVec2(pos.x + w, pos.y + h),
                                          ImVec2(0, 1), ImVec2(1, 0));
+    drawSplitView(ui, ui.image);   // classroom: A | B over the image
     drawOverlays(viewer, ui.image);
     drawPathOverlay(viewer, ui.image);
     if (heatMapView(viewer.debugView())) {   // the heat map's scale, on the image's bottom-left
@@ -148,7 +149,7 @@ void drawViewport(Viewer& viewer, UiState& ui) {
 
     const ImGuiIO& io = ImGui::GetIO();
     Camera& cam = viewer.scene().camera;
-    if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 3.0f) || ImGui::IsMouseDragging(ImGuiMouseButton_Right, 3.0f))) {
+    if (ImGui::IsItemActive() && !ui.draggingDivider && (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 3.0f) || ImGui::IsMouseDragging(ImGuiMouseButton_Right, 3.0f))) {
         ui.dragging = true;
         if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
             if (io.MouseDown[0]) orbitCamera(cam, io.MouseDelta.x * kRadiansPerPixel, io.MouseDelta.y * kRadiansPerPixel);
@@ -157,7 +158,7 @@ void drawViewport(Viewer& viewer, UiState& ui) {
         }
     }
     if (ImGui::IsItemDeactivated()) {
-        if (!ui.dragging && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) viewportClick(viewer, ui, io.MousePos.x, io.MousePos.y);
+        if (!ui.dragging && !ui.draggingDivider && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) viewportClick(viewer, ui, io.MousePos.x, io.MousePos.y);
         ui.dragging = false;
     }
     if (ImGui::IsItemHovered()) {
@@ -201,6 +202,7 @@ void drawWorkspace(Viewer& viewer, UiState& ui, float W, float H) {
     drawInspectorPanel(viewer, ui);
     place(left + mid * 0.3f, H * 0.3f, mid * 0.7f, H * 0.5f);
     drawBrdfExplorerPanel(viewer, ui);
+    drawTeachWindow(viewer, ui, H);   // on top, when open (F1)
 }
 
 } // namespace raylab::ui

@@ -1,8 +1,7 @@
 #pragma once
-// Runs shaders/entry/bsdf_samples.comp: directions drawn by the real GLSL sampling code (the
-// BSDF's, the cosine hemisphere's, a sphere light's cone, the sky map's) on the current GL
-// context, read back for statistics on the CPU. The test suite's χ² tests and the viewer's BRDF
-// explorer use it. Needs a current GL 4.5 context.
+// Runs shaders/entry/bsdf_samples.comp: samples drawn by the real GLSL sampling code on the
+// current GL context, read back for statistics on the CPU (the tests' χ² tests and the viewer's
+// self-test on the user's own driver). Needs a current GL 4.5 context.
 #include "gl/shader_program.h"
 #include "shaders/include/bsdf.glsl"
 
@@ -12,10 +11,9 @@
 
 namespace raylab {
 
-// One sample as the shader stores it.
 struct GpuSample {
-    glm::vec4 wiPdf;        // direction (local frame), pdf
-    glm::vec4 weightLobe;   // weight, lobe + 8 when delta
+    glm::vec4 wiPdf;
+    glm::vec4 weightLobe;
     glm::vec3 wi() const { return glm::vec3(wiPdf); }
     float pdf() const { return wiPdf.w; }
     glm::vec3 weight() const { return glm::vec3(weightLobe); }
@@ -23,12 +21,11 @@ struct GpuSample {
     bool delta() const { return int(weightLobe.w) >= 8; }
 };
 
-class GpuBsdfSampler {
+class GpuSampler {
 public:
-    GpuBsdfSampler();
+    GpuSampler();   // throws ShaderError
 
     std::vector<GpuSample> cosineHemisphere(unsigned count, unsigned seed) const;
-    // bsdfSample(m, wo, ·) with wo in the local frame (+z the normal).
     std::vector<GpuSample> bsdf(const glsl::BsdfParams& m, glm::vec3 wo, unsigned count, unsigned seed) const;
     // Directions towards a sphere (centre, radius) seen from the origin.
     std::vector<GpuSample> sphereCone(glm::vec3 center, float radius, unsigned count, unsigned seed) const;

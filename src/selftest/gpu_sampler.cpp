@@ -1,36 +1,31 @@
-#include "inspect/gpu_bsdf_sampler.h"
+#include "selftest/gpu_sampler.h"
 
 #include <glad/gl.h>
 
 namespace raylab {
 
-GpuBsdfSampler::GpuBsdfSampler() : program_(ShaderProgram::compute("entry/bsdf_samples.comp")) {}
+GpuSampler::GpuSampler() : program_(ShaderProgram::compute("entry/bsdf_samples.comp")) {}
 
-std::vector<GpuSample> GpuBsdfSampler::cosineHemisphere(unsigned count, unsigned seed) const {
-    return run(0, count, seed, {}, {});
-}
+std::vector<GpuSample> GpuSampler::cosineHemisphere(unsigned count, unsigned seed) const { return run(0, count, seed, {}, {}); }
 
-std::vector<GpuSample> GpuBsdfSampler::bsdf(const glsl::BsdfParams& m, glm::vec3 wo, unsigned count,
-                                            unsigned seed) const {
+std::vector<GpuSample> GpuSampler::bsdf(const glsl::BsdfParams& m, glm::vec3 wo, unsigned count, unsigned seed) const {
     return run(1, count, seed, m, wo);
 }
 
-std::vector<GpuSample> GpuBsdfSampler::sphereCone(glm::vec3 center, float radius, unsigned count,
-                                                  unsigned seed) const {
+std::vector<GpuSample> GpuSampler::sphereCone(glm::vec3 center, float radius, unsigned count, unsigned seed) const {
     program_.set("uSphereCenter", center);
     program_.set("uSphereRadius", radius);
     return run(2, count, seed, {}, {});
 }
 
-std::vector<GpuSample> GpuBsdfSampler::skyMap(float rotationRadians, float meanWeight, unsigned count,
-                                              unsigned seed) const {
+std::vector<GpuSample> GpuSampler::skyMap(float rotationRadians, float meanWeight, unsigned count, unsigned seed) const {
     program_.set("uSkyRotation", rotationRadians);
     program_.set("uEnvMeanWeight", meanWeight);
     return run(3, count, seed, {}, {});
 }
 
-std::vector<GpuSample> GpuBsdfSampler::run(int mode, unsigned count, unsigned seed, const glsl::BsdfParams& m,
-                                           glm::vec3 wo) const {
+std::vector<GpuSample> GpuSampler::run(int mode, unsigned count, unsigned seed, const glsl::BsdfParams& m,
+                                       glm::vec3 wo) const {
     GLuint buffer = 0;
     glCreateBuffers(1, &buffer);
     glNamedBufferStorage(buffer, GLsizeiptr(count * sizeof(GpuSample)), nullptr, GL_MAP_READ_BIT);
@@ -44,7 +39,7 @@ std::vector<GpuSample> GpuBsdfSampler::run(int mode, unsigned count, unsigned se
     p.set("uAlpha", m.alpha);
     p.set("uTransmission", m.transmission);
     p.set("uIor", m.ior);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, buffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, buffer);   // binding 7: sampler output (harness only)
     glUseProgram(p.id());
     glDispatchCompute((count + 63) / 64, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

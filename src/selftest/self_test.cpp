@@ -1,0 +1,157 @@
+#include "selftest/self_test.h"
+
+#include "render/path_tracer.h"
+#include "render/progressive_render.h"
+#include "selftest/gpu_sampler.h"
+#include "selftest/lobe_grid.h"
+#include "stats/chi_square.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace raylab {
+namespace {
+
+// The white furnace (scenes/furnace.json): a Lambertian sphere of albedo 0.5 filling the image in
+// a constant sky of radiance 1. A convex sphere cannot see itself, so every camera path scatters
+// once and reaches the sky: every pixel is 0.5 exactly, at any sample count.
+SelfTestResult furnace() {
+    Scene s;
+    s.camera.position = glm::vec3(0, 0, 1.5f);
+    s.camera.lookAt = glm::vec3(0.0f);
+    s.camera.up = glm::vec3(0, 1, 0);
+    s.camera.fovY = 20.0f;
+    s.render.width = 32;
+    s.render.height = 32;
+    s.render.spp = 8;
+    s.render.maxBounces = 8;
+    s.render.rrDepth = 100;
+    s.sky.type = Sky::Type::Constant;
+    s.sky.color = glm::vec3(1.0f);
+    Material grey;
+    grey.name = "grey";
+    grey.albedo = glm::vec3(0.5f);
+    s.materials.push_back(grey);
+    s.spheres.push_back(Sphere{});
+    SelfTestResult r;
+    r.name = "furnace";
+    r.kind = "max deviation";
+    r.alpha = 1e-5;   // float rounding of one scatter; a wrong weight is off by far more
+    PathTracer tracer;
+    tracer.setScene(s);
+    renderProgressively(tracer, s.render);
+    const Image image = tracer.readImage();
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const double v = image.rgba[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4 + std::size_t(c)];
+                r.statistic = std::max(r.statistic, std::isfinite(v) ? std::abs(v - 0.5) : 1e30);
+            }
+    r.pass = r.statistic <= r.alpha;
+    r.pValue = r.pass ? 1.0 : 0.0;
+    if (!r.pass) r.detail = "pixels differ from 0.5: the Lambert weight or the sky is wrong";
+    return r;
+}
+
+SelfTestResult chiSquare(const std::string& name, const std::vector<GpuSample>& samples, const LobeGrid& grid,
+                         const std::function<double(glm::vec3)>& pdf, double alpha) {
+    SelfTestResult r;
+    r.name = name;
+    r.kind = "chi2";
+    r.alpha = alpha;
+    std::vector<double> observed(std::size_t(grid.na * grid.nphi), 0.0);
+    int nonFinite = 0;
+    for (const GpuSample& s : samples) {
+        const glm::vec3 w = s.wi();
+        if (!std::isfinite(w.x + w.y + w.z + s.pdf())) {
+            ++nonFinite;
+            continue;
+        }
+        if (s.lobe() == glsl::LOBE_NONE) continue;
+        observed[std::size_t(grid.cell(w))] += 1.0;
+    }
+    const std::vector<double> expected = grid.expected(pdf, double(samples.size()), observed);
+    const stats::ChiSquareResult chi = stats::chiSquareTest(observed, expected);
+    r.statistic = chi.statistic;
+    r.dof = chi.dof;
+    r.pValue = chi.pValue;
+    r.pass = chi.pValue > alpha && !chi.sampleInZeroCell && nonFinite == 0;
+    if (chi.sampleInZeroCell) r.detail = "samples where the pdf is 0";
+    else if (nonFinite > 0) r.detail = std::to_string(nonFinite) + " non-finite samples";
+    else if (!r.pass) r.detail = "the samples do not follow the pdf";
+    return r;
+}
+
+SelfTestResult failed(const std::string& name, const std::string& why) {
+    SelfTestResult r;
+    r.name = name;
+    r.detail = why;
+    return r;
+}
+
+} // namespace
+
+bool SelfTestReport::pass() const {
+    return !results.empty() && std::all_of(results.begin(), results.end(), [](const SelfTestResult& r) { return r.pass; });
+}
+
+SelfTestReport runSelfTest(const SelfTestOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    SelfTestReport report;
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    report.driver = std::string(renderer ? renderer : "?") + " / " + (version ? version : "?");
+    try {
+        report.results.push_back(furnace());
+    } catch (const std::exception& e) {
+        report.results.push_back(failed("furnace", e.what()));
+    }
+    const auto cosinePdf = o.cosinePdf ? o.cosinePdf : [](float c) { return double(glsl::pdfCosineHemisphere(c)); };
+    const auto bsdfPdf = o.bsdfPdf ? o.bsdfPdf : [](const glsl::BsdfParams& m, glm::vec3 wo, glm::vec3 wi) {
+        return double(glsl::bsdfPdf(m, wo, wi));
+    };
+    // GGX visible normals of a metal (F = 1, no diffuse lobe) at (α, cos θo).
+    const float cases[][2] = {{0.1f, 0.9f}, {0.3f, 0.5f}, {0.6f, 0.2f}};
+    const int tests = 1 + int(std::size(cases));
+    const double alpha = stats::sidak(o.alpha, tests);
+    try {
+        const GpuSampler sampler;
+        const LobeGrid hemisphere(glm::vec3(0, 0, 1), 1.0f);
+        report.results.push_back(chiSquare("cosine hemisphere", sampler.cosineHemisphere(o.samples, o.seed), hemisphere,
+                                           [&](glm::vec3 w) { return cosinePdf(w.z); }, alpha));
+        unsigned seed = o.seed;
+        for (const auto& c : cases) {
+            const float a = c[0], mu = c[1];
+            const glsl::BsdfParams m(glm::vec3(0.0f), glm::vec3(1.0f), a, 0.0f, 1.5f);
+            const glm::vec3 wo(std::sqrt(1.0f - mu * mu), 0.0f, mu);
+            const LobeGrid grid(glm::normalize(glm::vec3(-wo.x, -wo.y, wo.z)), std::max(2.0f * a, 0.02f));
+            char name[64];
+            std::snprintf(name, sizeof name, "GGX VNDF a=%.1f cos=%.1f", double(a), double(mu));
+            report.results.push_back(chiSquare(name, sampler.bsdf(m, wo, o.samples, ++seed), grid,
+                                               [&](glm::vec3 w) { return bsdfPdf(m, wo, w); }, alpha));
+        }
+    } catch (const std::exception& e) {
+        report.results.push_back(failed("GLSL samplers", e.what()));
+    }
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+std::string describe(const SelfTestResult& r) {
+    char line[512];
+    if (r.kind == "chi2")
+        std::snprintf(line, sizeof line, "%s %s: chi2 %.1f, dof %d, p %.3g (alpha %.2g)%s%s", r.pass ? "PASS" : "FAIL",
+                      r.name.c_str(), r.statistic, r.dof, r.pValue, r.alpha, r.detail.empty() ? "" : ": ", r.detail.c_str());
+    else if (r.kind == "max deviation")
+        std::snprintf(line, sizeof line, "%s %s: max deviation %.2g (tolerance %.2g)%s%s", r.pass ? "PASS" : "FAIL",
+                      r.name.c_str(), r.statistic, r.alpha, r.detail.empty() ? "" : ": ", r.detail.c_str());
+    else
+        std::snprintf(line, sizeof line, "%s %s: %s", r.pass ? "PASS" : "FAIL", r.name.c_str(), r.detail.c_str());
+    return line;
+}
+
+} // namespace raylab

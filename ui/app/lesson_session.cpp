@@ -1,0 +1,68 @@
+#include "app/lesson_session.h"
+
+#include <algorithm>
+
+namespace raylab::ui {
+
+void LessonSession::scan(const std::filesystem::path& dir) {
+    entries_.clear();
+    std::error_code ec;
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+        if (e.path().extension() == ".md" && e.path().filename() != "README.md") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+        LessonEntry entry{f, "", ""};
+        try {
+            entry.title = loadLesson(f).title;
+        } catch (const std::exception& e) {
+            entry.error = e.what();
+        }
+        entries_.push_back(std::move(entry));
+    }
+}
+
+std::optional<std::string> LessonSession::open(const std::filesystem::path& file) {
+    try {
+        lesson_ = loadLesson(file);
+    } catch (const std::exception& e) {
+        return std::string(e.what());
+    }
+    current_ = -1;
+    pending_.reset();
+    return std::nullopt;
+}
+
+bool LessonSession::apply(int i) {
+    if (!isOpen() || i < 0 || i >= stepCount()) return false;
+    current_ = i;
+    const LessonStep& step = lesson_->steps[std::size_t(i)];
+    std::vector<ScriptCommand> script = lessonResetCommands();
+    if (step.commands.empty() || step.commands.front().name != "open")
+        script.push_back(ScriptCommand{step.line, "open", {lesson_->scenePath.string()}});
+    for (ScriptCommand c : step.commands) {
+        if (c.name == "open") c.args[0] = lesson_->resolve(c.args[0]).string();
+        script.push_back(std::move(c));
+    }
+    pending_ = std::move(script);
+    return true;
+}
+
+std::optional<std::vector<ScriptCommand>> LessonSession::takeScript() {
+    auto s = std::move(pending_);
+    pending_.reset();
+    return s;
+}
+
+std::filesystem::path defaultLessonDirectory(const std::filesystem::path& shaderDirectory) {
+    std::error_code ec;
+    const std::filesystem::path dir = std::filesystem::weakly_canonical(shaderDirectory / ".." / "lessons", ec);
+    return ec ? shaderDirectory / ".." / "lessons" : dir;
+}
+
+std::vector<ScriptCommand> lessonResetCommands() {
+    return parseScript("debug-view beauty\noverlay boxes off\noverlay selected off\nbounce-step off\nsplit off\nresume\n",
+                       "lesson reset");
+}
+
+} // namespace raylab::ui

@@ -1,0 +1,222 @@
+#include "app/split_screen.h"
+
+#include "io/image_io.h"
+#include "scene/parameters.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace raylab::ui {
+namespace {
+
+double now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+int toneMapOp(ToneMap t) {   // entry/display.frag's uToneMap (as the viewer sets it)
+    switch (t) {
+    case ToneMap::Clamp: return 0;
+    case ToneMap::Reinhard: return 1;
+    case ToneMap::AcesFit: return 2;
+    }
+    return 2;
+}
+
+} // namespace
+
+SplitScreen::~SplitScreen() {
+    if (displayTextures_[0]) glDeleteTextures(2, displayTextures_);
+    if (framebuffers_[0]) glDeleteFramebuffers(2, framebuffers_);
+    if (vao_) glDeleteVertexArrays(1, &vao_);
+}
+
+void SplitScreen::start(SplitBudget budget) {
+    on_ = true;
+    dirty_ = true;
+    accounting_.reset(budget);
+}
+
+void SplitScreen::stop() {
+    on_ = false;
+    overrides_[0].clear();
+    overrides_[1].clear();
+    tracers_[0].reset();
+    tracers_[1].reset();
+    dirty_ = true;
+}
+
+std::string SplitScreen::addOverride(int side, const std::string& key, const std::string& value, const Scene& scene) {
+    Scene probe = scene;
+    try {
+        for (const auto& [k, v] : overrides_[side & 1]) setParam(probe, k, v);
+        setParam(probe, key, value);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    auto& list = overrides_[side & 1];
+    std::erase_if(list, [&](const auto& kv) { return kv.first == key; });
+    list.emplace_back(key, value);
+    dirty_ = true;
+    return "";
+}
+
+std::string SplitScreen::label(int side) const {
+    std::string s = side == 0 ? "A" : "B";
+    const auto& list = overrides_[side & 1];
+    if (list.empty()) return s + ": as the scene";
+    s += ":";
+    for (const auto& [k, v] : list) s += " " + k + "=" + v;
+    return s;
+}
+
+void SplitScreen::rebuild(Viewer& viewer) {
+    seenRestarts_ = viewer.stats().restarts;
+    dirty_ = false;
+    accounting_.reset(accounting_.budget());
+    lastError_.clear();
+    for (int i = 0; i < 2; ++i) {
+        series_[i].reset();
+        shownSpp_[i] = ~std::uint64_t(0);
+        Scene s = viewer.scene();
+        s.render.width = viewer.imageWidth();
+        s.render.height = viewer.imageHeight();
+        try {
+            for (const auto& [k, v] : overrides_[i]) setParam(s, k, v);
+            const bool fresh = !tracers_[i];
+            if (fresh) tracers_[i] = std::make_unique<PathTracer>();
+            const std::string variant = tracers_[i]->variantName();
+            tracers_[i]->setScene(s);
+            if (fresh || tracers_[i]->variantName() != variant) {
+                // A new program's first draw includes the driver's compile (llvmpipe JITs it):
+                // one untimed pass, dropped, so equal time compares tracing, not compiling.
+                tracers_[i]->renderPass(1);
+                tracers_[i]->reset();
+            }
+        } catch (const std::exception& e) {
+            lastError_ = e.what();
+            viewer.log().error("split screen: " + lastError_);
+            tracers_[i].reset();
+        }
+        scenes_[i] = std::move(s);
+    }
+}
+
+bool SplitScreen::converged() const {
+    if (!on_) return true;
+    if (dirty_) return false;   // not traced yet: update() builds both sides first
+    if (!tracers_[0] || !tracers_[1]) return true;   // a side failed to build (the error is logged)
+    const auto done = [&](int i) { return accounting_.side(i).spp >= std::uint64_t(scenes_[i].render.spp); };
+    if (accounting_.budget() == SplitBudget::EqualSamples) return done(0) && done(1);
+    const double t = scenes_[0].render.timeBudget;
+    return done(0) || done(1) || (t > 0.0 && accounting_.side(0).seconds >= t && accounting_.side(1).seconds >= t);
+}
+
+std::uint64_t SplitScreen::minSpp() const { return std::min(accounting_.side(0).spp, accounting_.side(1).spp); }
+
+void SplitScreen::update(Viewer& viewer, double budgetSeconds) {
+    if (!on_ || !viewer.hasScene()) return;
+    if (dirty_ || viewer.stats().restarts != seenRestarts_) rebuild(viewer);
+    if (viewer.paused()) return;
+    const double start = now();
+    while (!converged()) {
+        const int side = accounting_.next();
+        // Equal samples: the last pass lands on the target exactly (as raylab-render's).
+        const std::uint64_t left = std::uint64_t(scenes_[side].render.spp) - accounting_.side(side).spp;
+        const int rpp = int(std::min<std::uint64_t>(std::uint64_t(scenes_[side].render.rpp), left));
+        const double t0 = now();
+        tracers_[side]->renderPass(rpp);   // waits for the pass
+        accounting_.record(side, rpp, now() - t0);
+        const SplitSide& s = accounting_.side(side);
+        if (series_[side].wants(s.spp)) series_[side].add(s.spp, s.seconds, tracers_[side]->readImage());
+        if (now() - start >= budgetSeconds) break;
+    }
+}
+
+unsigned SplitScreen::displayTexture(int side) {
+    side &= 1;
+    if (!on_ || !tracers_[side]) return 0;
+    const int w = tracers_[side]->width(), h = tracers_[side]->height();
+    if (!vao_) {
+        display_ = ShaderProgram::graphics("entry/fullscreen.vert", "entry/display.frag");
+        glCreateVertexArrays(1, &vao_);
+        glCreateFramebuffers(2, framebuffers_);
+    }
+    if (!displayTextures_[0] || w != displayW_ || h != displayH_) {
+        if (displayTextures_[0]) glDeleteTextures(2, displayTextures_);
+        glCreateTextures(GL_TEXTURE_2D, 2, displayTextures_);
+        for (int i = 0; i < 2; ++i) {
+            glTextureStorage2D(displayTextures_[i], 1, GL_RGBA8, w, h);
+            glTextureParameteri(displayTextures_[i], GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTextureParameteri(displayTextures_[i], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            glNamedFramebufferTexture(framebuffers_[i], GL_COLOR_ATTACHMENT0, displayTextures_[i], 0);
+            shownSpp_[i] = ~std::uint64_t(0);
+        }
+        displayW_ = w;
+        displayH_ = h;
+    }
+    const std::uint64_t spp = accounting_.side(side).spp;
+    if (spp == shownSpp_[side]) return displayTextures_[side];
+    const Scene& s = scenes_[side];
+    const ShaderProgram& p = display_;
+    p.set("uImageSize", glm::ivec2(w, h));
+    p.set("uView", 0);
+    p.set("uExposure", s.render.exposure);
+    p.set("uToneMap", toneMapOp(s.render.toneMap));
+    p.set("uSpp", float(spp));
+    p.set("uHasMoments", 0);
+    const unsigned accumulation = tracers_[side]->accumulationTexture();
+    glTextureParameteri(accumulation, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(accumulation, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[side]);
+    glViewport(0, 0, w, h);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glBindTextureUnit(0, accumulation);
+    glUseProgram(p.id());
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    shownSpp_[side] = spp;
+    return displayTextures_[side];
+}
+
+Image SplitScreen::image(int side) const {
+    return tracers_[side & 1] ? tracers_[side & 1]->readImage() : Image{};
+}
+
+Image SplitScreen::composite() const {
+    Image a = image(0);
+    const Image b = image(1);
+    if (a.rgba.empty() || b.rgba.size() != a.rgba.size()) return Image{};
+    const int split = int(std::lround(divider * float(a.width)));
+    for (int y = 0; y < a.height; ++y)
+        for (int x = std::max(split, 0); x < a.width; ++x)
+            for (int c = 0; c < 4; ++c) {
+                const std::size_t i = (std::size_t(y) * std::size_t(a.width) + std::size_t(x)) * 4 + std::size_t(c);
+                a.rgba[i] = b.rgba[i];
+            }
+    return a;
+}
+
+bool SplitScreen::exportComposite(const std::string& file, Viewer& viewer) const {
+    try {
+        const Image img = composite();
+        if (img.rgba.empty()) throw std::runtime_error("split screen: nothing traced yet");
+        RenderMetadata meta;
+        meta.spp = minSpp();
+        meta.renderSeconds = accounting_.side(0).seconds + accounting_.side(1).seconds;
+        meta.seed = scenes_[0].render.seed;
+        meta.sceneFile = viewer.scenePath().string();
+        writeImage(file, img, meta, DisplayTransform{scenes_[0].render.exposure, scenes_[0].render.toneMap});
+        viewer.log().info("exported the split screen " + file + " (" + label(0) + " | " + label(1) + ")");
+        return true;
+    } catch (const std::exception& e) {
+        viewer.log().error(e.what());
+        return false;
+    }
+}
+
+} // namespace raylab::ui

@@ -1,0 +1,79 @@
+#pragma once
+// The A/B split screen (classroom mode): the viewer's scene traced twice, each side with its own
+// overrides (scene keys, as `--set` takes them), shown left (A) and right (B) of a divider, at
+// equal samples or equal time (split_accounting.h). Each side is a PathTracer of its own, traced
+// in whole passes on the same seed as raylab-render, so each half is exactly raylab-render's image
+// of that side's settings. Both sides keep a convergence series (stats/convergence_series.h).
+// Follows the viewer: any restart of its accumulation (an edit, a camera move) rebuilds both sides.
+// Needs a current GL 4.5 context once turned on.
+#include "app/split_accounting.h"
+#include "app/viewer.h"
+#include "gl/shader_program.h"
+#include "render/path_tracer.h"
+#include "stats/convergence_series.h"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace raylab::ui {
+
+class SplitScreen {
+public:
+    SplitScreen() = default;
+    ~SplitScreen();
+    SplitScreen(const SplitScreen&) = delete;
+    SplitScreen& operator=(const SplitScreen&) = delete;
+
+    bool on() const { return on_; }
+    void start(SplitBudget budget);   // on (overrides kept); restarts both sides
+    void stop();                      // off: overrides cleared, tracers freed
+    SplitBudget budget() const { return accounting_.budget(); }
+
+    // An override for side 0 (A) or 1 (B), checked against `scene` (the viewer's): returns the
+    // error ("" when it applies). A later override of the same key replaces the earlier one.
+    std::string addOverride(int side, const std::string& key, const std::string& value, const Scene& scene);
+    const std::vector<std::pair<std::string, std::string>>& overrides(int side) const { return overrides_[side & 1]; }
+    std::string label(int side) const;   // "A: render.nee=false" (or "A: as the scene")
+    float divider = 0.5f;                // 0 to 1 of the image width: A left of it, B right
+
+    // Traces whole passes, side by side as the accounting says, for about budgetSeconds (at least
+    // one pass) unless the viewer is paused or both sides are done.
+    void update(Viewer& viewer, double budgetSeconds);
+    // Done: equal samples, both sides at their render.spp; equal time, one side at its render.spp
+    // or both past render.time (when set).
+    bool converged() const;
+    std::uint64_t minSpp() const;
+    const SplitAccounting& accounting() const { return accounting_; }
+    const stats::ConvergenceSeries& series(int side) const { return series_[side & 1]; }
+    int rpp() const { return scenes_[0].render.rpp; }
+
+    // The side's RGBA8 display texture (exposure and tone map of the viewer's scene), 0 when off.
+    unsigned displayTexture(int side);
+    Image image(int side) const;   // the side's linear image, top row first as Image expects
+    Image composite() const;       // columns left of the divider from A, the rest from B
+    bool exportComposite(const std::string& file, Viewer& viewer) const;
+    const std::string& lastError() const { return lastError_; }
+
+private:
+    void rebuild(Viewer& viewer);
+    bool on_ = false;
+    bool dirty_ = true;
+    std::uint64_t seenRestarts_ = ~std::uint64_t(0);
+    std::vector<std::pair<std::string, std::string>> overrides_[2];
+    Scene scenes_[2];
+    std::unique_ptr<PathTracer> tracers_[2];
+    SplitAccounting accounting_;
+    stats::ConvergenceSeries series_[2];
+    std::string lastError_;
+    // Display pass (entry/display.frag, as the viewer's).
+    ShaderProgram display_;
+    unsigned displayTextures_[2] = {0, 0};
+    unsigned framebuffers_[2] = {0, 0};
+    unsigned vao_ = 0;
+    std::uint64_t shownSpp_[2] = {~std::uint64_t(0), ~std::uint64_t(0)};
+    int displayW_ = 0, displayH_ = 0;
+};
+
+} // namespace raylab::ui
