@@ -12,6 +12,7 @@
 //   RAYLAB_NEE                     next-event estimation (render.nee)
 //   RAYLAB_GENERAL_BSDF            GGX specular and glass (some material has f0 or transmission)
 //   RAYLAB_SKY_MAP                 an HDR environment image (sky.type map)
+//   RAYLAB_EMISSIVE_TRIANGLES      with RAYLAB_NEE: some mesh emits, its triangles are lights
 #ifndef RAYLAB_FEATURES_GLSL
 #define RAYLAB_FEATURES_GLSL
 #ifndef RAYLAB_FEATURES_SPECIALISED
@@ -23,5 +24,6 @@
 #define RAYLAB_NEE 1
 #define RAYLAB_GENERAL_BSDF 1
 #define RAYLAB_SKY_MAP 1
+#define RAYLAB_EMISSIVE_TRIANGLES 1
 #endif
 #endif

@@ -19,6 +19,12 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     for (const Material& m : scene.materials)
         f.generalBsdf |= m.transmission > 0.0f || std::max({m.f0.r, m.f0.g, m.f0.b}) > 0.0f;
     f.skyMap = scene.sky.type == Sky::Type::Map;
+    f.emissiveTriangles = false;
+    for (const Mesh& m : scene.meshes) {
+        if (m.material < 0 || std::size_t(m.material) >= scene.materials.size()) continue;
+        const glm::vec3 L = scene.materials[std::size_t(m.material)].radiance();
+        f.emissiveTriangles |= f.nee && !m.triangles.empty() && std::max({L.r, L.g, L.b}) > 0.0f;
+    }
     return f;
 }
 
@@ -36,6 +42,7 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     if (f.nee) d.emplace_back("RAYLAB_NEE", "1");
     if (f.generalBsdf) d.emplace_back("RAYLAB_GENERAL_BSDF", "1");
     if (f.skyMap) d.emplace_back("RAYLAB_SKY_MAP", "1");
+    if (f.emissiveTriangles) d.emplace_back("RAYLAB_EMISSIVE_TRIANGLES", "1");
     return d;
 }
 
@@ -56,6 +63,7 @@ std::string featureName(const SceneFeatures& f) {
     add(f.nee, "nee");
     add(f.generalBsdf, "ggx+glass");
     add(f.skyMap, "sky-map");
+    add(f.emissiveTriangles, "triangle-lights");
     return name.empty() ? "none" : name;
 }
 

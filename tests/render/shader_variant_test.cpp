@@ -24,7 +24,7 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     EXPECT_EQ(d[0].first, "RAYLAB_FEATURES_SPECIALISED");
     EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
     EXPECT_EQ(d[2].first, "RAYLAB_TOP_LEVEL_LINEAR");
-    EXPECT_EQ(featureDefines(allFeatures()).size(), 9u);   // 5 geometry features + NEE, BSDF, sky map
+    EXPECT_EQ(featureDefines(allFeatures()).size(), 10u);   // 5 geometry features + NEE, BSDF, sky map, triangle lights
 }
 
 class ShaderVariantTest : public test::GlTest {};

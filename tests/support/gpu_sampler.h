@@ -49,6 +49,25 @@ public:
         return run(3, count, seed, {}, {});
     }
 
+    // Directions towards a triangle light (world-space vertices) seen from the origin, by area.
+    std::vector<GpuSample> triangleLight(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, unsigned count, unsigned seed) const {
+        program_.set("uTriangle0", p0);
+        program_.set("uTriangle1", p1);
+        program_.set("uTriangle2", p2);
+        return run(4, count, seed, {}, {});
+    }
+
+    // Lights picked by light_selection.glsl from the alias table of a scene uploaded and bound by a
+    // GpuScene: wiPdf.x is the index (−1 the sky), .y its probability. The counts and whether the
+    // sky is a light are the uniforms the tracer would set.
+    std::vector<GpuSample> lightSelection(int sphereLights, int triangleLights, bool skyIsLight, unsigned count,
+                                          unsigned seed) const {
+        program_.set("uLightCount", sphereLights);
+        program_.set("uTriangleLightCount", triangleLights);
+        program_.set("uSkyIsLight", int(skyIsLight));
+        return run(5, count, seed, {}, {});
+    }
+
 private:
     std::vector<GpuSample> run(int mode, unsigned count, unsigned seed, const glsl::BsdfParams& m,
                                glm::vec3 wo) const {
