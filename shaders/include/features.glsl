@@ -13,6 +13,7 @@
 //   RAYLAB_GENERAL_BSDF            GGX specular and glass (some material has f0 or transmission)
 //   RAYLAB_SKY_MAP                 an HDR environment image (sky.type map)
 //   RAYLAB_EMISSIVE_TRIANGLES      with RAYLAB_NEE: some mesh emits, its triangles are lights
+//   RAYLAB_LIGHT_POWER_SELECTION   with RAYLAB_NEE: lights differ in power, picked by power
 #ifndef RAYLAB_FEATURES_GLSL
 #define RAYLAB_FEATURES_GLSL
 #ifndef RAYLAB_FEATURES_SPECIALISED
@@ -25,5 +26,6 @@
 #define RAYLAB_GENERAL_BSDF 1
 #define RAYLAB_SKY_MAP 1
 #define RAYLAB_EMISSIVE_TRIANGLES 1
+#define RAYLAB_LIGHT_POWER_SELECTION 1
 #endif
 #endif

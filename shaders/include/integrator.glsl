@@ -135,9 +135,13 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             float w = 1.0f;
 #ifdef RAYLAB_NEE
             if (lightCount > 0 && !prevDelta) {
+#ifdef RAYLAB_EMISSIVE_TRIANGLES
                 float lightPdf = instances[hit.instance].info.x == INSTANCE_SPHERE
                                      ? emitterLightPdf(prevPos, hit.position)
                                      : triangleEmitterLightPdf(ray.dir, hit);
+#else
+                float lightPdf = emitterLightPdf(prevPos, hit.position);   // only spheres are lights
+#endif
                 w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
             }
 #endif
@@ -189,8 +193,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         // sampled by solid angle (spheres, sky) or by area (triangles).
         if (lightCount > 0) {
             float selectPmf;
-            float uSelect = rngNextFloat(rng);
-            int k = selectLight(uSelect, rngNextFloat(rng), selectPmf);
+            int k = selectLight(rng, selectPmf);
             vec2 ul = rngNext2(rng);
             vec3 wiW = vec3(0.0f);
             vec3 Ll = vec3(0.0f);

@@ -19,7 +19,7 @@ layout(binding = 4) uniform sampler2D uSkyMap;   // texture unit 4: sky.map (1×
 layout(std430, binding = 5) readonly buffer EnvMarginalBuffer { float envMarginalCdf[]; };
 layout(std430, binding = 6) readonly buffer EnvConditionalBuffer { float envConditionalCdf[]; };
 // Emissive triangles in world space, and the alias table that picks any light (spheres first,
-// then triangles) by power: (q, alias, pmf, 0) per light (render/light_list.h).
+// then triangles) by power: (q, alias, pmf, pmf of alias) per light (render/light_list.h).
 layout(std430, binding = 24) readonly buffer TriangleLightBuffer { GpuTriangleLight triangleLights[]; };
 layout(std430, binding = 25) readonly buffer LightAliasBuffer { vec4 lightAlias[]; };
 

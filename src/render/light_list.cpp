@@ -3,6 +3,7 @@
 #include "scene/transform.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace raylab {
@@ -49,7 +50,35 @@ std::vector<glm::vec4> buildAliasTable(const std::vector<double>& weights) {
         }
     }
     // Leftovers (rounding) keep themselves with probability 1: table[i].x stays 1.
+    for (glm::vec4& e : table) e.w = table[std::size_t(e.y)].z;
     return table;
+}
+
+bool lightPowersDiffer(const Scene& scene) {
+    double lo = HUGE_VAL, hi = 0.0;
+    auto add = [&](double p) {
+        lo = std::min(lo, p);
+        hi = std::max(hi, p);
+    };
+    auto radianceOf = [&](int material) {
+        return material >= 0 && std::size_t(material) < scene.materials.size()
+                   ? scene.materials[std::size_t(material)].radiance()
+                   : glm::vec3(0.0f);
+    };
+    for (const Sphere& s : scene.spheres)
+        if (emits(radianceOf(s.material))) add(sphereLightPower(radianceOf(s.material), worldSphere(s).radius));
+    for (const Mesh& mesh : scene.meshes) {
+        const glm::vec3 L = radianceOf(mesh.material);
+        if (!emits(L)) continue;
+        const glm::mat4 toWorld = transformMatrix(mesh.transform);
+        for (const glm::uvec3& t : mesh.triangles) {
+            glm::dvec3 p[3];
+            for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(toWorld * glm::vec4(mesh.positions.at(t[k]), 1.0f));
+            const double area = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+            if (area > 0.0) add(triangleLightPower(L, area));
+        }
+    }
+    return hi > lo * 1.05;
 }
 
 LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::vector<glm::vec3>& radiance) {

@@ -19,9 +19,9 @@ double sphereLightPower(glm::vec3 radiance, float radius);
 double triangleLightPower(glm::vec3 radiance, double area);
 
 // Walker's alias method (Vose 1991, "A Linear Algorithm for Generating Random Numbers with a
-// Given Distribution"): entry i = (q_i, alias_i, pmf_i, 0); pick i uniformly, keep it with
-// probability q_i, else take alias_i. Weights must be ≥ 0 with a positive sum; indices are
-// stored as floats, exact below 2^24 entries.
+// Given Distribution"): entry i = (q_i, alias_i, pmf_i, pmf of alias_i); pick i uniformly, keep
+// it with probability q_i, else take alias_i (the last pmf saves the shader a second read).
+// Weights must be ≥ 0 with a positive sum; indices are stored as floats, exact below 2^24 entries.
 std::vector<glm::vec4> buildAliasTable(const std::vector<double>& weights);
 
 struct LightList {
@@ -33,6 +33,14 @@ struct LightList {
     // (not emissive, or no area). The tracer stores it in GpuTriangle::vertices.w.
     std::vector<std::uint32_t> triangleLightIndex;
 };
+
+// Whether the scene's lights (emissive spheres, emissive triangles with area) differ in power by
+// more than 5% (largest / smallest). When they do not, picking uniformly is as good as picking by
+// power (the variance gain is of second order in the differences), and the tracer is compiled
+// without the table (RAYLAB_LIGHT_POWER_SELECTION off, render/shader_variant.h): such scenes keep
+// the earlier uniform selection, random numbers included. Any choice is unbiased: only the noise
+// differs.
+bool lightPowersDiffer(const Scene& scene);
 
 // `radiance` per material (Material::radiance()). Triangles of a mesh are put in world space with
 // its transform; the order follows `geometry` (meshes in scene order, triangles in BVH leaf order).

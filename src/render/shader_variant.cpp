@@ -1,5 +1,7 @@
 #include "render/shader_variant.h"
 
+#include "render/light_list.h"
+
 #include <algorithm>
 
 namespace raylab {
@@ -19,6 +21,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     for (const Material& m : scene.materials)
         f.generalBsdf |= m.transmission > 0.0f || std::max({m.f0.r, m.f0.g, m.f0.b}) > 0.0f;
     f.skyMap = scene.sky.type == Sky::Type::Map;
+    f.lightPowerSelection = f.nee && lightPowersDiffer(scene);
     f.emissiveTriangles = false;
     for (const Mesh& m : scene.meshes) {
         if (m.material < 0 || std::size_t(m.material) >= scene.materials.size()) continue;
@@ -43,6 +46,7 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     if (f.generalBsdf) d.emplace_back("RAYLAB_GENERAL_BSDF", "1");
     if (f.skyMap) d.emplace_back("RAYLAB_SKY_MAP", "1");
     if (f.emissiveTriangles) d.emplace_back("RAYLAB_EMISSIVE_TRIANGLES", "1");
+    if (f.lightPowerSelection) d.emplace_back("RAYLAB_LIGHT_POWER_SELECTION", "1");
     return d;
 }
 
@@ -64,6 +68,7 @@ std::string featureName(const SceneFeatures& f) {
     add(f.generalBsdf, "ggx+glass");
     add(f.skyMap, "sky-map");
     add(f.emissiveTriangles, "triangle-lights");
+    add(f.lightPowerSelection, "light-power");
     return name.empty() ? "none" : name;
 }
 

@@ -2,6 +2,7 @@
 // proportional to its weight exactly; emissive triangles are collected in world space with their
 // areas and powers, and each triangle knows its light index.
 #include "render/light_list.h"
+#include "render/shader_variant.h"
 #include "render_helpers.h"
 
 #include <gtest/gtest.h>
@@ -40,6 +41,7 @@ TEST(LightList, AliasTableReproducesTheWeights) {
         for (size_t i = 0; i < n; ++i) {
             EXPECT_NEAR(p[i], w[i] / total, 1e-6) << i;
             EXPECT_NEAR(table[i].z, w[i] / total, 1e-7) << "pmf " << i;
+            EXPECT_EQ(table[i].w, table[size_t(table[i].y)].z) << "pmf of the alias " << i;
             EXPECT_GE(table[i].x, 0.0f);
             EXPECT_LE(table[i].x, 1.0f);
             if (w[i] == 0.0) {
@@ -100,4 +102,20 @@ TEST(LightList, TrianglesArePlacedByTheirTransformAndSpheresComeFirst) {
     int lit = 0;
     for (size_t i = 1; i < 3; ++i) lit += lights.triangleLightIndex[i] == 1u ? 1 : 0;
     EXPECT_EQ(lit, 1);
+}
+
+TEST(LightList, PowerSelectionOnlyWhenLightsDifferInPower) {
+    // Equal-power lamps (the Veach scene: strength × r² within 0.3%) and the Cornell box's two
+    // equal triangles are picked uniformly; a lamp twice as strong switches power selection on.
+    EXPECT_FALSE(lightPowersDiffer(loadScene(test::scenePath("veach_mis.json"))));
+    EXPECT_FALSE(lightPowersDiffer(loadScene(test::scenePath("cornell_box.json"))));
+    EXPECT_TRUE(lightPowersDiffer(loadScene(test::scenePath("veach_mis.json"), {"materials.lamp_xs.strength=1600"})));
+    Scene cornell = loadScene(test::scenePath("cornell_box.json"));
+    int light = -1;
+    for (size_t i = 0; i < cornell.materials.size(); ++i)
+        if (cornell.materials[i].name == "light") light = int(i);
+    ASSERT_GE(light, 0);
+    cornell.spheres.push_back(Sphere{glm::vec3(278, 100, 200), 20.0f, light, {}});
+    EXPECT_TRUE(lightPowersDiffer(cornell));
+    EXPECT_EQ(featureName(sceneFeatures(cornell)).find("light-power") != std::string::npos, true);
 }

@@ -24,7 +24,8 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     EXPECT_EQ(d[0].first, "RAYLAB_FEATURES_SPECIALISED");
     EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
     EXPECT_EQ(d[2].first, "RAYLAB_TOP_LEVEL_LINEAR");
-    EXPECT_EQ(featureDefines(allFeatures()).size(), 10u);   // 5 geometry features + NEE, BSDF, sky map, triangle lights
+    EXPECT_EQ(featureDefines(allFeatures()).size(), 11u);   // 5 geometry features + NEE, BSDF, sky map,
+                                                            // triangle lights, light power selection
 }
 
 class ShaderVariantTest : public test::GlTest {};

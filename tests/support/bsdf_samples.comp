@@ -70,7 +70,8 @@ void main() {
     if (uMode == 5) {
         // x: the light picked (-1 the sky), y: its probability, z: boundedLightPmf of it.
         float pmf;
-        int k = selectLight(u.x, u.y, pmf);
+        Rng pick = rngCreate(uvec2(i, 1u), 0u, uSeed);
+        int k = selectLight(pick, pmf);
         samples[i] = SampleRecord(vec4(float(k), pmf, k >= 0 ? boundedLightPmf(k) : 0.0, 0.0), vec4(0.0));
         return;
     }
