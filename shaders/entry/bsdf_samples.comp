@@ -10,6 +10,8 @@
 #include "bsdf.glsl"
 #include "light_sampling.glsl"
 #include "environment_sampling.glsl"   // the sky map and its tables, bound by GpuScene
+#include "triangle_light.glsl"
+#include "light_selection.glsl"         // the light alias table, bound by GpuScene
 
 layout(local_size_x = 64) in;
 
@@ -20,7 +22,11 @@ struct SampleRecord {
 layout(std430, binding = 7) writeonly buffer Samples { SampleRecord samples[]; };
 
 uniform uint uCount;        // (uSeed comes from scene_data.glsl)
-uniform int uMode;          // 0: cosine hemisphere, 1: bsdfSample, 2: sphere cone, 3: sky map
+uniform int uMode;          // 0: cosine hemisphere, 1: bsdfSample, 2: sphere cone, 3: sky map,
+                            // 4: triangle light by area, 5: light selection
+uniform vec3 uTriangle0;    // mode 4: the triangle, seen from the origin
+uniform vec3 uTriangle1;
+uniform vec3 uTriangle2;
 uniform vec3 uSphereCenter; // mode 2: the sphere, seen from the origin
 uniform float uSphereRadius;
 uniform vec3 uWo;           // local frame
@@ -51,6 +57,24 @@ void main() {
         vec2 uv;
         vec3 w = sampleEnvironment(u, pdf, uv);
         samples[i] = SampleRecord(vec4(w, pdf), vec4(uv, environmentPdf(w), 0.0));
+        return;
+    }
+    if (uMode == 4) {
+        // As the integrator does it: a point by area, the direction to it, its solid-angle pdf.
+        vec3 q = sampleTrianglePoint(uTriangle0, uTriangle1, uTriangle2, u);
+        float dist2 = dot(q, q);
+        vec3 w = q / sqrt(dist2);
+        vec3 e = cross(uTriangle1 - uTriangle0, uTriangle2 - uTriangle0);
+        float pdf = triangleLightPdf(dist2, dot(normalize(e), w), 0.5 * length(e));
+        samples[i] = SampleRecord(vec4(w, pdf), vec4(0.0));
+        return;
+    }
+    if (uMode == 5) {
+        // x: the light picked (-1 the sky), y: its probability, z: boundedLightPmf of it.
+        float pmf;
+        Rng pick = rngCreate(uvec2(i, 1u), 0u, uSeed);
+        int k = selectLight(pick, pmf);
+        samples[i] = SampleRecord(vec4(float(k), pmf, k >= 0 ? boundedLightPmf(k) : 0.0, 0.0), vec4(0.0));
         return;
     }
     BsdfParams m = BsdfParams(uAlbedo, uF0, uAlpha, uTransmission, uIor);

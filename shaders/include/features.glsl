@@ -18,6 +18,8 @@
 //   RAYLAB_TEXTURE_EMISSION        some material has an emission texture (with TEXTURES)
 //   RAYLAB_TEXTURE_WRAP_MODES      some texture clamps or mirrors instead of repeating (glTF)
 //   RAYLAB_STAGE                   render.stage below full (teaching): RAYLAB_STAGE_* below; absent = full
+//   RAYLAB_EMISSIVE_TRIANGLES      with RAYLAB_NEE: some mesh emits, its triangles are lights
+//   RAYLAB_LIGHT_POWER_SELECTION   with RAYLAB_NEE: lights differ in power, picked by power
 #ifndef RAYLAB_FEATURES_GLSL
 #define RAYLAB_FEATURES_GLSL
 #ifndef RAYLAB_FEATURES_SPECIALISED
@@ -33,6 +35,8 @@
 #define RAYLAB_TEXTURE_METALLIC 1
 #define RAYLAB_TEXTURE_EMISSION 1
 #define RAYLAB_TEXTURE_WRAP_MODES 1
+#define RAYLAB_EMISSIVE_TRIANGLES 1
+#define RAYLAB_LIGHT_POWER_SELECTION 1
 #endif
 // The teaching stages of render.stage (scene.h RenderStage): each adds to the one before.
 #define RAYLAB_STAGE_PRIMARY 0    // flat albedo of the first hit

@@ -9,6 +9,7 @@
 #include "sky.glsl"
 #include "bsdf.glsl"
 #include "light_sampling.glsl"
+#include "triangle_light.glsl"
 #include "environment_map.glsl"
 #include "scene_data.glsl"
 #include "environment_sampling.glsl"
@@ -17,6 +18,7 @@
 #include "bsdf_lobes.glsl"
 // The path inspector's RAYLAB_RECORD hooks: empty unless its variant defines RAYLAB_INSPECT_PATHS.
 #include "path_record.glsl"
+#include "light_selection.glsl"
 #ifdef RAYLAB_FEATURE_TEXTURES
 #include "material_textures.glsl"
 #include "ray_cone.glsl"
@@ -57,13 +59,14 @@ BsdfParams materialBsdf(GpuMaterial m) {
     return BsdfParams(m.albedo.rgb, m.f0Ior.rgb, ggxAlpha(m.albedo.a), m.emission.a, m.f0Ior.a);
 }
 
-// Lights that next-event estimation picks from, uniformly: the emissive spheres, then the sky.
+// Lights that next-event estimation picks from (light_selection.glsl): the emissive spheres and
+// triangles by power, and the sky.
 // Compiled in only when the host defines them (absent features cost nothing; on llvmpipe the mere
 // presence of the light-sampling block, even never taken, cost about 2.5× in throughput):
 // RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (some material has f0 > 0 or transmission > 0),
-// RAYLAB_SKY_MAP (sky.type map).
+// RAYLAB_SKY_MAP (sky.type map), RAYLAB_EMISSIVE_TRIANGLES (some mesh emits).
 #ifdef RAYLAB_NEE
-int neeLightCount() { return uNee ? uLightCount + (uSkyIsLight ? 1 : 0) : 0; }
+int neeLightCount() { return uNee ? boundedLightCount() + (uSkyIsLight ? 1 : 0) : 0; }
 #else
 int neeLightCount() { return 0; }
 #endif
@@ -83,7 +86,23 @@ float emitterLightPdf(vec3 p, vec3 q) {
     }
     if (best < 0 || bestMiss > 1e-3f) return 0.0f;
     vec4 s = lights[best].centerRadius;
-    return sphereConePdf(p, s.xyz, s.w) / float(neeLightCount());
+    return sphereConePdf(p, s.xyz, s.w) * boundedLightPmf(best);
+}
+
+// The same for a ray from p (direction d, not unit) that hit a triangle: the light that triangle is
+// (triangleLightIndex[], 1 + index; 0 for none) sampled by area, as a solid-angle density.
+float triangleEmitterLightPdf(vec3 d, Hit hit) {
+#ifdef RAYLAB_EMISSIVE_TRIANGLES
+    uint light = triangleLightIndex[hit.primitive];
+    if (light == 0u) return 0.0f;
+    int j = int(light) - 1;
+    float len = length(d);
+    float dist = hit.t * len;
+    float pdf = triangleLightPdf(dist * dist, dot(hit.normal, d) / len, triangleLights[j].p0Area.w);
+    return pdf * boundedLightPmf(uLightCount + j);
+#else
+    return 0.0f;
+#endif
 }
 
 // Radiance along one camera path (Kajiya 1986). beta is the path throughput: the product of
@@ -116,7 +135,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             float w = 1.0f;
 #ifdef RAYLAB_NEE
             if (uSkyIsLight && lightCount > 0 && !prevDelta) {
-                float lightPdf = skyLightPdf(dir) / float(lightCount);
+                float lightPdf = skyLightPdf(dir) * skySelectionPmf();
                 w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
             }
 #endif
@@ -137,7 +156,13 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             float w = 1.0f;
 #ifdef RAYLAB_NEE
             if (lightCount > 0 && !prevDelta) {
-                float lightPdf = emitterLightPdf(prevPos, hit.position);
+#ifdef RAYLAB_EMISSIVE_TRIANGLES
+                float lightPdf = instances[hit.instance].info.x == INSTANCE_SPHERE
+                                     ? emitterLightPdf(prevPos, hit.position)
+                                     : triangleEmitterLightPdf(ray.dir, hit);
+#else
+                float lightPdf = emitterLightPdf(prevPos, hit.position);   // only spheres are lights
+#endif
                 w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
             }
 #endif
@@ -159,16 +184,34 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         RAYLAB_RECORD(recordShadingFrame(bounce, ns));
 
 #ifdef RAYLAB_NEE
-        // Next-event estimation: one light, picked uniformly, sampled by solid angle.
+        // Next-event estimation: one light, picked by power (the sky: see light_selection.glsl),
+        // sampled by solid angle (spheres, sky) or by area (triangles).
         if (lightCount > 0) {
-            int k = min(int(rngNextFloat(rng) * float(lightCount)), lightCount - 1);
+            float selectPmf;
+            int k = selectLight(rng, selectPmf);
             vec2 ul = rngNext2(rng);
             vec3 wiW = vec3(0.0f);
             vec3 Ll = vec3(0.0f);
             float lightPdf = 0.0f;   // density the direction was drawn with (divides)
             float misPdf = 0.0f;     // density the BSDF side sees for it (weights only)
             float tMax = FLOAT_MAX;
-            if (k < uLightCount) {
+            vec3 lightPoint = vec3(0.0f);   // triangle lights: the point sampled
+            if (k >= uLightCount) {
+#ifdef RAYLAB_EMISSIVE_TRIANGLES
+                GpuTriangleLight tl = triangleLights[k - uLightCount];
+                vec3 p0 = tl.p0Area.xyz;
+                lightPoint = sampleTrianglePoint(p0, tl.p1.xyz, tl.p2.xyz, ul);
+                vec3 d = lightPoint - hit.position;
+                float dist2 = dot(d, d);
+                if (dist2 > 0.0f) {
+                    wiW = d / sqrt(dist2);
+                    lightPdf = triangleLightPdf(dist2, dot(normalize(cross(tl.p1.xyz - p0, tl.p2.xyz - p0)), wiW),
+                                                tl.p0Area.w);
+                    Ll = tl.radiance.rgb;
+                }
+                misPdf = lightPdf;
+#endif
+            } else if (k >= 0) {
                 vec4 s = lights[k].centerRadius;
                 lightPdf = sphereConePdf(hit.position, s.xyz, s.w);
                 if (lightPdf > 0.0f) {
@@ -187,8 +230,8 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                 misPdf = lightPdf;
                 Ll = skyLookup(sky, wiW);
             }
-            lightPdf /= float(lightCount);
-            misPdf /= float(lightCount);
+            lightPdf *= selectPmf;
+            misPdf *= selectPmf;
             vec3 wiL = frameToLocal(frame, wiW);
             vec3 f = lightPdf > 0.0f ? bsdfEval(bsdf, wo, wiL) : vec3(0.0f);
             // A direction the shading frame calls reflected but the geometry calls transmitted
@@ -197,7 +240,11 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             if (max(f.r, max(f.g, f.b)) > 0.0f) {
                 vec3 side = dot(wiW, hit.normal) > 0.0f ? hit.normal : -hit.normal;
                 Ray shadow = Ray(offsetRayOrigin(hit.position, side, hit.error), wiW);
-                if (k < uLightCount) {
+                if (k >= uLightCount) {
+                    // Stop just short of the light's own triangle.
+                    tMax = dot(lightPoint - shadow.origin, wiW) * (1.0f - 1e-4f);
+                    if (!(tMax > 0.0f)) tMax = -1.0f;
+                } else if (k >= 0) {
                     // Stop just short of the light's own surface.
                     vec4 s = lights[k].centerRadius;
                     float t = intersectSphere(shadow, s.xyz, s.w, 0.0f, FLOAT_MAX);
@@ -209,7 +256,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                     float w = uMis ? powerHeuristic(misPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
                     RAYLAB_ADD_RADIANCE(radiance, bounce + 1, beta * f * Ll * (w / lightPdf));
                 }
-                RAYLAB_RECORD(recordLight(bounce, k, wiW, k < uLightCount ? tMax : -1.0f, Ll, f, abs(wiL.z), lightPdf,
+                RAYLAB_RECORD(recordLight(bounce, k, wiW, k >= 0 ? tMax : -1.0f, Ll, f, abs(wiL.z), lightPdf,
                                           misPdf, bsdfPdf(bsdf, wo, wiL), visible ? 1 : 0));
             } else {
                 RAYLAB_RECORD(recordLight(bounce, k, wiW, -1.0f, Ll, f, abs(wiL.z), lightPdf, misPdf, 0.0f, 2));

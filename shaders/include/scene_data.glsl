@@ -18,6 +18,12 @@ layout(binding = 4) uniform sampler2D uSkyMap;   // texture unit 4: sky.map (1×
 // (height + 1 floats), conditional CDFs over columns (height × (width + 1) floats).
 layout(std430, binding = 5) readonly buffer EnvMarginalBuffer { float envMarginalCdf[]; };
 layout(std430, binding = 6) readonly buffer EnvConditionalBuffer { float envConditionalCdf[]; };
+// Emissive triangles in world space, and the alias table that picks any light (spheres first,
+// then triangles) by power: (q, alias, pmf, pmf of alias) per light (render/light_list.h).
+layout(std430, binding = 24) readonly buffer TriangleLightBuffer { GpuTriangleLight triangleLights[]; };
+layout(std430, binding = 25) readonly buffer LightAliasBuffer { vec4 lightAlias[]; };
+// Per triangle (global index): 1 + its index in triangleLights[], 0 when it is no light.
+layout(std430, binding = 26) readonly buffer TriangleLightIndexBuffer { uint triangleLightIndex[]; };
 
 uniform ivec2 uImageSize;
 uniform uint uSampleStart;   // samples per pixel already in uAccum
@@ -40,6 +46,7 @@ uniform vec3 uSkyColor;
 uniform vec3 uSkyTop;
 uniform vec3 uSkyBottom;
 uniform int uLightCount;     // emissive spheres in lights[]
+uniform int uTriangleLightCount;   // emissive triangles in triangleLights[]
 uniform bool uNee;           // next-event estimation on
 uniform bool uMis;           // with uNee: power-heuristic MIS of light and BSDF samples
 uniform float uSkyMapScale;  // sky.strength for the map

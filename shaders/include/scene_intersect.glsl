@@ -18,6 +18,8 @@ struct Hit {
     vec2 uv;
     float lodBase;        // ½·log2(uv area / world area), for texture LOD (texture.glsl)
     vec3 tangent;         // ∂p/∂u, world space (normal maps)
+    uint instance;        // index into instances[]
+    uint primitive;       // sphere index, or global triangle index
 };
 
 bool intersectScene(Ray ray, out Hit hit) {
@@ -33,6 +35,8 @@ bool intersectScene(Ray ray, out Hit hit) {
     hit.uv = s.uv;
     hit.lodBase = s.lodBase;
     hit.tangent = s.tangent;
+    hit.instance = rec.instance;
+    hit.primitive = rec.primitive;
     return true;
 }
 

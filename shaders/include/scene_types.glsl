@@ -22,5 +22,14 @@ struct GpuLight {
     vec4 radiance;       // rgb emitted radiance, a unused
 };
 
+// An emissive triangle in world space, for next-event estimation (render/light_list.cpp). It
+// emits on both faces, as a BSDF ray that hits it scores it (integrator.glsl).
+struct GpuTriangleLight {
+    vec4 p0Area;     // xyz first vertex, w area
+    vec4 p1;         // xyz second vertex, w unused
+    vec4 p2;         // xyz third vertex, w unused
+    vec4 radiance;   // rgb emitted radiance, a unused
+};
+
 RL_NAMESPACE_END
 #endif

@@ -36,7 +36,7 @@ struct BounceRecord {
     glm::vec3 throughputBefore{0.0f};
     // Next-event estimation from here.
     LightStatus lightStatus = LightStatus::None;
-    int lightIndex = -1;           // emissive sphere index; = light count for the sky
+    int lightIndex = -1;           // light sampled: spheres, then triangles; -1 the sky
     glm::vec3 lightDirection{0.0f};
     float lightDistance = -1.0f;   // to the light's surface; -1: the sky (no end point)
     glm::vec3 lightRadiance{0.0f};

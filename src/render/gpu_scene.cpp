@@ -2,6 +2,7 @@
 
 #include "io/image_io.h"
 #include "render/environment_distribution.h"
+#include "render/light_list.h"
 #include "shaders/include/scene_types.glsl"
 
 #include <glad/gl.h>
@@ -21,6 +22,9 @@ constexpr GLuint kSkyMapUnit = 4;   // texture unit of uSkyMap
 constexpr GLuint kEnvMarginalBinding = 5;
 constexpr GLuint kEnvConditionalBinding = 6;
 constexpr GLuint kFirstGeometryBinding = 8;   // 8–12, see shaders/include/scene_geometry.glsl
+constexpr GLuint kTriangleLightBinding = 24;
+constexpr GLuint kLightAliasBinding = 25;
+constexpr GLuint kTriangleLightIndexBinding = 26;
 
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
@@ -42,6 +46,9 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &envConditionalBuffer_);
     glCreateBuffers(5, geometryBuffers_);
     glCreateBuffers(2, textureBuffers_);
+    glCreateBuffers(1, &triangleLightBuffer_);
+    glCreateBuffers(1, &lightAliasBuffer_);
+    glCreateBuffers(1, &triangleLightIndexBuffer_);
 }
 
 GpuScene::~GpuScene() {
@@ -53,12 +60,14 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &envConditionalBuffer_);
     glDeleteBuffers(5, geometryBuffers_);
     glDeleteBuffers(2, textureBuffers_);
+    glDeleteBuffers(1, &triangleLightBuffer_);
+    glDeleteBuffers(1, &lightAliasBuffer_);
+    glDeleteBuffers(1, &triangleLightIndexBuffer_);
 }
 
 void GpuScene::upload(const Scene& scene) {
     geometry_ = buildSceneGeometry(scene);
     uploadBuffer(geometryBuffers_[1], geometry_.meshNodes);
-    uploadBuffer(geometryBuffers_[3], geometry_.triangles);
     uploadBuffer(geometryBuffers_[4], geometry_.vertices);
     std::vector<glsl::GpuMaterial> materials;
     for (const Material& m : scene.materials) {
@@ -96,26 +105,30 @@ void GpuScene::upload(const Scene& scene) {
     }
     uploadBuffer(textureBuffers_[0], std::move(texels));
     uploadBuffer(textureBuffers_[1], std::move(info));
-    uploadTopLevel();   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
+    uploadTopLevel(scene);   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
+    uploadBuffer(geometryBuffers_[3], geometry_.triangles);
 }
 
 void GpuScene::updateTransforms(const Scene& scene) {
     updateTopLevel(geometry_, scene);
-    uploadTopLevel();
+    uploadTopLevel(scene);
 }
 
-void GpuScene::uploadTopLevel() {
+void GpuScene::uploadTopLevel(const Scene& scene) {
     sphereCount_ = int(geometry_.spheres.size());
     uploadBuffer(sphereBuffer_, geometry_.spheres);
-    // Emissive spheres, in world space, for next-event estimation.
-    std::vector<glsl::GpuLight> lights;
-    for (const glsl::GpuSphere& s : geometry_.spheres) {
-        const glm::vec3 radiance = materialRadiance_[s.info.x];
-        if (std::max({radiance.r, radiance.g, radiance.b}) > 0.0f)
-            lights.push_back({s.centerRadius, glm::vec4(radiance, 0.0f)});
-    }
-    lightCount_ = int(lights.size());
-    uploadBuffer(lightBuffer_, std::move(lights));
+    // Emissive spheres and triangles, in world space, for next-event estimation.
+    LightList lights = buildLightList(scene, geometry_, materialRadiance_);
+    lightCount_ = int(lights.spheres.size());
+    triangleLightCount_ = int(lights.triangles.size());
+    lightPower_ = std::move(lights.power);
+    // Per triangle 1 + its index in the light list (0: no light), so a BSDF ray that hits an
+    // emissive triangle finds its light pdf for MIS (integrator.glsl); GpuTriangle's w holds the
+    // triangle's own material (glTF).
+    uploadBuffer(triangleLightIndexBuffer_, std::move(lights.triangleLightIndex));
+    uploadBuffer(lightBuffer_, std::move(lights.spheres));
+    uploadBuffer(triangleLightBuffer_, std::move(lights.triangles));
+    uploadBuffer(lightAliasBuffer_, std::move(lights.aliasTable));
     uploadBuffer(geometryBuffers_[0], geometry_.topNodes);
     uploadBuffer(geometryBuffers_[2], geometry_.instances);
 }
@@ -153,6 +166,9 @@ void GpuScene::bind() const {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFirstGeometryBinding + i, geometryBuffers_[i]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, textureBuffers_[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, textureBuffers_[1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTriangleLightBinding, triangleLightBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightAliasBinding, lightAliasBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTriangleLightIndexBinding, triangleLightIndexBuffer_);
 }
 
 } // namespace raylab

@@ -24,6 +24,9 @@ public:
 
     int sphereCount() const { return sphereCount_; }
     int lightCount() const { return lightCount_; }   // emissive spheres
+    int triangleLightCount() const { return triangleLightCount_; }   // emissive triangles (with area)
+    // Power of each light (spheres, then triangles; render/light_list.h), which picks them.
+    const std::vector<double>& lightPower() const { return lightPower_; }
     float skyMapMax() const { return skyMapMax_; }    // largest channel of the sky map, 0 without
     float skyMapMeanWeight() const { return skyMapMeanWeight_; }   // of its sampling distribution
     const SceneGeometry& geometry() const { return geometry_; }
@@ -45,7 +48,12 @@ private:
     SceneGeometry geometry_;
     unsigned geometryBuffers_[5] = {};   // bindings 8–12: top nodes, mesh nodes, instances,
                                          // triangles, vertices
-    void uploadTopLevel();
+    void uploadTopLevel(const Scene& scene);
+    unsigned triangleLightBuffer_ = 0;   // binding 24: emissive triangles
+    unsigned lightAliasBuffer_ = 0;      // binding 25: alias table over all lights, by power
+    int triangleLightCount_ = 0;
+    std::vector<double> lightPower_;
+    unsigned triangleLightIndexBuffer_ = 0;   // binding 26: per triangle 1 + its light index, 0 none
     unsigned textureBuffers_[2] = {};    // bindings 14–15: texels, texture info
 };
 

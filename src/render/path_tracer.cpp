@@ -115,6 +115,7 @@ void PathTracer::setScene(const Scene& scene) {
     if (sky.type == Sky::Type::Map) skyMax = glm::vec3(gpuScene_.skyMapMax());
     const bool skyIsLight = sky.strength * std::max({skyMax.r, skyMax.g, skyMax.b}) > 0.0f;
     p.set("uLightCount", gpuScene_.lightCount());
+    p.set("uTriangleLightCount", gpuScene_.triangleLightCount());
     p.set("uNee", int(r.nee));
     p.set("uMis", int(r.mis));
     p.set("uSkyIsLight", int(r.nee && skyIsLight));

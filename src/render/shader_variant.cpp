@@ -1,6 +1,7 @@
 #include "render/shader_variant.h"
 
 #include "render/gpu_scene.h"
+#include "render/light_list.h"
 
 #include <algorithm>
 #include <string>
@@ -35,6 +36,16 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     if (f.stage < RenderStage::Ggx) f.generalBsdf = false;
     if (f.stage < RenderStage::Textures) f.textures = f.showMipLevel = false;
     if (f.stage < RenderStage::Full) f.depthOfField = false;
+    f.lightPowerSelection = f.nee && lightPowersDiffer(scene);
+    f.emissiveTriangles = false;
+    for (const Mesh& m : scene.meshes) {
+        for (std::size_t t = 0; t < m.triangles.size() && f.nee && !f.emissiveTriangles; ++t) {
+            const int material = triangleMaterial(m, t);
+            if (material < 0 || std::size_t(material) >= scene.materials.size()) continue;
+            const glm::vec3 L = scene.materials[std::size_t(material)].radiance();
+            f.emissiveTriangles = std::max({L.r, L.g, L.b}) > 0.0f;
+        }
+    }
     return f;
 }
 
@@ -57,6 +68,8 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     if (f.textures && f.emissionTextures) d.emplace_back("RAYLAB_TEXTURE_EMISSION", "1");
     if (f.textures && f.textureWrapModes) d.emplace_back("RAYLAB_TEXTURE_WRAP_MODES", "1");
     if (f.stage != RenderStage::Full) d.emplace_back("RAYLAB_STAGE", std::to_string(int(f.stage)));
+    if (f.emissiveTriangles) d.emplace_back("RAYLAB_EMISSIVE_TRIANGLES", "1");
+    if (f.lightPowerSelection) d.emplace_back("RAYLAB_LIGHT_POWER_SELECTION", "1");
     return d;
 }
 
@@ -83,6 +96,8 @@ std::string featureName(const SceneFeatures& f) {
     add(f.textures && f.textureWrapModes, "wrap-modes");
     static const char* const stages[] = {"stage-primary", "stage-emission", "stage-lambert", "stage-ggx", "stage-textures"};
     add(f.stage != RenderStage::Full, stages[std::min(int(f.stage), 4)]);
+    add(f.emissiveTriangles, "triangle-lights");
+    add(f.lightPowerSelection, "light-power");
     return name.empty() ? "none" : name;
 }
 

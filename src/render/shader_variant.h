@@ -20,6 +20,8 @@ struct SceneFeatures {
     bool nee = true;             // render.nee: next-event estimation compiled in (RAYLAB_NEE)
     bool generalBsdf = true;     // some material has f0 > 0 or transmission > 0 (RAYLAB_GENERAL_BSDF)
     bool skyMap = true;          // sky.type map (RAYLAB_SKY_MAP)
+    bool emissiveTriangles = true;   // with nee: some mesh's material emits (RAYLAB_EMISSIVE_TRIANGLES)
+    bool lightPowerSelection = true; // with nee: lights differ in power, pick by power (RAYLAB_LIGHT_POWER_SELECTION)
     bool linearTopLevel = false; // at most kLinearTopLevelMax objects: no top-level BVH
     bool showMipLevel = false;   // debug view (render.show_mip_level), never part of "all features"
     bool roughnessTextures = true;   // some material has a roughness_texture (RAYLAB_TEXTURE_ROUGHNESS)

@@ -129,7 +129,7 @@ std::vector<ParamSpec> buildSceneTable() {
              "Sampler seed: same seed, same image bit for bit.", G::ResetAccumulation),
         [](auto& s) -> auto& { return s.render.seed; });
     add(spec("render.nee", T::Bool, kAny, kAny, "",
-             "Next-event estimation: each bounce also samples emissive spheres and the sky directly.",
+             "Next-event estimation: each bounce also samples emissive spheres, emissive triangles and the sky directly.",
              G::RecompileShader),
         [](auto& s) -> auto& { return s.render.nee; });
     add(spec("render.mis", T::Bool, kAny, kAny, "",

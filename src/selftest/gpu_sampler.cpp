@@ -24,6 +24,22 @@ std::vector<GpuSample> GpuSampler::skyMap(float rotationRadians, float meanWeigh
     return run(3, count, seed, {}, {});
 }
 
+std::vector<GpuSample> GpuSampler::triangleLight(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, unsigned count,
+                                                 unsigned seed) const {
+    program_.set("uTriangle0", p0);
+    program_.set("uTriangle1", p1);
+    program_.set("uTriangle2", p2);
+    return run(4, count, seed, {}, {});
+}
+
+std::vector<GpuSample> GpuSampler::lightSelection(int sphereLights, int triangleLights, bool skyIsLight,
+                                                  unsigned count, unsigned seed) const {
+    program_.set("uLightCount", sphereLights);
+    program_.set("uTriangleLightCount", triangleLights);
+    program_.set("uSkyIsLight", int(skyIsLight));
+    return run(5, count, seed, {}, {});
+}
+
 std::vector<GpuSample> GpuSampler::run(int mode, unsigned count, unsigned seed, const glsl::BsdfParams& m,
                                        glm::vec3 wo) const {
     GLuint buffer = 0;

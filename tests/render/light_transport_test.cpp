@@ -2,6 +2,7 @@
 // the same image; MIS wins on the Veach scene; glass in a uniform environment is invisible; a
 // GGX F = 1 sphere in a white furnace returns the single-scattering albedo E(μ, α).
 #include "render_helpers.h"
+#include "support/batch_stats.h"
 #include "shaders/include/camera.glsl"
 #include "shaders/include/environment_map.glsl"
 #include "support/ggx_albedo.h"
@@ -17,74 +18,11 @@
 #include <filesystem>
 
 using namespace raylab;
+using test::BatchStats;
+using test::fractionAgreeing;
+using test::renderBatches;
 
 namespace {
-
-// Per-pixel, per-channel mean and variance of the mean over independent batches (seeds).
-struct BatchStats {
-    std::vector<double> mean, varianceOfMean;
-};
-
-BatchStats renderBatches(Scene scene, int batches) {
-    PathTracer tracer;
-    std::vector<double> sum, sum2;
-    for (int b = 0; b < batches; ++b) {
-        scene.render.seed = 1000u + std::uint32_t(b) * 7919u;
-        tracer.setScene(scene);
-        renderProgressively(tracer, scene.render);
-        const Image img = tracer.readImage();
-        if (sum.empty()) {
-            sum.assign(img.rgba.size(), 0.0);
-            sum2.assign(img.rgba.size(), 0.0);
-        }
-        for (size_t i = 0; i < img.rgba.size(); ++i) {
-            sum[i] += img.rgba[i];
-            sum2[i] += double(img.rgba[i]) * img.rgba[i];
-        }
-    }
-    BatchStats s;
-    for (size_t i = 0; i < sum.size(); ++i) {
-        const double m = sum[i] / batches;
-        const double var = std::max(0.0, (sum2[i] - batches * m * m) / (batches - 1));
-        s.mean.push_back(m);
-        s.varianceOfMean.push_back(var / batches);
-    }
-    return s;
-}
-
-// Two-sided normal quantile: z with P(|Z| > z) = p, by bisection on erfc.
-double normalQuantileTwoSided(double p) {
-    double lo = 0.0, hi = 40.0;
-    for (int i = 0; i < 200; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (std::erfc(mid / std::sqrt(2.0)) > p ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
-// Fraction of pixels whose means agree: per-channel z-test at α = 0.01, Šidák-corrected over
-// every pixel and channel (as Mitsuba's render tests do).
-double fractionAgreeing(const BatchStats& a, const BatchStats& b) {
-    const size_t pixels = a.mean.size() / 4;
-    const double z = normalQuantileTwoSided(test::sidak(0.01, int(pixels * 3)));
-    size_t agree = 0;
-    for (size_t p = 0; p < pixels; ++p) {
-        bool ok = true;
-        for (size_t c = 0; c < 3; ++c) {
-            const size_t i = p * 4 + c;
-            const double d = std::abs(a.mean[i] - b.mean[i]);
-            const double sd = std::sqrt(a.varianceOfMean[i] + b.varianceOfMean[i]);
-            if (sd == 0.0 ? d > 1e-6 * std::max(1.0, std::abs(a.mean[i])) : d > z * sd) {
-                ok = false;
-                if (std::getenv("RAYLAB_DEBUG_Z"))
-                    std::printf("pixel %zu (%zu,%zu) c%zu: %g vs %g, sd %g %g\n", p, p % 24, p / 24, c, a.mean[i], b.mean[i],
-                                std::sqrt(a.varianceOfMean[i]), std::sqrt(b.varianceOfMean[i]));
-            }
-        }
-        agree += ok ? 1 : 0;
-    }
-    return double(agree) / double(pixels);
-}
 
 // A small scene with every kind of light path: glossy plastic floor, rough gold, diffuse and
 // mirror spheres, a small lamp and a gradient sky (also a light for NEE).

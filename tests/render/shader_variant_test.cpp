@@ -26,7 +26,8 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
     EXPECT_EQ(d[2].first, "RAYLAB_TOP_LEVEL_LINEAR");
     // 5 geometry features + NEE, BSDF, sky map + roughness, metallic, emission textures, wrap modes
-    EXPECT_EQ(featureDefines(allFeatures()).size(), 13u);
+    // + triangle lights, light power selection
+    EXPECT_EQ(featureDefines(allFeatures()).size(), 15u);
 }
 
 TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore) {

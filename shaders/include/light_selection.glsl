@@ -1,0 +1,68 @@
+// Which light next-event estimation samples: the sky (when it is a light) or one of the bounded
+// lights (emissive spheres, then emissive triangles). GLSL only.
+// With RAYLAB_LIGHT_POWER_SELECTION (the lights differ in power) bounded lights are picked by
+// power through the alias table the host builds (render/light_list.h), and the sky gets 1/2 beside
+// them: its power is not comparable with a bounded light's (it depends on the scene's extent), so
+// pbrt-v4's BVHLightSampler gives infinite lights a fixed share the same way. Without it (all
+// lights of equal power) picking by power is picking uniformly: every light, the sky counted as
+// one, gets 1/(n + 1), and the table is never read; this is the selection raylab had before
+// triangle lights, same random numbers, so such scenes render as before bit for bit. (Measured
+// on the Veach scene: the table path costs no throughput beyond the noise of the shared machine,
+// bench/materials.md.)
+#ifndef RAYLAB_LIGHT_SELECTION_GLSL
+#define RAYLAB_LIGHT_SELECTION_GLSL
+#include "random.glsl"
+#include "scene_data.glsl"
+#include "features.glsl"
+
+int triangleLightCount() {
+#ifdef RAYLAB_EMISSIVE_TRIANGLES
+    return uTriangleLightCount;
+#else
+    return 0;
+#endif
+}
+
+int boundedLightCount() { return uLightCount + triangleLightCount(); }
+
+#ifdef RAYLAB_LIGHT_POWER_SELECTION
+float skySelectionPmf() {
+    if (!uSkyIsLight) return 0.0f;
+    return boundedLightCount() > 0 ? 0.5f : 1.0f;
+}
+
+// Probability with which bounded light i is picked (alias table pmf × not picking the sky).
+float boundedLightPmf(int i) { return (1.0f - skySelectionPmf()) * lightAlias[i].z; }
+
+// A light: -1 for the sky, else the bounded light's index; pmf is the probability of the pick.
+// One number decides sky or not and the alias table's column, a second its coin; one read of
+// the table (an entry holds the pmf of its column and of its alias).
+int selectLight(inout Rng rng, out float pmf) {
+    float u = rngNextFloat(rng);
+    float v = rngNextFloat(rng);
+    float pSky = skySelectionPmf();
+    if (u < pSky) {
+        pmf = pSky;
+        return -1;
+    }
+    int n = boundedLightCount();
+    int i = min(int((u - pSky) / (1.0f - pSky) * float(n)), n - 1);
+    vec4 entry = lightAlias[i];
+    bool keep = v < entry.x;
+    pmf = (1.0f - pSky) * (keep ? entry.z : entry.w);
+    return keep ? i : int(entry.y);
+}
+#else
+int uniformLightCount() { return boundedLightCount() + (uSkyIsLight ? 1 : 0); }
+float skySelectionPmf() { return uSkyIsLight ? 1.0f / float(uniformLightCount()) : 0.0f; }
+float boundedLightPmf(int i) { return 1.0f / float(uniformLightCount()); }
+
+int selectLight(inout Rng rng, out float pmf) {
+    int n = uniformLightCount();
+    int k = min(int(rngNextFloat(rng) * float(n)), n - 1);
+    pmf = 1.0f / float(n);
+    return k < boundedLightCount() ? k : -1;
+}
+#endif
+
+#endif

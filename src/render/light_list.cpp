@@ -1,0 +1,127 @@
+#include "render/light_list.h"
+
+#include "scene/transform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace raylab {
+namespace {
+
+double luminance(glm::vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+bool emits(glm::vec3 radiance) { return std::max({radiance.r, radiance.g, radiance.b}) > 0.0f; }
+
+} // namespace
+
+double sphereLightPower(glm::vec3 radiance, float radius) {
+    return luminance(radiance) * 4.0 * 3.14159265358979 * double(radius) * double(radius);
+}
+
+double triangleLightPower(glm::vec3 radiance, double area) { return luminance(radiance) * 2.0 * area; }
+
+std::vector<glm::vec4> buildAliasTable(const std::vector<double>& weights) {
+    const std::size_t n = weights.size();
+    if (n >= (std::size_t(1) << 24)) throw std::length_error("alias table: more than 2^24 lights");
+    double total = 0.0;
+    for (double w : weights) total += w;
+    std::vector<glm::vec4> table(n);
+    if (n == 0) return table;
+    if (!(total > 0.0)) throw std::invalid_argument("alias table: weights sum to zero");
+    // Scaled so the mean is 1: entries below 1 are topped up by one entry above 1 (Vose's
+    // small/large work lists); what is left over at the end is 1 up to rounding.
+    std::vector<double> scaled(n);
+    std::vector<std::size_t> small, large;
+    for (std::size_t i = 0; i < n; ++i) {
+        scaled[i] = weights[i] / total * double(n);
+        (scaled[i] < 1.0 ? small : large).push_back(i);
+        table[i] = glm::vec4(1.0f, float(i), float(weights[i] / total), 0.0f);
+    }
+    while (!small.empty() && !large.empty()) {
+        const std::size_t s = small.back(), l = large.back();
+        small.pop_back();
+        table[s].x = float(scaled[s]);
+        table[s].y = float(l);
+        scaled[l] -= 1.0 - scaled[s];
+        if (scaled[l] < 1.0) {
+            large.pop_back();
+            small.push_back(l);
+        }
+    }
+    // Leftovers (rounding) keep themselves with probability 1: table[i].x stays 1.
+    for (glm::vec4& e : table) e.w = table[std::size_t(e.y)].z;
+    return table;
+}
+
+int triangleMaterial(const Mesh& mesh, std::size_t triangle) {
+    const int own = mesh.triangleMaterials.empty() ? -1 : mesh.triangleMaterials[triangle];
+    return own >= 0 ? own : mesh.material;
+}
+
+bool lightPowersDiffer(const Scene& scene) {
+    double lo = HUGE_VAL, hi = 0.0;
+    auto add = [&](double p) {
+        lo = std::min(lo, p);
+        hi = std::max(hi, p);
+    };
+    auto radianceOf = [&](int material) {
+        return material >= 0 && std::size_t(material) < scene.materials.size()
+                   ? scene.materials[std::size_t(material)].radiance()
+                   : glm::vec3(0.0f);
+    };
+    for (const Sphere& s : scene.spheres)
+        if (emits(radianceOf(s.material))) add(sphereLightPower(radianceOf(s.material), worldSphere(s).radius));
+    for (const Mesh& mesh : scene.meshes) {
+        const glm::mat4 toWorld = transformMatrix(mesh.transform);
+        for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+            const glm::uvec3& t = mesh.triangles[k];
+            const glm::vec3 L = radianceOf(triangleMaterial(mesh, k));
+            if (!emits(L)) continue;
+            glm::dvec3 p[3];
+            for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(toWorld * glm::vec4(mesh.positions.at(t[k]), 1.0f));
+            const double area = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+            if (area > 0.0) add(triangleLightPower(L, area));
+        }
+    }
+    return hi > lo * 1.05;
+}
+
+LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::vector<glm::vec3>& radiance) {
+    LightList list;
+    for (const glsl::GpuSphere& s : g.spheres) {
+        const glm::vec3 L = radiance.at(s.info.x);
+        if (!emits(L)) continue;
+        list.spheres.push_back({s.centerRadius, glm::vec4(L, 0.0f)});
+        list.power.push_back(sphereLightPower(L, s.centerRadius.w));
+    }
+    list.triangleLightIndex.assign(g.triangles.size(), 0u);
+    std::size_t first = 0;   // the mesh's first triangle in g.triangles (buildSceneGeometry's order)
+    for (const Mesh& mesh : scene.meshes) {
+        const std::size_t count = mesh.triangles.size();
+        {
+            const glm::mat4 toWorld = transformMatrix(mesh.transform);
+            for (std::size_t t = first; t < first + count && t < g.triangles.size(); ++t) {
+                // The triangle's own material (glTF primitives: w = 1 + material), else the mesh's.
+                const std::uint32_t own = g.triangles[t].vertices.w;
+                const glm::vec3 L = radiance.at(own != 0u ? std::size_t(own - 1u) : std::size_t(mesh.material));
+                if (!emits(L)) continue;
+                glm::vec3 p[3];
+                for (int k = 0; k < 3; ++k)
+                    p[k] = glm::vec3(toWorld * glm::vec4(glm::vec3(g.vertices.at(g.triangles[t].vertices[k]).positionU), 1.0f));
+                const double area = 0.5 * glm::length(glm::cross(glm::dvec3(p[1] - p[0]), glm::dvec3(p[2] - p[0])));
+                if (!(area > 0.0)) continue;   // never hit, never sampled
+                list.triangles.push_back({glm::vec4(p[0], float(area)), glm::vec4(p[1], 0.0f), glm::vec4(p[2], 0.0f),
+                                          glm::vec4(L, 0.0f)});
+                list.triangleLightIndex[t] = std::uint32_t(list.triangles.size());
+                list.power.push_back(triangleLightPower(L, area));
+            }
+        }
+        first += count;
+    }
+    if (first != g.triangles.size()) throw std::logic_error("light list: scene and geometry disagree on triangles");
+    list.aliasTable = buildAliasTable(list.power);
+    return list;
+}
+
+} // namespace raylab

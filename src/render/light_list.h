@@ -1,0 +1,52 @@
+#pragma once
+// The lights next-event estimation picks from: emissive spheres and emissive triangles, in world
+// space, each picked with probability proportional to its power through an alias table. The GPU
+// side is shaders/include/light_selection.glsl.
+#include "accel/scene_geometry.h"
+#include "scene/scene.h"
+
+#include "shaders/include/scene_types.glsl"
+
+#include <cstdint>
+#include <vector>
+
+namespace raylab {
+
+// Emitted power up to the common factor π (Φ = π·L·A for a diffuse emitter), from the Rec. 709
+// luminance of the radiance: a sphere emits from its whole surface 4πr², a triangle from both
+// faces (2·area), since a ray that hits either face scores its emission.
+double sphereLightPower(glm::vec3 radiance, float radius);
+double triangleLightPower(glm::vec3 radiance, double area);
+
+// The material of a mesh's triangle (original order): its own (glTF primitives), else the mesh's.
+int triangleMaterial(const Mesh& mesh, std::size_t triangle);
+
+// Walker's alias method (Vose 1991, "A Linear Algorithm for Generating Random Numbers with a
+// Given Distribution"): entry i = (q_i, alias_i, pmf_i, pmf of alias_i); pick i uniformly, keep
+// it with probability q_i, else take alias_i (the last pmf saves the shader a second read).
+// Weights must be ≥ 0 with a positive sum; indices are stored as floats, exact below 2^24 entries.
+std::vector<glm::vec4> buildAliasTable(const std::vector<double>& weights);
+
+struct LightList {
+    std::vector<glsl::GpuLight> spheres;              // lights 0 … S−1
+    std::vector<glsl::GpuTriangleLight> triangles;    // lights S … S+T−1
+    std::vector<double> power;                        // per light, in that order
+    std::vector<glm::vec4> aliasTable;                // over all lights, by power
+    // Per triangle of SceneGeometry::triangles: 1 + its index in `triangles`, 0 if it is no light
+    // (not emissive, or no area). The tracer stores it in GpuTriangle::vertices.w.
+    std::vector<std::uint32_t> triangleLightIndex;
+};
+
+// Whether the scene's lights (emissive spheres, emissive triangles with area) differ in power by
+// more than 5% (largest / smallest). When they do not, picking uniformly is as good as picking by
+// power (the variance gain is of second order in the differences), and the tracer is compiled
+// without the table (RAYLAB_LIGHT_POWER_SELECTION off, render/shader_variant.h): such scenes keep
+// the earlier uniform selection, random numbers included. Any choice is unbiased: only the noise
+// differs.
+bool lightPowersDiffer(const Scene& scene);
+
+// `radiance` per material (Material::radiance()). Triangles of a mesh are put in world space with
+// its transform; the order follows `geometry` (meshes in scene order, triangles in BVH leaf order).
+LightList buildLightList(const Scene& scene, const SceneGeometry& geometry, const std::vector<glm::vec3>& radiance);
+
+} // namespace raylab
