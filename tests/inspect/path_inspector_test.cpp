@@ -209,7 +209,7 @@ TEST_F(PathInspectorTest, LightSampleTermsMatchACpuComputation) {
         const glm::vec3 albedo = scene.materials[std::size_t(b.material)].albedo;
         const float lightPdf = 1.0f / (4.0f * kPi);   // uniform sphere; the sky is the only light
         const float cosL = glm::dot(b.lightDirection, b.normal);
-        EXPECT_EQ(b.lightIndex, 0);
+        EXPECT_EQ(b.lightIndex, -1);   // the sky
         EXPECT_NEAR(b.lightPdf, lightPdf, 1e-7f);
         EXPECT_LT(b.lightDistance, 0.0f);   // towards the sky
         if (cosL <= 0.0f) {
