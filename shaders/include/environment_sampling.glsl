@@ -6,6 +6,7 @@
 #include "environment_map.glsl"
 #include "scene_data.glsl"
 
+#ifdef RAYLAB_SKY_MAP   // the tables (bindings 5, 6) exist only with a sky map
 // The last index i in [0, n) with cdf[offset + i] <= u (cdf[offset + n] is 1).
 int envFindMarginal(int n, float u) {
     int lo = 0;
@@ -28,6 +29,7 @@ int envFindConditional(int offset, int n, float u) {
     }
     return lo;
 }
+#endif
 
 // Density over (u, v) of the texel a direction falls in: weight / mean weight, where the weight
 // is max(r, g, b) × sinθ of the texel's row (EnvironmentDistribution::texelWeight).
@@ -50,6 +52,7 @@ float environmentPdf(vec3 dir) {
 // A direction from the map's distribution, with the solid-angle density of the texel it was
 // drawn in (exact, whereas re-mapping the direction may land in a neighbour at a texel edge),
 // and the image coordinates it came from.
+#ifdef RAYLAB_SKY_MAP
 vec3 sampleEnvironment(vec2 u, out float pdf, out vec2 uvOut) {
     ivec2 size = textureSize(uSkyMap, 0);
     int y = envFindMarginal(size.y, u.y);
@@ -67,5 +70,13 @@ vec3 sampleEnvironment(vec2 u, out float pdf, out vec2 uvOut) {
     uvOut = uv;
     return directionFromEquirect(uv, uSkyRotation);
 }
+#else
+// Without a sky map nothing samples it (skyByMap() is false): a stub keeps the callers compiling.
+vec3 sampleEnvironment(vec2 u, out float pdf, out vec2 uvOut) {
+    pdf = 0.0f;
+    uvOut = u;
+    return vec3(0.0f, 1.0f, 0.0f);
+}
+#endif
 
 #endif

@@ -83,7 +83,7 @@ void GpuScene::upload(const Scene& scene) {
     // Emission varying over a texture is not a light for next-event estimation (the light list
     // carries one radiance per light): BSDF samples alone find it, with full weight.
     for (const Material& m : scene.materials)
-        materialRadiance_.push_back(m.emissionTextureIndex >= 0 ? glm::vec3(0.0f) : m.radiance());
+        materialRadiance_.push_back(lightRadiance(m));
     uploadSkyMap(scene.sky);
     uploadBuffer(materialBuffer_, std::move(materials));
 

@@ -54,6 +54,10 @@ std::vector<glm::vec4> buildAliasTable(const std::vector<double>& weights) {
     return table;
 }
 
+glm::vec3 lightRadiance(const Material& material) {
+    return material.emissionTextureIndex >= 0 ? glm::vec3(0.0f) : material.radiance();
+}
+
 int triangleMaterial(const Mesh& mesh, std::size_t triangle) {
     const int own = mesh.triangleMaterials.empty() ? -1 : mesh.triangleMaterials[triangle];
     return own >= 0 ? own : mesh.material;
@@ -67,7 +71,7 @@ bool lightPowersDiffer(const Scene& scene) {
     };
     auto radianceOf = [&](int material) {
         return material >= 0 && std::size_t(material) < scene.materials.size()
-                   ? scene.materials[std::size_t(material)].radiance()
+                   ? lightRadiance(scene.materials[std::size_t(material)])
                    : glm::vec3(0.0f);
     };
     for (const Sphere& s : scene.spheres)

@@ -21,6 +21,10 @@ double triangleLightPower(glm::vec3 radiance, double area);
 // The material of a mesh's triangle (original order): its own (glTF primitives), else the mesh's.
 int triangleMaterial(const Mesh& mesh, std::size_t triangle);
 
+// The radiance a material's surface has as a light: its emission, or 0 when an emission texture
+// varies it (one radiance per light; such surfaces count through BSDF hits alone, unbiased).
+glm::vec3 lightRadiance(const Material& material);
+
 // Walker's alias method (Vose 1991, "A Linear Algorithm for Generating Random Numbers with a
 // Given Distribution"): entry i = (q_i, alias_i, pmf_i, pmf of alias_i); pick i uniformly, keep
 // it with probability q_i, else take alias_i (the last pmf saves the shader a second read).

@@ -42,7 +42,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
         for (std::size_t t = 0; t < m.triangles.size() && f.nee && !f.emissiveTriangles; ++t) {
             const int material = triangleMaterial(m, t);
             if (material < 0 || std::size_t(material) >= scene.materials.size()) continue;
-            const glm::vec3 L = scene.materials[std::size_t(material)].radiance();
+            const glm::vec3 L = lightRadiance(scene.materials[std::size_t(material)]);
             f.emissiveTriangles = std::max({L.r, L.g, L.b}) > 0.0f;
         }
     }

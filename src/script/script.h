@@ -20,7 +20,8 @@
 //   overlay bvh on|off     top-level BVH nodes at the chosen depth; overlay mesh-bvh on|off: the
 //                          meshes' BVH nodes at that depth;  bvh-depth N: the depth (0 = root)
 //   inspect X Y [N]        record the next N (default: the Inspector's count, 8) sample paths of
-//                          image pixel (X, Y) with every estimator term (Inspector panel, overlay)
+//                          pixel (X, Y) of the scene's image (render.width × height, mapped
+//                          through the resolution scale) with every estimator term
 //   inspect-export PATH    the inspected paths as .json or .csv
 //   explore K [P]          BRDF explorer at bounce K of inspected path P (default 0): its material
 //                          and incoming direction

@@ -1,6 +1,7 @@
 // Emissive triangles as lights on the GPU (OSMesa): NEE-only, BSDF-only and MIS renders of the
 // Cornell box and of a two-sided, transformed triangle lamp agree per pixel; MIS beats BSDF-only
 // at equal samples; scenes without emissive triangles compile the same variant as before.
+#include "render/light_list.h"
 #include "render/shader_variant.h"
 #include "render_helpers.h"
 #include "support/batch_stats.h"
@@ -114,8 +115,12 @@ TEST(TriangleLightVariant, ScenesWithoutEmissiveTrianglesCompileTheSameVariantAs
         const Scene scene = loadScene(entry.path(), {"render.nee=true"});
         bool emissiveMesh = false;
         for (const Mesh& m : scene.meshes) {
-            const glm::vec3 L = scene.materials[size_t(m.material)].radiance();
-            emissiveMesh |= !m.triangles.empty() && std::max({L.r, L.g, L.b}) > 0.0f;
+            for (std::size_t t = 0; t < m.triangles.size(); ++t) {   // glTF: per-triangle materials
+                const Material& material = scene.materials[size_t(triangleMaterial(m, t))];
+                const glm::vec3 L = material.radiance();
+                // An emission texture makes no light (one radiance per light).
+                emissiveMesh |= material.emissionTextureIndex < 0 && std::max({L.r, L.g, L.b}) > 0.0f;
+            }
         }
         const ShaderDefines d = featureDefines(sceneFeatures(scene));
         const bool defined = std::any_of(d.begin(), d.end(), [](const auto& kv) { return kv.first == "RAYLAB_EMISSIVE_TRIANGLES"; });

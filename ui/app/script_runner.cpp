@@ -123,8 +123,13 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         return true;
     }
     if (c.name == "inspect") {
+        // X Y are pixels of the scene's image (render.width × height), so lessons work at any
+        // resolution scale: mapped onto the traced image here.
         if (a.size() > 2) viewer.inspection.pathCount = int(num(2));
-        return viewer.inspection.inspect(viewer, int(num(0)), int(num(1)));
+        const Scene& s = viewer.scene();
+        const double sx = double(viewer.imageWidth()) / double(std::max(1, s.render.width));
+        const double sy = double(viewer.imageHeight()) / double(std::max(1, s.render.height));
+        return viewer.inspection.inspect(viewer, int(num(0) * sx), int(num(1) * sy));
     }
     if (c.name == "inspect-export") return viewer.inspection.exportPaths(viewer, a[0]);
     if (c.name == "explore") {
