@@ -2,15 +2,7 @@
 // the mip pyramid (texture/texture.h).
 #include "texture/texture.h"
 
-#include <glm/glm.hpp>
-
-#include <vector>
-
-namespace raylab::glsl {
-using namespace glm;
-inline thread_local const std::vector<glm::vec4>* cpuTexels = nullptr;
-inline vec4 texelAt(uint i) { return (*cpuTexels)[i]; }
-} // namespace raylab::glsl
+#include "support/cpu_texels.h"
 #include "shaders/include/texture.glsl"
 
 #include "accel/cpu_traversal.h"

@@ -2,15 +2,7 @@
 // at bounces (shaders/include/ray_cone.glsl).
 #include "texture/texture.h"
 
-#include <glm/glm.hpp>
-
-#include <vector>
-
-namespace raylab::glsl {
-using namespace glm;
-inline thread_local const std::vector<glm::vec4>* wrapTexels = nullptr;
-inline vec4 texelAt(uint i) { return (*wrapTexels)[i]; }
-} // namespace raylab::glsl
+#include "support/cpu_texels.h"
 #include "shaders/include/ray_cone.glsl"
 #include "shaders/include/texture.glsl"
 
@@ -26,7 +18,7 @@ namespace {
 // A 4×1 ramp 0, 1, 2, 3 (one level only), with the given wrap modes.
 GpuTexture ramp(std::vector<glm::vec4>& texels, TextureWrap u, TextureWrap v) {
     texels = {glm::vec4(0), glm::vec4(1), glm::vec4(2), glm::vec4(3)};
-    wrapTexels = &texels;
+    cpuTexels = &texels;
     return GpuTexture(uvec4(0u, 4u, 1u, 1u | unsigned(u) << 16u | unsigned(v) << 24u));
 }
 

@@ -5,6 +5,7 @@
 
 #include "render/render_helpers.h"
 #include "support/gl_test.h"
+#include "support/panel_frame_test.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -13,36 +14,7 @@
 namespace raylab::ui {
 namespace {
 
-class InspectorPanelsTest : public test::GlTest {
-protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280, 800);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-        viewer = std::make_unique<Viewer>(log);
-        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json")));
-        ASSERT_TRUE(viewer->set("render.width", "32"));
-        ASSERT_TRUE(viewer->set("render.height", "18"));
-    }
-    void TearDown() override {
-        viewer.reset();
-        ImGui::DestroyContext();
-    }
-    void frame() {
-        ImGui::NewFrame();
-        drawWorkspace(*viewer, ui, 1280, 800);
-        ImGui::Render();
-    }
-    Log log{false};
-    UiState ui;
-    std::unique_ptr<Viewer> viewer;
-};
+class InspectorPanelsTest : public test::PanelFrameTest {};
 
 TEST_F(InspectorPanelsTest, PanelsDrawAnInspectionAndTheExplorersVerdict) {
     frame();

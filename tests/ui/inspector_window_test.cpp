@@ -39,14 +39,17 @@ TEST(InspectorWindow, InspectDrawsThePixelsPathsOverTheImage) {
     fs::create_directories(dir);
     const std::string scenePath = std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json";
     Scene scene = loadScene(scenePath);
-    scene.render.width = 320;   // the viewer runs at scale 0.5
-    scene.render.height = 180;
-    const auto target = projectPoint(scene, 320, 180, scene.spheres[1].center);
+    // `inspect X Y` takes pixels of the scene's image (640×360); the viewer traces at scale 0.5
+    // (320×180), where the inspected pixel and the overlay live.
+    const auto target = projectPoint(scene, scene.render.width, scene.render.height, scene.spheres[1].center);
     ASSERT_TRUE(target);
-    const int px = int(target->x), py = int(target->y);
+    const int sceneX = int(target->x), sceneY = int(target->y);
+    const int px = sceneX / 2, py = sceneY / 2;
+    scene.render.width = 320;
+    scene.render.height = 180;
     const std::string d = dir.string();
     std::ofstream(dir / "script.txt") << "wait-spp 2\npause\nscreenshot " << d << "/before.png\n"
-                                      << "inspect " << px << " " << py << " 6\npanel inspector off\n"
+                                      << "inspect " << sceneX << " " << sceneY << " 6\npanel inspector off\n"
                                       << "inspect-export " << d << "/paths.json\nwait-frames 2\n"
                                       << "screenshot " << d << "/paths.png\nquit\n";
     const std::string cmd = "DISPLAY=" + x.display() + " " RAYLAB_VIEWER_EXE " '" + scenePath +

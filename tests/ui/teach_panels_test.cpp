@@ -5,6 +5,7 @@
 
 #include "render/render_helpers.h"
 #include "support/gl_test.h"
+#include "support/panel_frame_test.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -13,38 +14,12 @@
 namespace raylab::ui {
 namespace {
 
-class TeachPanelsTest : public test::GlTest {
+class TeachPanelsTest : public test::PanelFrameTest {
 protected:
     void SetUp() override {
-        GlTest::SetUp();
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280, 800);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-        viewer = std::make_unique<Viewer>(log);
-        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json")));
-        ASSERT_TRUE(viewer->set("render.width", "32"));
-        ASSERT_TRUE(viewer->set("render.height", "18"));
+        PanelFrameTest::SetUp();
         ASSERT_TRUE(viewer->set("render.spp", "2"));
     }
-    void TearDown() override {
-        viewer.reset();
-        ImGui::DestroyContext();
-    }
-    void frame() {
-        ImGui::NewFrame();
-        applyUiScale(ui);
-        presenterKeys(ui);
-        drawWorkspace(*viewer, ui, 1280, 800);
-        ImGui::Render();
-    }
-    Log log{false};
-    UiState ui;
-    std::unique_ptr<Viewer> viewer;
 };
 
 } // namespace
