@@ -115,7 +115,8 @@ int main(int argc, char** argv) {
         for (int i = 0; i < argc; ++i) conv.commandLine += (i ? " " : "") + std::string(argv[i]);
         try {
             auto context = createHeadlessContext(parseGlBackend(gl));
-            std::cerr << "GL: " << context->description() << "\n";
+            conv.glDescription = context->description();
+            std::cerr << "GL: " << conv.glDescription << "\n";
             return runConvergenceSuite(conv);
         } catch (const std::exception& e) {
             std::cerr << "raylab-bench: error: " << e.what() << "\n";

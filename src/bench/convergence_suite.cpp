@@ -89,6 +89,8 @@ void writePlots(const fs::path& dir, const std::string& scene, const std::vector
 } // namespace
 
 int runConvergenceSuite(const ConvergenceOptions& o) {
+    const auto runBegin = std::chrono::steady_clock::now();
+    double referenceSeconds = 0.0;   // spent building references this run (0 when all were cached)
     // --- the suite -------------------------------------------------------------------------------
     ModeSettings mode;
     std::vector<SuiteScene> scenes;
@@ -186,6 +188,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     "mean of " + std::to_string(mode.referenceBatches) + " raylab renders × " +
                         std::to_string(mode.referenceSpp) + " spp",
                     command);
+                referenceSeconds += reference.seconds;
             }
             for (int seed = 0; seed < mode.seeds; ++seed) {
                 Scene run = scene;
@@ -231,6 +234,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     "mean of " + std::to_string(mode.referenceBatches) + " Cycles renders × " +
                         std::to_string(mode.referenceSpp) + " spp",
                     "raylab-bench convergence --mode " + o.mode + " --only " + s.name + " --peer on");
+                referenceSeconds += peerReference.seconds;
                 Curve c{"cycles", 1, {}};
                 for (int spp = 1; spp <= mode.peerMaxSpp; spp *= 2) {
                     const CyclesRun r = runCycles(script, spp, o.threads, 1, work);
@@ -314,10 +318,14 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
     const std::time_t now = std::time(nullptr);
     char date[32];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    const double runMinutes = std::chrono::duration<double>(std::chrono::steady_clock::now() - runBegin).count() / 60.0;
     std::ofstream md(outDir / "summary.md");
     md << "# Run time against error — " << o.mode << " mode\n\n"
        << "- date: " << date << "\n- machine: " << cpuModel() << ", " << std::thread::hardware_concurrency()
-       << " hardware threads\n- command: `" << o.commandLine << "`\n- image: " << mode.width << "×" << mode.height
+       << " hardware threads\n- GL: " << (o.glDescription.empty() ? std::string("unknown") : o.glDescription)
+       << "\n- command: `" << o.commandLine << "`\n- run time: " << fmt("%.1f", runMinutes)
+       << " min, of which " << fmt("%.1f", referenceSeconds / 60.0)
+       << " min built references (cached in the reference folder for later runs)\n- image: " << mode.width << "×" << mode.height
        << ", raylab checkpoints at 1, 2, 4 … " << mode.maxSpp << " spp, rpp 1, time = tracing only; Cycles "
        << (peerReady ? "3.4 (CPU, " + std::to_string(o.threads) + " threads, no denoising), one Blender run per sample count, "
                        "time = its render call"

@@ -16,6 +16,7 @@ struct ConvergenceOptions {
     std::string only;                                            // run just this scene name
     int threads = 2;                                             // Cycles threads (match llvmpipe's)
     std::string commandLine;                                     // recorded in the summary
+    std::string glDescription;                                   // the GL renderer, recorded too
 };
 
 // Returns a process exit status (0 done, 1 bad input, 3 runtime failure); prints progress on stderr.
