@@ -181,6 +181,9 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     EXPECT_NE(gp.str().find("strcol(2) eq 'raylab:rpp2'"), std::string::npos) << gp.str();
     EXPECT_NE(md.str().find("- command: `"), std::string::npos);
     EXPECT_NE(md.str().find("--peer off"), std::string::npos);
+    // The figures name what made them: the GL renderer and how long the run took.
+    EXPECT_NE(md.str().find("- GL: osmesa | "), std::string::npos) << md.str();
+    EXPECT_NE(md.str().find("- run time: "), std::string::npos) << md.str();
 }
 
 TEST(BenchScalingCli, WritesBothSeriesWithTheCommand) {
