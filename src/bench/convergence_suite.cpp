@@ -25,6 +25,9 @@ namespace {
 struct ModeSettings {
     int width = 96, height = 54, maxSpp = 512, seeds = 1, referenceSpp = 4096, referenceBatches = 4,
         peerMaxSpp = 64;
+    // Cycles' reference needs only to be long against Cycles' own curve (peerMaxSpp), and Cycles
+    // costs several times raylab per sample here: "peer_reference_spp" (default: reference_spp).
+    int peerReferenceSpp = 4096;
 };
 
 struct SuiteScene {
@@ -101,6 +104,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         const auto& m = j.at("modes").at(o.mode);
         mode = {m.at("width"), m.at("height"), m.at("max_spp"), m.at("seeds"), m.at("reference_spp"),
                 m.at("reference_batches"), m.at("peer_max_spp")};
+        mode.peerReferenceSpp = m.value("peer_reference_spp", mode.referenceSpp);
         for (const auto& s : j.at("scenes")) {
             SuiteScene e;
             e.name = s.at("name");
@@ -222,17 +226,17 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 writeBlenderScript(scene, script);
                 const fs::path work = outDir / "cycles_work";
                 const std::string key = "cycles " + fileHash(s.scene) + " " + std::to_string(mode.width) + "x" +
-                                        std::to_string(mode.height) + " " + std::to_string(mode.referenceSpp) + "x" +
+                                        std::to_string(mode.height) + " " + std::to_string(mode.peerReferenceSpp) + "x" +
                                         std::to_string(mode.referenceBatches) + " " + fileHash(script);
                 peerReference = cachedReference(
                     o.referenceDir / (s.name + "_cycles_" + std::to_string(mode.width) + "x" + std::to_string(mode.height)),
                     key, mode.referenceBatches,
                     [&](int k) {
                         std::cerr << "   Cycles reference batch " << k + 1 << "/" << mode.referenceBatches << "\n";
-                        return runCycles(script, mode.referenceSpp, o.threads, 1000 + k, work).image;
+                        return runCycles(script, mode.peerReferenceSpp, o.threads, 1000 + k, work).image;
                     },
                     "mean of " + std::to_string(mode.referenceBatches) + " Cycles renders × " +
-                        std::to_string(mode.referenceSpp) + " spp",
+                        std::to_string(mode.peerReferenceSpp) + " spp",
                     "raylab-bench convergence --mode " + o.mode + " --only " + s.name + " --peer on");
                 referenceSeconds += peerReference.seconds;
                 Curve c{"cycles", 1, {}};
