@@ -84,6 +84,8 @@ TEST(SceneEdit, EveryTableKeyResolves) {
         EXPECT_EQ(resolveParam(s, "materials.lamp." + std::string(p.key)).spec, &p);
     for (const SphereParamSpec& p : sphereParameters())
         EXPECT_EQ(resolveParam(s, "objects.0." + std::string(p.key)).spec, &p);
+    for (const TransformParamSpec& p : transformParameters())
+        EXPECT_EQ(resolveParam(s, "objects.1." + std::string(p.key)).spec, &p);
 }
 
 } // namespace
