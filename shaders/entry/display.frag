@@ -36,7 +36,7 @@ void main() {
     vec3 c = texelFetch(uAccumTex, p, 0).rgb;
     vec4 m = uHasMoments != 0 ? debugMoments[p.y * uImageSize.x + p.x] : vec4(0.0f);
     vec3 rgb;
-    if (uView == 1 || uView == 4 || uView == 12) {   // normals, material id, uv: display colours
+    if (uView == 1 || uView == 4 || uView == 12 || uView == 13) {   // normals, material / object id, uv: display colours
         rgb = c;
     } else if (uView == 10 || uView == 11) { // box / triangle tests per camera ray (r / g)
         rgb = heat((uView == 10 ? c.r : c.g) / uHeatScale);

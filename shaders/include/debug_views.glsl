@@ -1,5 +1,5 @@
 // Debug views of the viewer. RAYLAB_DEBUG_VIEWS: the view selected by uDebugView (normals, albedo,
-// depth, material id, uv, box and triangle tests of the camera ray) is traced in place of the
+// depth, material id, object id, uv, box and triangle tests of the camera ray) is traced in place of the
 // beauty path. RAYLAB_DEBUG_MOMENTS: the beauty path
 // also keeps per-pixel moments (mean luminance², non-finite count) for the noise and NaN/Inf views.
 // The viewer compiles a tracer variant per need; the plain beauty variant and raylab-render define
@@ -28,6 +28,7 @@ const int DEBUG_INDIRECT = 9;             // light after two or more bounces
 const int DEBUG_BOXES = 10;
 const int DEBUG_TRIANGLES = 11;
 const int DEBUG_UV = 12;
+const int DEBUG_OBJECT_ID = 13;           // a colour per object: spheres, then meshes (instanceObjectId)
 
 #ifdef RAYLAB_DEBUG_VIEWS
 uniform int uDebugView;
@@ -87,6 +88,7 @@ vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
     if (uDebugView == DEBUG_NORMALS) return hit.normal * 0.5f + 0.5f;
     if (uDebugView == DEBUG_ALBEDO) return materials[hit.material].albedo.rgb;
     if (uDebugView == DEBUG_DEPTH) return vec3(hit.t);
+    if (uDebugView == DEBUG_OBJECT_ID) return debugIdColor(instanceObjectId(instances[hit.instance]));
     return debugIdColor(hit.material);
 }
 

@@ -29,8 +29,13 @@ struct GpuInstance {
     vec4 objectToWorld1;
     vec4 objectToWorld2;
     uvec4 info;   // x: INSTANCE_SPHERE / INSTANCE_MESH; y: sphere index / mesh root node;
-                  // z: material; w: bit 0 = has vertex normals, bit 1 = has uvs
+                  // z: material; w: bit 0 = has vertex normals, bit 1 = has uvs, bits 2+ = the
+                  // object id (instanceObjectId)
 };
+
+// The scene's object number: sphere i is i, mesh j is sphereCount + j (Scene's order, the order
+// sceneToJson writes "objects" in and the viewer's `objects.N` keys use).
+RL_FN uint instanceObjectId(GpuInstance inst) { return inst.info.w >> 2u; }
 
 struct GpuTriangle {
     uvec4 vertices;   // xyz: indices into the vertex buffer; w: material + 1, 0 = the instance's

@@ -70,7 +70,8 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
     for (const Sphere& s : scene.spheres) {
         const Sphere w = worldSphere(s);
         glsl::GpuInstance inst{};
-        inst.info = glm::uvec4(glsl::INSTANCE_SPHERE, unsigned(g.spheres.size()), unsigned(s.material), 0u);
+        const unsigned objectId = unsigned(g.spheres.size());   // spheres first (instanceObjectId)
+        inst.info = glm::uvec4(glsl::INSTANCE_SPHERE, objectId, unsigned(s.material), objectId << 2u);
         g.spheres.push_back({glm::vec4(w.center, w.radius), glm::uvec4(unsigned(s.material), 0u, 0u, 0u)});
         objects.push_back(inst);
         // Widened by a few ulps: the rounded c ± r may fall just inside the sphere's extent.
@@ -85,7 +86,8 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
         rows(toObject, inst.worldToObject0, inst.worldToObject1, inst.worldToObject2);
         rows(toWorld, inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2);
         const unsigned flags = (mesh.normals.empty() ? 0u : 1u) | (mesh.uvs.empty() ? 0u : 2u);
-        inst.info = glm::uvec4(glsl::INSTANCE_MESH, g.meshRoot.at(m), unsigned(mesh.material), flags);
+        const unsigned objectId = unsigned(scene.spheres.size() + m);   // then meshes
+        inst.info = glm::uvec4(glsl::INSTANCE_MESH, g.meshRoot.at(m), unsigned(mesh.material), flags | (objectId << 2u));
         objects.push_back(inst);
         Aabb world;
         const Aabb& b = g.meshBounds.at(m);

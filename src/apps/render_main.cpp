@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
     app.add_option("--debug-view", debugView,
                    "Trace a debug view of the viewer instead of the image, written as raw per-pixel means "
                    "(so the output is .exr; default <scene name>-<view>.exr): normals, albedo, depth, uv, "
-                   "material-id, boxes / triangles (both: R = BVH box tests, G = triangle tests of the "
+                   "material-id, object-id, boxes / triangles (both: R = BVH box tests, G = triangle tests of the "
                    "pixel's camera ray)")
         ->check(CLI::IsMember(debugViewNames));
     try {

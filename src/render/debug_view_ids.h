@@ -14,11 +14,12 @@ struct TracedDebugView {
     bool countsTraversal;   // needs RAYLAB_COUNT_TRAVERSAL and a buffer at binding 17
 };
 
-inline constexpr std::array<TracedDebugView, 7> kTracedDebugViews = {{
+inline constexpr std::array<TracedDebugView, 8> kTracedDebugViews = {{
     {"normals", 1, false},
     {"albedo", 2, false},
     {"depth", 3, false},
     {"material-id", 4, false},
+    {"object-id", 13, false},
     {"boxes", 10, true},
     {"triangles", 11, true},
     {"uv", 12, false},

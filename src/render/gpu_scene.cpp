@@ -67,6 +67,7 @@ GpuScene::~GpuScene() {
 
 void GpuScene::upload(const Scene& scene) {
     geometry_ = buildSceneGeometry(scene);
+    ++meshBvhBuilds_;
     uploadBuffer(geometryBuffers_[1], geometry_.meshNodes);
     uploadBuffer(geometryBuffers_[4], geometry_.vertices);
     std::vector<glsl::GpuMaterial> materials;
@@ -111,6 +112,7 @@ void GpuScene::upload(const Scene& scene) {
 
 void GpuScene::updateTransforms(const Scene& scene) {
     updateTopLevel(geometry_, scene);
+    ++topLevelUpdates_;
     uploadTopLevel(scene);
 }
 

@@ -4,6 +4,8 @@
 #include "accel/scene_geometry.h"
 #include "scene/scene.h"
 
+#include <cstdint>
+
 namespace raylab {
 
 // Whether the material's metallic mix happens per hit on the GPU (a metallic texture, or metallic
@@ -30,6 +32,10 @@ public:
     float skyMapMax() const { return skyMapMax_; }    // largest channel of the sky map, 0 without
     float skyMapMeanWeight() const { return skyMapMeanWeight_; }   // of its sampling distribution
     const SceneGeometry& geometry() const { return geometry_; }
+    // How often the meshes' BVHs were built (every upload) and the top level alone was rebuilt
+    // (updateTransforms): what an edit cost, for the viewer's tests and counters.
+    std::uint64_t meshBvhBuilds() const { return meshBvhBuilds_; }
+    std::uint64_t topLevelUpdates() const { return topLevelUpdates_; }
 
 private:
     void uploadSkyMap(const Sky& sky);
@@ -46,6 +52,8 @@ private:
     int sphereCount_ = 0;
     int lightCount_ = 0;
     SceneGeometry geometry_;
+    std::uint64_t meshBvhBuilds_ = 0;
+    std::uint64_t topLevelUpdates_ = 0;
     unsigned geometryBuffers_[5] = {};   // bindings 8–12: top nodes, mesh nodes, instances,
                                          // triangles, vertices
     void uploadTopLevel(const Scene& scene);

@@ -65,6 +65,8 @@ public:
     // it took when first compiled), and its name: entry point and scene features.
     double compileSeconds() const { return program_ ? program_->compileSeconds() : 0.0; }
     std::string variantName() const;
+    // Programs compiled so far (one per feature set met; an edit that keeps the features compiles none).
+    std::size_t compiledVariants() const { return variants_.size(); }
     const SceneFeatures& features() const { return features_; }
     const GpuScene& gpuScene() const { return gpuScene_; }
 

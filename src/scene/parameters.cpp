@@ -231,9 +231,9 @@ std::vector<SphereParamSpec> buildSphereTable() {
     using T = ParamType;
     std::vector<SphereParamSpec> t;
     auto add = [&t](ValueSpec v, auto ref) { t.push_back(makeField<Sphere>(std::move(v), ref)); };
-    add(spec("center", T::Vec3, kAny, kAny, "world units", "Centre of the sphere.", Trigger::ReloadScene),
+    add(spec("center", T::Vec3, kAny, kAny, "world units", "Centre of the sphere.", Trigger::MoveObjects),
         [](auto& s) -> auto& { return s.center; });
-    add(spec("radius", T::Float, above(0), kAny, "world units", "Radius of the sphere.", Trigger::ReloadScene),
+    add(spec("radius", T::Float, above(0), kAny, "world units", "Radius of the sphere.", Trigger::MoveObjects),
         [](auto& s) -> auto& { return s.radius; });
     return t;
 }
@@ -302,14 +302,14 @@ static std::vector<TransformParamSpec> buildTransformTable() {
     std::vector<TransformParamSpec> t;
     auto add = [&t](ValueSpec v, auto ref) { t.push_back(makeField<Transform>(std::move(v), ref)); };
     add(spec("transform.translation", T::Vec3, kAny, kAny, "world units",
-             "Moves the object (applied last).", Trigger::ReloadScene),
+             "Moves the object (applied last).", Trigger::MoveObjects),
         [](auto& x) -> auto& { return x.translation; });
     add(spec("transform.rotation", T::Vec3, kAny, kAny, "degrees",
-             "Rotation about x, then y, then z (world axes), after scaling.", Trigger::ReloadScene),
+             "Rotation about x, then y, then z (world axes), after scaling.", Trigger::MoveObjects),
         [](auto& x) -> auto& { return x.rotation; });
     add(spec("transform.scale", T::Vec3, above(0), kAny, "factor",
              "Scale per axis, or one number for all three (applied first); spheres need all three equal.",
-             Trigger::ReloadScene),
+             Trigger::MoveObjects),
         [](auto& x) -> auto& { return x.scale; });
     return t;
 }
@@ -462,6 +462,7 @@ std::string_view triggerName(Trigger trigger) {
     switch (trigger) {
     case Trigger::Redisplay: return "redisplay";
     case Trigger::ResetAccumulation: return "reset accumulation";
+    case Trigger::MoveObjects: return "move objects";
     case Trigger::RecompileShader: return "recompile shader";
     case Trigger::ReloadScene: return "reload scene";
     }

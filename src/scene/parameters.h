@@ -32,6 +32,7 @@ enum class ParamType {
 enum class Trigger {
     Redisplay,          // accumulated samples stay valid: only re-run display / stop condition
     ResetAccumulation,  // uniforms change: restart accumulation from sample 0
+    MoveObjects,        // objects moved: rebuild only the top-level BVH (the meshes' BVHs stay), restart
     RecompileShader,    // compile-time shader constants change (render.nee)
     ReloadScene,        // scene buffers or image sizes change: re-upload, reallocate, restart
 };

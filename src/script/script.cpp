@@ -32,8 +32,8 @@ const std::map<std::string, Arity, std::less<>>& commands() {
 }
 
 // The viewer's debug views by name (ui/app/debug_view.h; a viewer test keeps the two in step).
-constexpr std::array<std::string_view, 13> kDebugViews = {"beauty", "normals", "albedo",      "depth",
-                                                          "material-id", "nan", "noise", "bounce",
+constexpr std::array<std::string_view, 14> kDebugViews = {"beauty", "normals", "albedo",      "depth",
+                                                          "material-id", "object-id", "nan", "noise", "bounce",
                                                           "direct", "indirect", "boxes", "triangles", "uv"};
 
 // render.stage's names (scene/parameters.cpp; tests/script keeps the two in step).

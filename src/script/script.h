@@ -8,11 +8,11 @@
 //                          selected.KEY: a key of the selected object or of its material
 //   click X Y              a left click at window pixel (X, Y), as the mouse would
 //   pick X Y               select the object at image pixel (X, Y) of the traced image
-//   select N               select object N (as the outliner does)
+//   select N               select object N (as the outliner does: spheres, then meshes; -1 none)
 //   focus X Y              click-to-focus at image pixel (X, Y): camera.focus_distance becomes the
 //                          distance of the surface there along the view axis
 //   focus-mode on|off      the Camera panel's "click to focus": the next click focuses, not picks
-//   debug-view NAME        beauty, normals, albedo, depth, material-id, nan, noise, bounce,
+//   debug-view NAME        beauty, normals, albedo, depth, material-id, object-id, nan, noise, bounce,
 //                          direct, indirect, boxes, triangles, uv;  debug-bounce K: the bounce
 //                          the "bounce" view shows;  heat-scale auto|N: the count shown red
 //   overlay boxes on|off   object bounding boxes;  overlay selected on|off: only the selected one;

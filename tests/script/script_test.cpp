@@ -76,7 +76,7 @@ TEST(Script, InspectorCommands) {
 }
 
 TEST(Script, EveryDebugViewNameParses) {
-    ASSERT_EQ(scriptDebugViews().size(), 13u);
+    ASSERT_EQ(scriptDebugViews().size(), 14u);
     for (std::string_view v : scriptDebugViews())
         EXPECT_EQ(errorOf("debug-view " + std::string(v) + "\n"), "<no error>") << v;
 }

@@ -37,7 +37,7 @@ TEST(SceneEdit, SetsMaterialsByNameOrIndexAndObjectsByIndex) {
     EXPECT_FLOAT_EQ(s.materials[lamp].emissionStrength, 9.0f);
     setParam(s, "materials.red.albedo", "0.5");   // one number = grey
     EXPECT_EQ(s.materials[red].albedo, glm::vec3(0.5f));
-    EXPECT_EQ(setParam(s, "objects.1.radius", "2"), Trigger::ReloadScene);
+    EXPECT_EQ(setParam(s, "objects.1.radius", "2"), Trigger::MoveObjects);
     EXPECT_FLOAT_EQ(s.spheres[1].radius, 2.0f);
 }
 
@@ -84,6 +84,8 @@ TEST(SceneEdit, EveryTableKeyResolves) {
         EXPECT_EQ(resolveParam(s, "materials.lamp." + std::string(p.key)).spec, &p);
     for (const SphereParamSpec& p : sphereParameters())
         EXPECT_EQ(resolveParam(s, "objects.0." + std::string(p.key)).spec, &p);
+    for (const TransformParamSpec& p : transformParameters())
+        EXPECT_EQ(resolveParam(s, "objects.1." + std::string(p.key)).spec, &p);
 }
 
 } // namespace

@@ -11,11 +11,8 @@ int BrdfExplorerModel::resolvedMaterial(const Viewer& viewer) const {
     const Scene& s = viewer.scene();
     if (s.materials.empty()) return -1;
     if (material >= 0 && material < int(s.materials.size())) return material;
-    if (viewer.selected >= 0 && viewer.selected < int(s.spheres.size())) {
-        const int m = s.spheres[std::size_t(viewer.selected)].material;
-        if (m >= 0 && m < int(s.materials.size())) return m;
-    }
-    return 0;
+    const int m = viewer.editedMaterial();   // the selected sphere's or mesh's (under the click)
+    return m >= 0 && m < int(s.materials.size()) ? m : 0;
 }
 
 void BrdfExplorerModel::fromBounce(const BounceRecord& b) {

@@ -9,6 +9,7 @@ std::string_view debugViewName(DebugView view) {
     case DebugView::Albedo: return "albedo";
     case DebugView::Depth: return "depth";
     case DebugView::MaterialId: return "material-id";
+    case DebugView::ObjectId: return "object-id";
     case DebugView::NonFinite: return "nan";
     case DebugView::Noise: return "noise";
     case DebugView::BounceK: return "bounce";

@@ -14,19 +14,21 @@ enum class DebugView {
     Boxes = 10,     // BVH box tests of the camera ray (heat map; the tracer counts them)
     Triangles = 11, // triangle tests of the camera ray (heat map)
     Uv = 12,        // texture coordinates: (fract u, fract v, 0)
+    ObjectId = 13,  // a colour per object (app/scene_object.h numbering: spheres, then meshes)
 };
 
 inline constexpr DebugView kDebugViews[] = {DebugView::Beauty,    DebugView::Normals,  DebugView::Albedo,
-                                            DebugView::Depth,     DebugView::MaterialId, DebugView::NonFinite,
+                                            DebugView::Depth,     DebugView::MaterialId, DebugView::ObjectId,
+                                            DebugView::NonFinite,
                                             DebugView::Noise,     DebugView::BounceK,  DebugView::Direct,
                                             DebugView::Indirect, DebugView::Boxes,  DebugView::Triangles,
                                             DebugView::Uv};
 
-// Script and UI names: beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct,
-// indirect, boxes, triangles, uv.
+// Script and UI names: beauty, normals, albedo, depth, material-id, object-id, nan, noise, bounce,
+// direct, indirect, boxes, triangles, uv.
 std::string_view debugViewName(DebugView view);
 std::optional<DebugView> parseDebugView(std::string_view name);
-// Views 1-4 and 7-12 are traced instead of the beauty path; 5-6 are drawn from the beauty path's
+// Views 1-4 and 7-13 are traced instead of the beauty path; 5-6 are drawn from the beauty path's
 // moments.
 inline bool tracedDebugView(DebugView v) { return (int(v) >= 1 && int(v) <= 4) || int(v) >= 7; }
 // The heat maps: traced by a variant that counts traversal (RAYLAB_COUNT_TRAVERSAL); both store

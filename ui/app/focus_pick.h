@@ -2,8 +2,9 @@
 // Click-to-focus: the focus distance that makes the surface seen at an image point sharp. The
 // thin lens of shaders/include/camera.glsl focuses on the plane at focus_distance along the view
 // axis (not on a sphere around the eye), so the distance is the hit's depth along the camera's
-// forward axis: t·(dir · forward) for the pixel's pinhole ray. The hit comes from the tracer's own
-// BVH traversal run on the CPU (accel/cpu_traversal.h), so spheres and meshes both count.
+// forward axis: t·(dir · forward) for the pixel's pinhole ray. The hit is the one a click picks
+// (viewHit in app/view_geometry.h: the tracer's own BVH traversal on the CPU), so spheres and
+// meshes both count.
 #include "accel/scene_geometry.h"
 #include "app/view_geometry.h"
 

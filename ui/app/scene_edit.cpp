@@ -1,5 +1,7 @@
 #include "app/scene_edit.h"
 
+#include "app/scene_object.h"
+
 #include <nlohmann/json.hpp>
 
 #include <charconv>
@@ -65,18 +67,36 @@ SceneParam resolveParam(const Scene& scene, std::string_view key) {
                             "' (keys: " + keysOf(materialParameters()) + ")");
         }
         const std::optional<std::size_t> index = parseIndex(item);
-        if (!index || *index >= scene.spheres.size())
+        const std::optional<ObjectRef> object = index ? objectRef(scene, int(*index)) : std::nullopt;
+        if (!object)
             throw EditError(std::string(key) + ": no object " + std::string(item) + " (the scene has " +
-                            std::to_string(scene.spheres.size()) + ")");
-        const std::size_t i = *index;
-        for (const SphereParamSpec& s : sphereParameters()) {
-            if (s.key != field) continue;
-            return SceneParam{std::string(key), &s,
-                              [&s, i](const Scene& sc) { return s.get(sc.spheres.at(i)); },
-                              [&s, i](Scene& sc, const ParamValue& v) { s.set(sc.spheres.at(i), v); }};
+                            std::to_string(objectCount(scene)) + ": spheres, then meshes)");
+        const std::size_t i = std::size_t(object->index);
+        if (!object->mesh) {
+            for (const SphereParamSpec& s : sphereParameters()) {
+                if (s.key != field) continue;
+                return SceneParam{std::string(key), &s,
+                                  [&s, i](const Scene& sc) { return s.get(sc.spheres.at(i)); },
+                                  [&s, i](Scene& sc, const ParamValue& v) { s.set(sc.spheres.at(i), v); }};
+            }
         }
-        throw EditError(std::string(key) + ": objects have no key '" + std::string(field) +
-                        "' (keys: " + keysOf(sphereParameters()) + ")");
+        for (const TransformParamSpec& s : transformParameters()) {
+            if (s.key != field) continue;
+            const bool mesh = object->mesh;
+            auto transformOf = [mesh, i](auto& sc) -> auto& { return mesh ? sc.meshes.at(i).transform : sc.spheres.at(i).transform; };
+            return SceneParam{std::string(key), &s, [&s, transformOf](const Scene& sc) { return s.get(transformOf(sc)); },
+                              [&s, transformOf, mesh, key = std::string(key)](Scene& sc, const ParamValue& v) {
+                                  Transform t = transformOf(sc);
+                                  s.set(t, v);
+                                  // A sphere stays a sphere (the loader checks the same).
+                                  if (!mesh && (t.scale.x != t.scale.y || t.scale.x != t.scale.z))
+                                      throw EditError(key + ": a sphere's scale must be the same on all three axes");
+                                  transformOf(sc) = t;
+                              }};
+        }
+        std::string keys = object->mesh ? "" : keysOf(sphereParameters()) + ", ";
+        throw EditError(std::string(key) + ": " + (object->mesh ? "meshes" : "spheres") + " have no key '" +
+                        std::string(field) + "' (keys: " + keys + keysOf(transformParameters()) + ")");
     }
     std::vector<std::string_view> candidates;
     for (const ParamSpec& p : sceneParameters()) candidates.push_back(p.key);

@@ -1,5 +1,6 @@
 #include "app/script_runner.h"
 
+#include "app/scene_object.h"
 #include "app/viewport_click.h"
 
 #include <algorithm>
@@ -63,16 +64,15 @@ bool ScriptRunner::step(Viewer& viewer, UiState& ui, ScriptHost& host, double no
 
 namespace {
 
-// "selected.KEY" names a key of the selected object ("selected.radius") or of its material
-// ("selected.albedo"), as the Material panel shows them.
+// "selected.KEY" names a key of the selected object ("selected.radius", "selected.transform.
+// translation") or of the material it edits ("selected.albedo"), as the Material panel shows them.
 std::string selectedKey(const Viewer& viewer, const std::string& key) {
     const std::string prefix = "selected.";
     if (key.rfind(prefix, 0) != 0 || viewer.selected < 0) return key;
     const std::string field = key.substr(prefix.size());
-    for (const SphereParamSpec& p : sphereParameters())
-        if (p.key == field) return "objects." + std::to_string(viewer.selected) + "." + field;
-    const int m = viewer.scene().spheres[std::size_t(viewer.selected)].material;
-    return "materials." + std::to_string(m) + "." + field;
+    for (const MaterialParamSpec& p : materialParameters())
+        if (p.key == field) return "materials." + std::to_string(viewer.editedMaterial()) + "." + field;
+    return "objects." + std::to_string(viewer.selected) + "." + field;
 }
 
 } // namespace
@@ -104,8 +104,8 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
     }
     if (c.name == "select") {
         const int i = int(num(0));
-        if (i < -1 || i >= int(viewer.scene().spheres.size())) return false;
-        viewer.selected = i;
+        if (i < -1 || i >= objectCount(viewer.scene())) return false;
+        viewer.select(i);
         return true;
     }
     if (c.name == "debug-view") {

@@ -1,7 +1,11 @@
 #include "app/view_geometry.h"
 
+#include "accel/cpu_traversal.h"
+#include "app/scene_object.h"
+#include "scene/transform.h"
 #include "shaders/include/camera.glsl"
-#include "shaders/include/sphere.glsl"
+
+#include <limits>
 
 namespace raylab::ui {
 namespace {
@@ -11,51 +15,62 @@ glsl::CameraBasis basisFor(const Scene& scene, int width, int height) {
     return glsl::cameraBasis(c.position, c.lookAt, c.up, c.fovY, float(width) / float(height));
 }
 
-glsl::Ray rayThrough(const Scene& scene, int width, int height, ImagePoint p) {
-    // Image y runs down, ndc y up (camera.glsl: (-1, -1) is the bottom-left corner).
-    const glm::vec2 ndc(p.x / float(width) * 2.0f - 1.0f, 1.0f - p.y / float(height) * 2.0f);
-    return glsl::cameraRay(basisFor(scene, width, height), ndc);
-}
-
-struct Nearest {
-    int index = -1;
-    float t = 0.0f;
-};
-
-Nearest nearestHit(const Scene& scene, const glsl::Ray& ray) {
-    // The loop of shaders/include/scene_intersect.glsl.
-    Nearest n;
-    float tMax = glsl::FLOAT_MAX;
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-        const Sphere& s = scene.spheres[i];
-        const float t = glsl::intersectSphere(ray, s.center, s.radius, 0.0f, tMax);
-        if (t > 0.0f) {
-            tMax = t;
-            n.index = int(i);
-            n.t = t;
-        }
-    }
-    return n;
-}
-
 constexpr float kNear = 1e-3f;   // world units in front of the eye where segments are cut
 
 } // namespace
 
-std::optional<int> pickObject(const Scene& scene, int width, int height, ImagePoint point) {
-    const Nearest n = nearestHit(scene, rayThrough(scene, width, height, point));
-    if (n.index < 0) return std::nullopt;
-    return n.index;
+std::optional<ViewHit> viewHit(const Scene& scene, const SceneGeometry& geometry, int width, int height,
+                               ImagePoint point) {
+    const glsl::CameraBasis b = basisFor(scene, width, height);
+    // Image y runs down, ndc y up (camera.glsl: (-1, -1) is the bottom-left corner).
+    const glm::vec2 ndc(point.x / float(width) * 2.0f - 1.0f, 1.0f - point.y / float(height) * 2.0f);
+    const glsl::Ray ray = glsl::cameraRay(b, ndc);
+    if (geometry.instances.empty()) return std::nullopt;
+    glsl::cpuTraversal.geometry = &geometry;
+    glsl::TraceRecord rec;
+    const bool hit = glsl::traceScene(ray, glsl::FLOAT_MAX, false, rec);
+    std::optional<ViewHit> out;
+    if (hit) {
+        const glsl::SurfaceHit s = glsl::surfaceAt(ray, rec);
+        out = ViewHit{rec.t, rec.t * glm::dot(ray.dir, b.forward), int(glsl::instanceObjectId(geometry.instances[rec.instance])),
+                      int(s.material), s.position};
+    }
+    glsl::cpuTraversal.geometry = nullptr;
+    return out;
 }
 
-std::optional<float> pickDistance(const Scene& scene, int width, int height, ImagePoint point) {
-    const Nearest n = nearestHit(scene, rayThrough(scene, width, height, point));
-    if (n.index < 0) return std::nullopt;
-    return n.t;
+std::optional<int> pickObject(const Scene& scene, const SceneGeometry& geometry, int width, int height,
+                              ImagePoint point) {
+    const auto hit = viewHit(scene, geometry, width, height, point);
+    if (!hit) return std::nullopt;
+    return hit->object;
+}
+
+std::optional<int> pickObject(const Scene& scene, int width, int height, ImagePoint point) {
+    return pickObject(scene, buildSceneGeometry(scene), width, height, point);
 }
 
 Box objectBounds(const Sphere& sphere) {
-    return Box{sphere.center - glm::vec3(sphere.radius), sphere.center + glm::vec3(sphere.radius)};
+    const Sphere w = worldSphere(sphere);
+    return Box{w.center - glm::vec3(w.radius), w.center + glm::vec3(w.radius)};
+}
+
+std::optional<Box> objectBounds(const Scene& scene, const SceneGeometry& geometry, int object) {
+    const auto r = objectRef(scene, object);
+    if (!r) return std::nullopt;
+    if (!r->mesh) return objectBounds(scene.spheres[std::size_t(r->index)]);
+    if (std::size_t(r->index) >= geometry.meshBounds.size()) return std::nullopt;   // geometry of another scene
+    const Aabb& a = geometry.meshBounds[std::size_t(r->index)];
+    if (a.empty()) return std::nullopt;
+    const glm::mat4 toWorld = transformMatrix(scene.meshes[std::size_t(r->index)].transform);
+    Box box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner(c & 1 ? a.max.x : a.min.x, c & 2 ? a.max.y : a.min.y, c & 4 ? a.max.z : a.min.z);
+        const glm::vec3 p(toWorld * glm::vec4(corner, 1.0f));
+        box.lo = glm::min(box.lo, p);
+        box.hi = glm::max(box.hi, p);
+    }
+    return box;
 }
 
 namespace {

@@ -1,8 +1,11 @@
 #pragma once
-// The tracer's camera on the CPU: the very cameraBasis/cameraRay of shaders/include/camera.glsl
-// and intersectSphere of sphere.glsl, so a click picks the object the tracer shows in that pixel
-// and an overlay box projects onto the pixels where the tracer draws the box's edges.
+// The tracer's camera on the CPU: the very cameraBasis/cameraRay of shaders/include/camera.glsl,
+// and the tracer's own BVH traversal run on the CPU (accel/cpu_traversal.h), so a click picks the
+// object (sphere or mesh instance) the tracer shows in that pixel and an overlay box projects onto
+// the pixels where the tracer draws the box's edges.
 // Image coordinates: x right, y down, pixel (0, 0) the top-left one; pixel centres at +0.5.
+// Objects are numbered as app/scene_object.h says: spheres, then mesh instances.
+#include "accel/scene_geometry.h"
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>
@@ -18,17 +21,31 @@ struct ImagePoint {
     float y = 0.0f;
 };
 
-// The object (index into scene.spheres) seen at image point (x, y) of a width × height image,
-// through its centre ray; nullopt for the sky.
+// What the pinhole ray through image point (x, y) of a width × height image meets first.
+struct ViewHit {
+    float t = 0.0f;        // distance along the ray (its direction is unit length)
+    float depth = 0.0f;    // the same along the view axis: t·(dir · forward) (click-to-focus)
+    int object = -1;       // app/scene_object.h numbering
+    int material = -1;     // the material there (a glTF mesh's per-triangle material)
+    glm::vec3 position{0.0f};
+};
+// nullopt for the sky. `geometry` is the scene's as the tracer traverses it (Viewer::geometry()).
+std::optional<ViewHit> viewHit(const Scene& scene, const SceneGeometry& geometry, int width, int height,
+                               ImagePoint point);
+// The object seen there; nullopt for the sky.
+std::optional<int> pickObject(const Scene& scene, const SceneGeometry& geometry, int width, int height,
+                              ImagePoint point);
+// The same for tests and one-off use: builds the scene's geometry (every mesh's BVH) first.
 std::optional<int> pickObject(const Scene& scene, int width, int height, ImagePoint point);
-// The distance along that ray to the hit (for click-to-focus); nullopt for the sky.
-std::optional<float> pickDistance(const Scene& scene, int width, int height, ImagePoint point);
 
 struct Box {
     glm::vec3 lo{0.0f};
     glm::vec3 hi{0.0f};
 };
+// World-space bounds: of a sphere after its transform; of any object (for a mesh instance: the
+// axis-aligned box around its transformed object-space bounds, the box the top-level BVH holds).
 Box objectBounds(const Sphere& sphere);
+std::optional<Box> objectBounds(const Scene& scene, const SceneGeometry& geometry, int object);
 
 struct Segment {
     ImagePoint a;

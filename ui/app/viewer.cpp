@@ -1,6 +1,8 @@
 #include "app/viewer.h"
 
 #include "app/focus_pick.h"
+#include "app/scene_change.h"
+#include "app/scene_object.h"
 #include "app/view_geometry.h"
 #include "io/image_io.h"
 #include "scene/scene_loader.h"
@@ -62,12 +64,17 @@ bool Viewer::openScene(const std::filesystem::path& file) {
         if (!hasScene_ || std::filesystem::equivalent(file, scenePath_, ec)) watcher_.watch(file);
         return false;
     }
-    if (!applyScene(std::move(next), Trigger::ReloadScene)) return false;
+    // The same file again with only objects moved: keep the meshes' BVHs.
+    std::error_code ec;
+    const bool sameFile = hasScene_ && std::filesystem::equivalent(file, scenePath_, ec);
+    const Trigger trigger = sameFile ? reloadTrigger(scene_, next) : Trigger::ReloadScene;
+    if (!applyScene(std::move(next), trigger)) return false;
     scenePath_ = file;
     watcher_.watch(file);
-    selected = -1;
-    log_.info("opened " + file.string() + " (" + std::to_string(scene_.spheres.size() + scene_.meshes.size()) + " objects, " +
-              std::to_string(scene_.materials.size()) + " materials)");
+    select(-1);
+    log_.info("opened " + file.string() + " (" + std::to_string(objectCount(scene_)) + " objects, " +
+              std::to_string(scene_.materials.size()) + " materials" +
+              (trigger == Trigger::MoveObjects ? "; only objects moved: the meshes' BVHs stay" : "") + ")");
     return true;
 }
 
@@ -75,8 +82,8 @@ void Viewer::pollFileChanges() {
     if (!watcher_.changed()) return;
     const std::filesystem::path file = watcher_.file();
     log_.info(file.string() + " changed on disk: reloading");
-    const int keep = selected;
-    if (openScene(file) && keep < int(scene_.spheres.size())) selected = keep;
+    const int keep = selected, keepMaterial = selectedMaterial;
+    if (openScene(file) && keep < objectCount(scene_)) select(keep, keepMaterial);
 }
 
 bool Viewer::saveScene(const std::filesystem::path& file) {
@@ -234,6 +241,9 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
         displayDirty_ = true;
         return true;
     }
+    if (trigger == Trigger::MoveObjects && hasScene_ && next.spheres.size() == scene_.spheres.size() &&
+        next.meshes.size() == scene_.meshes.size())
+        return moveObjects(std::move(next));
     // ResetAccumulation and ReloadScene: the upload is cheap for these scenes, and setScene
     // reallocates only when the image size changed.
     try {
@@ -246,6 +256,21 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
     }
     scene_ = std::move(next);
     hasScene_ = true;
+    lastError_.clear();
+    restart();
+    return true;
+}
+
+bool Viewer::moveObjects(Scene next) {
+    try {
+        tracer_->updateTransforms(traced(next));
+    } catch (const std::exception& e) {
+        lastError_ = e.what();
+        log_.error(lastError_);
+        tracer_->setScene(tracedScene());   // put the previous scene back
+        return false;
+    }
+    scene_ = std::move(next);
     lastError_.clear();
     restart();
     return true;
@@ -443,19 +468,36 @@ glm::vec4 Viewer::pixelValue(int x, int y) const {
     return v;
 }
 
+void Viewer::select(int object, int material) {
+    const bool valid = objectRef(scene_, object).has_value();
+    selected = valid ? object : -1;
+    selectedMaterial = valid ? material : -1;
+}
+
+int Viewer::editedMaterial() const {
+    const std::vector<int> materials = objectMaterials(scene_, selected);
+    if (materials.empty()) return -1;
+    for (const int m : materials)
+        if (m == selectedMaterial) return m;
+    return materials.front();
+}
+
 std::optional<int> Viewer::pick(float x, float y) {
     if (!hasScene()) return std::nullopt;
-    const std::optional<int> hit = pickObject(scene_, imageWidth(), imageHeight(), ImagePoint{x, y});
-    selected = hit.value_or(-1);
-    if (hit) {
-        const Sphere& s = scene_.spheres[std::size_t(*hit)];
-        const std::string material =
-            s.material >= 0 && s.material < int(scene_.materials.size()) ? scene_.materials[std::size_t(s.material)].name : "?";
-        log_.info("picked object " + std::to_string(*hit) + " (material " + material + ")");
-    } else {
+    const std::optional<ViewHit> hit = viewHit(scene_, *geometry(), imageWidth(), imageHeight(), ImagePoint{x, y});
+    if (!hit) {
+        select(-1);
         log_.info("picked nothing (sky)");
+        return std::nullopt;
     }
-    return hit;
+    select(hit->object, hit->material);
+    const std::string material = hit->material >= 0 && hit->material < int(scene_.materials.size())
+                                     ? scene_.materials[std::size_t(hit->material)].name
+                                     : "?";
+    const ObjectRef r = *objectRef(scene_, hit->object);
+    log_.info("picked object " + std::to_string(hit->object) + " (material " + material + "), " +
+              (r.mesh ? "mesh " : "sphere ") + std::to_string(r.index));
+    return hit->object;
 }
 
 std::optional<float> Viewer::focusAt(float x, float y) {

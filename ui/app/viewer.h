@@ -93,7 +93,15 @@ public:
     float heatScaleInUse() const;
     OverlaySettings overlays;
     float cameraSpeed = 2.0f;   // world units per second for WASD/QE
-    int selected = -1;          // object index, -1 = none
+    // The selected object (app/scene_object.h: spheres, then mesh instances; -1 = none), shared by
+    // the outliner, picking, the box overlay, the Material panel, `selected.KEY` and the BRDF
+    // explorer; and the material of it that they edit: a click takes the material under the
+    // cursor (a glTF mesh's per-triangle one), -1 = the object's own.
+    int selected = -1;
+    int selectedMaterial = -1;
+    void select(int object, int material = -1);   // out of range: none
+    // The material the Material panel and `selected.KEY` edit (-1 when nothing is selected).
+    int editedMaterial() const;
     Inspection inspection;      // the pixel path inspector (app/inspection.h)
     BrdfExplorerModel brdfExplorer;   // the BRDF explorer (app/brdf_explorer_model.h)
 
@@ -113,7 +121,8 @@ public:
     bool needsDisplay() const;   // the next displayTexture() would show something new   // after changing depthScale or noiseScale
     // The linear value of image pixel (x, y), top-left origin, as accumulated.
     glm::vec4 pixelValue(int x, int y) const;
-    // Select the object seen at image pixel (x, y); logs what was picked.
+    // Select the object seen at image pixel (x, y) (sphere or mesh instance, through the tracer's
+    // BVH on the CPU) and the material there; logs what was picked.
     std::optional<int> pick(float x, float y);
     // Click-to-focus at image pixel (x, y): camera.focus_distance becomes the depth of the surface
     // there along the view axis (app/focus_pick.h); logs it. nullopt (and no change) for the sky.
@@ -133,6 +142,7 @@ public:
 private:
     Scene traced(Scene s) const;  // s with the resolution scale and the bounce step applied
     bool applyScene(Scene next, Trigger trigger);
+    bool moveObjects(Scene next);   // MoveObjects: the top level only (PathTracer::updateTransforms)
     void restart();   // after a scene upload: clear moments, restart the slicer
     void ensureDisplayTargets();
 

@@ -79,6 +79,9 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
     case DebugView::MaterialId:
         ImGui::TextDisabled("one colour per material (hover for its name)");
         break;
+    case DebugView::ObjectId:
+        ImGui::TextDisabled("one colour per object: spheres, then mesh instances, numbered\nas in the outliner (hover for it)");
+        break;
     default:
         break;
     }

@@ -1,13 +1,67 @@
-// Material panel: the outliner (every object, click to select), the selected object's keys and its
-// material's keys, all built from the parameter tables so new keys show up without UI changes.
+// Material panel: the outliner (every object: spheres, then mesh instances; click to select), the
+// selected object's keys (a sphere's centre and radius, a mesh's transform) and the keys of the
+// material it edits, all built from the parameter tables so new keys show up without UI changes.
+// A mesh with glTF per-triangle materials lists them; the one under the last click is edited.
 #include "panels/panels.h"
 #include "panels/param_widget.h"
 
+#include "app/scene_object.h"
+
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 
 namespace raylab::ui {
+namespace {
+
+// Drag speed for positions: a 500th of the scene's extent per pixel (the top-level BVH's root).
+float positionSpeed(const Viewer& viewer) {
+    const SceneGeometry* g = viewer.geometry();
+    if (!g || g->topNodes.empty()) return 0.01f;
+    const glm::vec3 extent = glm::vec3(g->topNodes[0].boundsMax) - glm::vec3(g->topNodes[0].boundsMin);
+    return std::max(0.002f * std::max({extent.x, extent.y, extent.z}), 1e-4f);
+}
+
+void objectKeys(Viewer& viewer, int sel, const ObjectRef& r) {
+    const Scene& scene = viewer.scene();
+    const std::string prefix = "objects." + std::to_string(sel) + ".";
+    const float speed = positionSpeed(viewer);
+    if (r.mesh) {
+        const Mesh& m = scene.meshes[std::size_t(r.index)];
+        ImGui::Text("object %d: mesh %d, %zu triangles", sel, r.index, m.triangles.size());
+        if (!m.file.empty()) ImGui::TextDisabled("%s", m.file.c_str());
+        // Moving a mesh rebuilds only the top-level BVH (trigger "move objects").
+        for (const TransformParamSpec& p : transformParameters())
+            paramWidget(viewer, resolveParam(scene, prefix + std::string(p.key)),
+                        p.key == "transform.translation" ? speed : 0.01f);
+    } else {
+        ImGui::Text("object %d: sphere %d", sel, r.index);
+        for (const SphereParamSpec& p : sphereParameters())
+            paramWidget(viewer, resolveParam(scene, prefix + std::string(p.key)), speed);
+        // A sphere's rotation shows nowhere and its scale must stay uniform (radius does that).
+        paramWidget(viewer, resolveParam(scene, prefix + "transform.translation"), speed);
+    }
+}
+
+// The object's own material: a combo over the scene's materials. A glTF mesh's triangles carry
+// the file's materials instead: no combo.
+void materialAssignment(Viewer& viewer, int sel, const ObjectRef& r) {
+    Scene& scene = viewer.scene();
+    if (r.mesh && !scene.meshes[std::size_t(r.index)].triangleMaterials.empty()) return;
+    int& own = r.mesh ? scene.meshes[std::size_t(r.index)].material : scene.spheres[std::size_t(r.index)].material;
+    if (!ImGui::BeginCombo("material", scene.materials[std::size_t(own)].name.c_str())) return;
+    for (int j = 0; j < int(scene.materials.size()); ++j)
+        if (ImGui::Selectable(scene.materials[std::size_t(j)].name.c_str(), j == own)) {
+            own = j;
+            viewer.select(sel, j);
+            viewer.sceneChanged(Trigger::ReloadScene);   // recompiles only if the feature set changed
+            break;   // the scene's vectors were replaced: `own` is gone
+        }
+    ImGui::EndCombo();
+}
+
+} // namespace
 
 void drawMaterialPanel(Viewer& viewer, UiState&) {
     if (!ImGui::Begin("Material")) {
@@ -18,33 +72,31 @@ void drawMaterialPanel(Viewer& viewer, UiState&) {
         ImGui::End();
         return;
     }
-    Scene& scene = viewer.scene();
+    const Scene& scene = viewer.scene();
     ImGui::PushItemWidth(-80.0f);
     ImGui::TextDisabled("Click an object in the viewport or here.");
     if (ImGui::BeginListBox("##outliner", ImVec2(-1, 6 * ImGui::GetTextLineHeightWithSpacing()))) {
-        for (int i = 0; i < int(scene.spheres.size()); ++i) {
-            const Sphere& s = scene.spheres[std::size_t(i)];
-            const std::string name = std::to_string(i) + "  sphere  " +
-                                     (s.material < int(scene.materials.size()) ? scene.materials[std::size_t(s.material)].name : "?");
-            if (ImGui::Selectable(name.c_str(), viewer.selected == i)) viewer.selected = i;
+        static int scrolledTo = -1;   // a pick in the viewport scrolls its row into view once
+        for (int i = 0; i < objectCount(scene); ++i) {
+            const std::string label = objectLabel(scene, i);
+            if (ImGui::Selectable(label.c_str(), viewer.selected == i)) viewer.select(i);
+            if (viewer.selected == i && scrolledTo != i) ImGui::SetScrollHereY();
         }
+        scrolledTo = viewer.selected;
         ImGui::EndListBox();
     }
     const int sel = viewer.selected;
-    if (sel >= 0 && sel < int(scene.spheres.size())) {
+    if (const auto r = objectRef(scene, sel)) {
         ImGui::Separator();
-        ImGui::Text("object %d", sel);
-        for (const SphereParamSpec& p : sphereParameters())
-            paramWidget(viewer, resolveParam(viewer.scene(), "objects." + std::to_string(sel) + "." + std::string(p.key)));
-        // Material assignment.
-        const int m = scene.spheres[std::size_t(sel)].material;
-        if (ImGui::BeginCombo("material", scene.materials[std::size_t(m)].name.c_str())) {
-            for (int j = 0; j < int(scene.materials.size()); ++j)
-                if (ImGui::Selectable(scene.materials[std::size_t(j)].name.c_str(), j == m)) {
-                    viewer.scene().spheres[std::size_t(sel)].material = j;
-                    viewer.sceneChanged(Trigger::ReloadScene);
-                }
-            ImGui::EndCombo();
+        objectKeys(viewer, sel, *r);
+        materialAssignment(viewer, sel, *r);
+        const std::vector<int> materials = objectMaterials(viewer.scene(), sel);
+        const int m = viewer.editedMaterial();
+        if (materials.size() > 1) {
+            ImGui::TextDisabled("its materials (a click in the viewport picks the one there):");
+            for (const int j : materials)
+                if (ImGui::Selectable(("  " + viewer.scene().materials[std::size_t(j)].name).c_str(), j == m))
+                    viewer.select(sel, j);
         }
         ImGui::Separator();
         ImGui::TextWrapped("material '%s' (shared by every object that uses it)", viewer.scene().materials[std::size_t(m)].name.c_str());

@@ -27,7 +27,7 @@ void tooltip(const ValueSpec& s) {
 
 } // namespace
 
-bool paramWidget(Viewer& viewer, const SceneParam& param) {
+bool paramWidget(Viewer& viewer, const SceneParam& param, float vectorSpeed) {
     const ValueSpec& s = *param.spec;
     const std::string label(s.name().empty() ? s.key : s.name());
     ParamValue value = param.get(viewer.scene());
@@ -77,7 +77,7 @@ bool paramWidget(Viewer& viewer, const SceneParam& param) {
         } else if (s.type == ParamType::Rgb) {
             changed = ImGui::DragFloat3(label.c_str(), &v[0], 0.01f, lowerOf(s, 0.0f), upperOf(s, 1e6f), "%.3f");
         } else {
-            changed = ImGui::DragFloat3(label.c_str(), &v[0], 0.01f, 0.0f, 0.0f, "%.3f");
+            changed = ImGui::DragFloat3(label.c_str(), &v[0], vectorSpeed, 0.0f, 0.0f, "%.4g");
         }
         if (changed) value = v;
         break;

@@ -8,7 +8,8 @@
 namespace raylab::ui {
 
 // Draws the widget for `param` and applies an edit through the viewer (which restarts or reloads
-// as the key's trigger says). Returns true when the value changed.
-bool paramWidget(Viewer& viewer, const SceneParam& param);
+// as the key's trigger says). Returns true when the value changed. vec3 drags move by
+// `vectorSpeed` per pixel (positions: a fraction of the scene's size suits millimetre scenes too).
+bool paramWidget(Viewer& viewer, const SceneParam& param, float vectorSpeed = 0.01f);
 
 } // namespace raylab::ui

@@ -4,6 +4,7 @@
 
 #include "app/bvh_overlay.h"
 #include "app/camera_control.h"
+#include "app/scene_object.h"
 #include "panels/heat_legend.h"
 #include "app/view_geometry.h"
 
@@ -39,11 +40,14 @@ void drawOverlays(Viewer& viewer, const ImageRect& r) {
             for (const Segment& s : topLevelBvhSegments(scene, *g, w, h, o.bvhDepth))
                 dl->AddLine(toWindow(r, w, h, s.a), toWindow(r, w, h, s.b), IM_COL32(255, 0, 255, 255), 1.0f);
     }
-    for (int i = 0; i < int(scene.spheres.size()) && (o.boxes || o.selectedOnly); ++i) {
+    const SceneGeometry* g = viewer.geometry();
+    for (int i = 0; g && i < objectCount(scene) && (o.boxes || o.selectedOnly); ++i) {   // spheres, then meshes
         const bool sel = i == viewer.selected;
         if (viewer.overlays.selectedOnly && !sel) continue;
         const ImU32 colour = sel ? IM_COL32(0, 255, 255, 255) : IM_COL32(255, 255, 0, 255);
-        for (const Segment& s : projectBox(scene, w, h, objectBounds(scene.spheres[std::size_t(i)])))
+        const std::optional<Box> box = objectBounds(scene, *g, i);
+        if (!box) continue;
+        for (const Segment& s : projectBox(scene, w, h, *box))
             dl->AddLine(toWindow(r, w, h, s.a), toWindow(r, w, h, s.b), colour, 1.0f);
     }
     dl->PopClipRect();
@@ -75,7 +79,8 @@ void tooltip(Viewer& viewer, const ImageRect& r) {
     const int x = int(fx), y = int(fy);
     if (x < 0 || y < 0 || x >= viewer.imageWidth() || y >= viewer.imageHeight()) return;
     const glm::vec4 v = viewer.pixelValue(x, y);
-    const auto obj = pickObject(viewer.scene(), viewer.imageWidth(), viewer.imageHeight(), ImagePoint{fx, fy});
+    const Scene& scene = viewer.scene();
+    const std::optional<ViewHit> hit = viewHit(scene, *viewer.geometry(), viewer.imageWidth(), viewer.imageHeight(), ImagePoint{fx, fy});
     ImGui::BeginTooltip();
     ImGui::Text("pixel (%d, %d)", x, y);
     if (heatMapView(viewer.debugView()))
@@ -84,9 +89,13 @@ void tooltip(Viewer& viewer, const ImageRect& r) {
         ImGui::Text("uv (fractional part): %.4f %.4f", double(v.x), double(v.y));
     else
         ImGui::Text("%s: %.4g %.4g %.4g", std::string(debugViewName(viewer.debugView())).c_str(), double(v.x), double(v.y), double(v.z));
-    if (obj) {
-        const Sphere& s = viewer.scene().spheres[std::size_t(*obj)];
-        ImGui::Text("object %d, material %d '%s'", *obj, s.material, viewer.scene().materials[std::size_t(s.material)].name.c_str());
+    if (hit) {
+        const ObjectRef o = *objectRef(scene, hit->object);
+        ImGui::Text("object %d (%s %d), material %d '%s'", hit->object, o.mesh ? "mesh" : "sphere", o.index, hit->material,
+                    scene.materials[std::size_t(hit->material)].name.c_str());
+        if (const std::optional<Box> b = objectBounds(scene, *viewer.geometry(), hit->object))
+            ImGui::Text("bounds [%.4g, %.4g, %.4g] .. [%.4g, %.4g, %.4g]", double(b->lo.x), double(b->lo.y), double(b->lo.z),
+                        double(b->hi.x), double(b->hi.y), double(b->hi.z));
     } else {
         ImGui::TextUnformatted("sky");
     }
