@@ -70,6 +70,24 @@ void GpuScene::upload(const Scene& scene) {
     ++meshBvhBuilds_;
     uploadBuffer(geometryBuffers_[1], geometry_.meshNodes);
     uploadBuffer(geometryBuffers_[4], geometry_.vertices);
+    uploadSkyMap(scene.sky);
+    // Textures: all levels of all textures in one texel array; see shaders/include/scene_textures.glsl.
+    std::vector<glm::vec4> texels;
+    for (const Texture& t : scene.textures)
+        for (const MipLevel& l : t.levels) texels.insert(texels.end(), l.texels.begin(), l.texels.end());
+    uploadBuffer(textureBuffers_[0], std::move(texels));
+    uploadMaterials(scene);
+    uploadTopLevel(scene);   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
+    uploadBuffer(geometryBuffers_[3], geometry_.triangles);
+}
+
+void GpuScene::updateMaterials(const Scene& scene) {
+    uploadMaterials(scene);
+    ++materialUpdates_;
+    uploadTopLevel(scene);   // the light list follows the materials' emission
+}
+
+void GpuScene::uploadMaterials(const Scene& scene) {
     std::vector<glsl::GpuMaterial> materials;
     for (const Material& m : scene.materials) {
         // Metallic on raylab's f0 model: f0 = mix(f0, base, m), albedo = base·(1 − m). Exact here
@@ -85,11 +103,10 @@ void GpuScene::upload(const Scene& scene) {
     // carries one radiance per light): BSDF samples alone find it, with full weight.
     for (const Material& m : scene.materials)
         materialRadiance_.push_back(lightRadiance(m));
-    uploadSkyMap(scene.sky);
     uploadBuffer(materialBuffer_, std::move(materials));
 
-    // Textures: all levels of all textures in one texel array; see shaders/include/scene_textures.glsl.
-    std::vector<glm::vec4> texels;
+    // Per material its textures and scalars read beside them, then per texture where its levels
+    // start in the texel array (upload() puts the levels there in this order).
     std::vector<glm::uvec4> info;
     info.emplace_back(unsigned(scene.materials.size()), 0u, 0u, 0u);
     for (const Material& m : scene.materials) {
@@ -98,16 +115,14 @@ void GpuScene::upload(const Scene& scene) {
         info.emplace_back(unsigned(m.emissionTextureIndex + 1), glm::floatBitsToUint(metallicOnGpu(m) ? m.metallic : 0.0f),
                           glm::floatBitsToUint(m.normalScale), 0u);
     }
+    std::size_t firstTexel = 0;
     for (const Texture& t : scene.textures) {
         const unsigned wrap = (unsigned(t.wrapU) << 16u) | (unsigned(t.wrapV) << 24u);
-        info.emplace_back(unsigned(texels.size()), unsigned(t.levels[0].width), unsigned(t.levels[0].height),
+        info.emplace_back(unsigned(firstTexel), unsigned(t.levels[0].width), unsigned(t.levels[0].height),
                           unsigned(t.levels.size()) | wrap);
-        for (const MipLevel& l : t.levels) texels.insert(texels.end(), l.texels.begin(), l.texels.end());
+        for (const MipLevel& l : t.levels) firstTexel += l.texels.size();
     }
-    uploadBuffer(textureBuffers_[0], std::move(texels));
     uploadBuffer(textureBuffers_[1], std::move(info));
-    uploadTopLevel(scene);   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
-    uploadBuffer(geometryBuffers_[3], geometry_.triangles);
 }
 
 void GpuScene::updateTransforms(const Scene& scene) {

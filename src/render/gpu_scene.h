@@ -22,6 +22,9 @@ public:
     void upload(const Scene& scene);
     // Objects moved (transforms, sphere centres): rebuilds only the top-level BVH.
     void updateTransforms(const Scene& scene);
+    // Materials' values edited (not which textures they use, nor how many there are): re-uploads
+    // the material records and the light list; geometry, BVHs, textures and the sky stay.
+    void updateMaterials(const Scene& scene);
     void bind() const;   // binds every buffer to its binding point
 
     int sphereCount() const { return sphereCount_; }
@@ -36,9 +39,11 @@ public:
     // (updateTransforms): what an edit cost, for the viewer's tests and counters.
     std::uint64_t meshBvhBuilds() const { return meshBvhBuilds_; }
     std::uint64_t topLevelUpdates() const { return topLevelUpdates_; }
+    std::uint64_t materialUpdates() const { return materialUpdates_; }
 
 private:
     void uploadSkyMap(const Sky& sky);
+    void uploadMaterials(const Scene& scene);
     std::vector<glm::vec3> materialRadiance_;   // per material, for the light list
 
     unsigned sphereBuffer_ = 0;
@@ -54,6 +59,7 @@ private:
     SceneGeometry geometry_;
     std::uint64_t meshBvhBuilds_ = 0;
     std::uint64_t topLevelUpdates_ = 0;
+    std::uint64_t materialUpdates_ = 0;
     unsigned geometryBuffers_[5] = {};   // bindings 8–12: top nodes, mesh nodes, instances,
                                          // triangles, vertices
     void uploadTopLevel(const Scene& scene);

@@ -74,11 +74,22 @@ void PathTracer::allocateImage(int width, int height) {
 }
 
 void PathTracer::setScene(const Scene& scene) {
+    gpuScene_.upload(scene);
+    updateSettings(scene);
+}
+
+void PathTracer::updateMaterials(const Scene& scene) {
+    gpuScene_.updateMaterials(scene);
+    updateSettings(scene);
+}
+
+void PathTracer::updateSettings(const Scene& scene) {
     const RenderSettings& r = scene.render;
     allocateImage(r.width, r.height);
     defaultRpp_ = r.rpp;
 
-    gpuScene_.upload(scene);
+    // The feature set may change with any edit (an aperture above 0, glass, a sky that emits):
+    // the variant is looked up again, and compiled only when that set was never met.
     features_ = options_.specialise ? sceneFeatures(scene) : allFeatures();
     program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
 

@@ -36,6 +36,13 @@ public:
     // Objects moved (transforms, sphere centres; same meshes and materials): re-uploads only the
     // top level (the meshes' BVHs stay) and restarts accumulation.
     void updateTransforms(const Scene& scene);
+    // Material values edited (same materials and textures): re-uploads the material records and
+    // the light list, then as updateSettings.
+    void updateMaterials(const Scene& scene);
+    // Camera, sky values and render settings changed, with the scene's buffers as uploaded:
+    // selects the variant for the scene's features, sets the uniforms, reallocates the image if
+    // its size changed, and restarts accumulation.
+    void updateSettings(const Scene& scene);
     // Drops the accumulated samples; the next pass starts a new mean.
     void reset();
     // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them.

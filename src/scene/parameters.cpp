@@ -194,35 +194,35 @@ std::vector<MaterialParamSpec> buildMaterialTable() {
     std::vector<MaterialParamSpec> t;
     auto add = [&t](ValueSpec v, auto ref) { t.push_back(makeField<Material>(std::move(v), ref)); };
     add(spec("albedo", T::Rgb, atLeast(0), atMost(1), "reflectance",
-             "Lambertian (diffuse) reflectance per channel.", Trigger::ReloadScene),
+             "Lambertian (diffuse) reflectance per channel.", Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.albedo; });
     add(spec("roughness", T::Float, atLeast(0), atMost(1), "",
              "Perceptual roughness r of the specular lobe; GGX alpha = r^2 (below 0.0316: a mirror).",
-             Trigger::ReloadScene),
+             Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.roughness; });
     add(spec("f0", T::Rgb, atLeast(0), atMost(1), "reflectance",
              "Specular reflectance at normal incidence (0.04 plastic, coloured for metals; 0 = no specular).",
-             Trigger::ReloadScene),
+             Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.f0; });
     add(spec("transmission", T::Float, atLeast(0), atMost(1), "fraction",
              "Fraction of the surface that is smooth glass of index ior (the rest is albedo / f0).",
-             Trigger::ReloadScene),
+             Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.transmission; });
     add(spec("ior", T::Float, above(0), kAny, "",
-             "Index of refraction of the inside relative to the outside (glass 1.5).", Trigger::ReloadScene),
+             "Index of refraction of the inside relative to the outside (glass 1.5).", Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.ior; });
     add(spec("emission", T::Rgb, atLeast(0), kAny, "radiance",
-             "Emitted colour; emitted radiance = emission x strength.", Trigger::ReloadScene),
+             "Emitted colour; emitted radiance = emission x strength.", Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.emission; });
     add(spec("strength", T::Float, atLeast(0), kAny, "factor", "Multiplies emission (0 = not a light).",
-             Trigger::ReloadScene),
+             Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.emissionStrength; });
     add(spec("metallic", T::Float, atLeast(0), atMost(1), "fraction",
              "Metallic workflow: f0 = mix(f0, base colour, m), albedo = base colour x (1 - m); base = albedo x albedo_texture.",
-             Trigger::ReloadScene),
+             Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.metallic; });
     add(spec("normal_scale", T::Float, atLeast(0), kAny, "factor",
-             "Scales the normal map's x and y (0 = flat, 1 = as stored).", Trigger::ReloadScene),
+             "Scales the normal map's x and y (0 = flat, 1 = as stored).", Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.normalScale; });
     return t;
 }
@@ -463,6 +463,7 @@ std::string_view triggerName(Trigger trigger) {
     case Trigger::Redisplay: return "redisplay";
     case Trigger::ResetAccumulation: return "reset accumulation";
     case Trigger::MoveObjects: return "move objects";
+    case Trigger::UpdateMaterials: return "update materials";
     case Trigger::RecompileShader: return "recompile shader";
     case Trigger::ReloadScene: return "reload scene";
     }

@@ -33,6 +33,7 @@ enum class Trigger {
     Redisplay,          // accumulated samples stay valid: only re-run display / stop condition
     ResetAccumulation,  // uniforms change: restart accumulation from sample 0
     MoveObjects,        // objects moved: rebuild only the top-level BVH (the meshes' BVHs stay), restart
+    UpdateMaterials,    // material values: re-upload materials and lights (geometry stays), restart
     RecompileShader,    // compile-time shader constants change (render.nee)
     ReloadScene,        // scene buffers or image sizes change: re-upload, reallocate, restart
 };

@@ -95,9 +95,13 @@ TEST_F(ViewerMeshTest, AMeshMaterialEditChangesTheImageAndCompilesNothing) {
     const std::size_t compiled = viewer->tracer()->compiledVariants();
     const double compileSeconds = viewer->stats().shaderCompileSeconds;
     const std::uint64_t restarts = viewer->stats().restarts;
+    const auto& gpu = viewer->tracer()->gpuScene();
+    const std::uint64_t builds = gpu.meshBvhBuilds(), materialUpdates = gpu.materialUpdates();
     // As the script's `set selected.albedo` does (selectedKey: the edited material's key).
     ASSERT_TRUE(viewer->set("materials." + std::to_string(viewer->editedMaterial()) + ".albedo", "[0.9, 0.9, 0.1]"));
     EXPECT_EQ(viewer->stats().restarts, restarts + 1) << "accumulation restarts";
+    EXPECT_EQ(gpu.meshBvhBuilds(), builds) << "a material edit keeps the meshes' BVHs";
+    EXPECT_EQ(gpu.materialUpdates(), materialUpdates + 1) << "the materials alone were uploaded";
     EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 0u);
     const Image after = traced();
     EXPECT_EQ(viewer->shaderVariant(), variant);
@@ -141,6 +145,23 @@ TEST_F(ViewerMeshTest, MovingAMeshKeepsItsBvhAndTheObjectMovesInTheImage) {
     EXPECT_GT(glm::length(colour(after, oldAt) - blockColour), 0.05f);
     EXPECT_LT(glm::length(colour(after, newAt) - blockColour), 1e-5f);
     EXPECT_GT(glm::length(colour(before, newAt) - blockColour), 0.05f);
+}
+
+TEST_F(ViewerMeshTest, ACameraEditUploadsNoSceneBuffers) {
+    // A camera drag sets camera keys every frame: none of them may rebuild a BVH or upload materials.
+    const auto& gpu = viewer->tracer()->gpuScene();
+    const std::uint64_t builds = gpu.meshBvhBuilds(), updates = gpu.topLevelUpdates(),
+                        materialUpdates = gpu.materialUpdates();
+    const Image before = traced();
+    ASSERT_TRUE(viewer->set("camera.fov", "30"));
+    EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 0u) << "accumulation restarts";
+    EXPECT_EQ(gpu.meshBvhBuilds(), builds);
+    EXPECT_EQ(gpu.topLevelUpdates(), updates);
+    EXPECT_EQ(gpu.materialUpdates(), materialUpdates);
+    const Image after = traced();
+    float change = 0.0f;
+    for (std::size_t i = 0; i < before.rgba.size(); ++i) change += std::abs(after.rgba[i] - before.rgba[i]);
+    EXPECT_GT(change / float(before.rgba.size()), 0.01f) << "the narrower view shows";
 }
 
 TEST_F(ViewerMeshTest, AReloadThatOnlyMovesAMeshKeepsItsBvh) {

@@ -244,10 +244,17 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
     if (trigger == Trigger::MoveObjects && hasScene_ && next.spheres.size() == scene_.spheres.size() &&
         next.meshes.size() == scene_.meshes.size())
         return moveObjects(std::move(next));
-    // ResetAccumulation and ReloadScene: the upload is cheap for these scenes, and setScene
-    // reallocates only when the image size changed.
+    // ResetAccumulation keeps every scene buffer (camera, sky values, render settings: a camera
+    // drag must not rebuild a million-triangle BVH each frame); UpdateMaterials re-uploads the
+    // materials and the lights; ReloadScene everything. Each reallocates only when the image size
+    // changed and recompiles only for a feature set never met.
     try {
-        tracer_->setScene(traced(next));
+        if (hasScene_ && trigger == Trigger::ResetAccumulation)
+            tracer_->updateSettings(traced(next));
+        else if (hasScene_ && trigger == Trigger::UpdateMaterials && next.materials.size() == scene_.materials.size())
+            tracer_->updateMaterials(traced(next));
+        else
+            tracer_->setScene(traced(next));
     } catch (const std::exception& e) {
         lastError_ = e.what();
         log_.error(lastError_);
