@@ -207,8 +207,8 @@ int main(int argc, char** argv) {
         context = createHeadlessContext(parseGlBackend(gl));
         TracerOptions options;
         options.entry = entry == "compute" ? TracerEntry::Compute : TracerEntry::Fragment;
-        if (view) options.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
-        if (view && view->countsTraversal) options.extraDefines.emplace_back("RAYLAB_COUNT_TRAVERSAL", "1");
+        if (view) options.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_VIEWS"), "1");
+        if (view && view->countsTraversal) options.extraDefines.emplace_back(tracerDefine("RAYLAB_COUNT_TRAVERSAL"), "1");
         tracer = std::make_unique<PathTracer>(options);
         tracer->setScene(scene);
         if (view) tracer->program().set("uDebugView", view->id);

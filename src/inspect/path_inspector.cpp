@@ -66,7 +66,7 @@ BounceRecord decodeBounce(const glm::vec4* s) {
 
 TracerOptions PathInspector::inspectorOptions() {
     TracerOptions o;
-    o.extraDefines.emplace_back("RAYLAB_INSPECT_PATHS", "1");
+    o.extraDefines.emplace_back(tracerDefine("RAYLAB_INSPECT_PATHS"), "1");
     return o;
 }
 

@@ -26,14 +26,14 @@ ShaderProgram PathTracer::compileVariant(const ShaderDefines& features, const vo
     defines.insert(defines.end(), features.begin(), features.end());
     if (o.entry == TracerEntry::Fragment)
         return ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag", defines);
-    defines.emplace_back("LOCAL_SIZE_X", std::to_string(o.localSizeX));
-    defines.emplace_back("LOCAL_SIZE_Y", std::to_string(o.localSizeY));
+    defines.emplace_back(tracerDefine("LOCAL_SIZE_X"), std::to_string(o.localSizeX));
+    defines.emplace_back(tracerDefine("LOCAL_SIZE_Y"), std::to_string(o.localSizeY));
     return ShaderProgram::compute("entry/trace.comp", defines);
 }
 
 PathTracer::PathTracer(TracerOptions options) : options_(options) {
     for (const auto& [name, value] : options_.extraDefines) {
-        if (name != "RAYLAB_COUNT_TRAVERSAL") continue;
+        if (name != tracerDefine("RAYLAB_COUNT_TRAVERSAL")) continue;
         glCreateBuffers(1, &traversalBuffer_);
         const GLuint zeros[2] = {0, 0};
         glNamedBufferStorage(traversalBuffer_, sizeof(zeros), zeros, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);

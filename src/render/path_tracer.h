@@ -4,8 +4,9 @@
 // context (see gl/gl_context.h). Both programs, the headless CLI and the viewer, drive this class.
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
-#include "render/shader_variant.h"
 #include "render/image.h"
+#include "render/shader_variant.h"
+#include "render/tracer_defines.h"
 #include "scene/scene.h"
 
 #include <cstdint>
@@ -20,7 +21,7 @@ struct TracerOptions {
     TracerEntry entry = TracerEntry::Fragment;
     int localSizeX = 8;   // compute only
     int localSizeY = 8;   // compute only
-    ShaderDefines extraDefines;   // e.g. RAYLAB_INJECT_NONFINITE for tests of the NaN guard
+    ShaderDefines extraDefines;   // names from kTracerDefines (tracer_defines.h), e.g. RAYLAB_DEBUG_VIEWS
     bool specialise = true;       // compile for the scene's features (false: all features on)
 };
 

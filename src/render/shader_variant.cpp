@@ -2,6 +2,7 @@
 
 #include "render/gpu_scene.h"
 #include "render/light_list.h"
+#include "render/tracer_defines.h"
 
 #include <algorithm>
 #include <string>
@@ -58,24 +59,24 @@ SceneFeatures sceneFeatures(const Scene& scene) {
 SceneFeatures allFeatures() { return SceneFeatures{}; }
 
 ShaderDefines featureDefines(const SceneFeatures& f) {
-    ShaderDefines d = {{"RAYLAB_FEATURES_SPECIALISED", "1"}};
-    if (f.spheres) d.emplace_back("RAYLAB_FEATURE_SPHERES", "1");
-    if (f.meshes) d.emplace_back("RAYLAB_FEATURE_MESHES", "1");
-    if (f.smoothNormals) d.emplace_back("RAYLAB_FEATURE_SMOOTH_NORMALS", "1");
-    if (f.depthOfField) d.emplace_back("RAYLAB_FEATURE_DOF", "1");
-    if (f.textures) d.emplace_back("RAYLAB_FEATURE_TEXTURES", "1");
-    if (f.linearTopLevel) d.emplace_back("RAYLAB_TOP_LEVEL_LINEAR", "1");
-    if (f.showMipLevel) d.emplace_back("RAYLAB_SHOW_MIP_LEVEL", "1");
-    if (f.nee) d.emplace_back("RAYLAB_NEE", "1");
-    if (f.generalBsdf) d.emplace_back("RAYLAB_GENERAL_BSDF", "1");
-    if (f.skyMap) d.emplace_back("RAYLAB_SKY_MAP", "1");
-    if (f.textures && f.roughnessTextures) d.emplace_back("RAYLAB_TEXTURE_ROUGHNESS", "1");
-    if (f.textures && f.metallicTextures) d.emplace_back("RAYLAB_TEXTURE_METALLIC", "1");
-    if (f.textures && f.emissionTextures) d.emplace_back("RAYLAB_TEXTURE_EMISSION", "1");
-    if (f.textures && f.textureWrapModes) d.emplace_back("RAYLAB_TEXTURE_WRAP_MODES", "1");
-    if (f.stage != RenderStage::Full) d.emplace_back("RAYLAB_STAGE", std::to_string(int(f.stage)));
-    if (f.emissiveTriangles) d.emplace_back("RAYLAB_EMISSIVE_TRIANGLES", "1");
-    if (f.lightPowerSelection) d.emplace_back("RAYLAB_LIGHT_POWER_SELECTION", "1");
+    ShaderDefines d = {{tracerDefine("RAYLAB_FEATURES_SPECIALISED"), "1"}};
+    if (f.spheres) d.emplace_back(tracerDefine("RAYLAB_FEATURE_SPHERES"), "1");
+    if (f.meshes) d.emplace_back(tracerDefine("RAYLAB_FEATURE_MESHES"), "1");
+    if (f.smoothNormals) d.emplace_back(tracerDefine("RAYLAB_FEATURE_SMOOTH_NORMALS"), "1");
+    if (f.depthOfField) d.emplace_back(tracerDefine("RAYLAB_FEATURE_DOF"), "1");
+    if (f.textures) d.emplace_back(tracerDefine("RAYLAB_FEATURE_TEXTURES"), "1");
+    if (f.linearTopLevel) d.emplace_back(tracerDefine("RAYLAB_TOP_LEVEL_LINEAR"), "1");
+    if (f.showMipLevel) d.emplace_back(tracerDefine("RAYLAB_SHOW_MIP_LEVEL"), "1");
+    if (f.nee) d.emplace_back(tracerDefine("RAYLAB_NEE"), "1");
+    if (f.generalBsdf) d.emplace_back(tracerDefine("RAYLAB_GENERAL_BSDF"), "1");
+    if (f.skyMap) d.emplace_back(tracerDefine("RAYLAB_SKY_MAP"), "1");
+    if (f.textures && f.roughnessTextures) d.emplace_back(tracerDefine("RAYLAB_TEXTURE_ROUGHNESS"), "1");
+    if (f.textures && f.metallicTextures) d.emplace_back(tracerDefine("RAYLAB_TEXTURE_METALLIC"), "1");
+    if (f.textures && f.emissionTextures) d.emplace_back(tracerDefine("RAYLAB_TEXTURE_EMISSION"), "1");
+    if (f.textures && f.textureWrapModes) d.emplace_back(tracerDefine("RAYLAB_TEXTURE_WRAP_MODES"), "1");
+    if (f.stage != RenderStage::Full) d.emplace_back(tracerDefine("RAYLAB_STAGE"), std::to_string(int(f.stage)));
+    if (f.emissiveTriangles) d.emplace_back(tracerDefine("RAYLAB_EMISSIVE_TRIANGLES"), "1");
+    if (f.lightPowerSelection) d.emplace_back(tracerDefine("RAYLAB_LIGHT_POWER_SELECTION"), "1");
     return d;
 }
 

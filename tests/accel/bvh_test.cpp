@@ -5,6 +5,7 @@
 #include "scene/transform.h"
 #include "scene/scene_loader.h"
 #include "support/gl_test.h"
+#include "support/far_objects.h"
 #include "support/gpu_trace.h"
 
 #include <gtest/gtest.h>
@@ -267,3 +268,31 @@ TEST_F(BvhGpuTest, LinearTopLevelMatchesBruteForceWithAndWithoutMeshes) {
     }
 }
 
+
+TEST_F(BvhGpuTest, HugeCoordinatesThroughTheGpuBvhHaveNoMissesAndNoNan) {
+    // The scene and rays of IntersectionStress.HugeCoordinatesThroughTheBvh* (unit spheres and
+    // triangles up to 10^6 from the origin, placed by coordinates or translations) through the
+    // shader on the GPU, whose float arithmetic may differ from the CPU's (fused multiply-adds):
+    // every ray that must hit its object finds it, at a finite t, and every hit is finite.
+    const Scene scene = test::farObjectsScene(400, 9);
+    GpuScene gpu;
+    gpu.upload(scene);
+    const std::vector<test::AimedRay> aimed = test::raysAtEachObject(gpu.geometry(), 100, 10);
+    std::vector<test::TestRay> rays;
+    for (const test::AimedRay& a : aimed)
+        rays.push_back({glm::vec4(a.ray.origin, 0.0f), glm::vec4(a.ray.dir, 10.0f)});
+    const std::vector<test::GpuTraceResult> results = test::gpuTrace(gpu, rays);
+    int missing = 0, demanded = 0, nonFinite = 0, notOccluding = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const test::GpuTraceResult& r = results[i];
+        nonFinite += !std::isfinite(r.t);
+        if (!aimed[i].mustHit) continue;
+        ++demanded;
+        missing += r.t < 0.0f || r.instance != aimed[i].instance;
+        notOccluding += !r.occluded;   // the object is met at t <= 1 < tMax = 10
+    }
+    EXPECT_EQ(nonFinite, 0);
+    EXPECT_EQ(missing, 0) << "of " << demanded << " demanded hits";
+    EXPECT_EQ(notOccluding, 0);
+    EXPECT_GT(demanded, 30000);
+}

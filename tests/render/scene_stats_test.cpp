@@ -61,17 +61,17 @@ TEST(SceneStats, CornellBoxCountsWhatTheFileHolds) {
 TEST(SceneStats, TextureMemoryCountsEveryMipLevelAsFloatRgba) {
     const Scene scene = loadScene(test::scenePath("textured_bricks.json"));
     const SceneStats s = sceneStats(scene, buildSceneGeometry(scene));
-    EXPECT_EQ(s.objects, 5u);
-    EXPECT_EQ(s.spheres, 3u);
+    EXPECT_EQ(s.objects, 6u);
+    EXPECT_EQ(s.spheres, 4u);
     EXPECT_EQ(s.instances, 2u);
     EXPECT_EQ(s.triangles, 12u + 2u);
     EXPECT_EQ(s.emissiveSpheres, 1u);   // the lamp
     EXPECT_EQ(s.emissiveTriangles, 0u);
     // bricks.ppm (sRGB albedo, shared by two materials) and bricks_normal.ppm (linear): two
     // 128 x 128 pyramids of 128² + 64² + ... + 1 = 21845 texels, 16 bytes each, and the table
-    // (header, 5 materials, 2 textures) of 16-byte rows.
+    // (header, 6 materials, 2 textures) of 16-byte rows.
     EXPECT_EQ(s.textures, 2u);
-    EXPECT_EQ(s.textureBytes, 2u * 21845u * 16u + (1u + 5u + 2u) * 16u);
+    EXPECT_EQ(s.textureBytes, 2u * 21845u * 16u + (1u + 6u + 2u) * 16u);
     EXPECT_EQ(formatBytes(s.textureBytes), "682.8 KiB");
 }
 

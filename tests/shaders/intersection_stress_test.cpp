@@ -9,6 +9,8 @@
 #include "shaders/include/sampling.glsl"
 #include "shaders/include/sphere.glsl"
 #include "shaders/include/triangle.glsl"
+#include "support/far_objects.h"
+#include "support/stress_sampler.h"
 
 #include <gtest/gtest.h>
 
@@ -19,18 +21,7 @@ using namespace raylab::glsl;
 
 namespace {
 
-struct Sampler {
-    Rng rng;
-    float next() { return rngNextFloat(rng); }
-    vec2 next2() { return rngNext2(rng); }
-    // Log-uniform in [lo, hi].
-    float logUniform(float lo, float hi) { return std::exp(std::log(lo) + (std::log(hi) - std::log(lo)) * next()); }
-    vec3 unitVector() {
-        const vec2 u = next2();
-        const float z = 1 - 2 * u.x, s = std::sqrt(std::max(0.0f, 1 - z * z));
-        return vec3(s * std::cos(2 * PI * u.y), s * std::sin(2 * PI * u.y), z);
-    }
-};
+using Sampler = raylab::test::StressSampler;
 
 bool finite(vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -124,14 +115,42 @@ TEST(IntersectionStress, ThousandShapesAtScales1eMinus4To1e4HaveNoSelfHits) {
     EXPECT_EQ(representableMisses, 0) << "missing geometry";
 }
 
+namespace {
+
+// A bound on the distance between the float hit point (intersectSphere, then sphereSurfacePoint)
+// and the double-precision one, for a ray from o (float inputs, the same for both), derived from
+// float rounding in the manner of pbrt-v4 §6.8 (γ(n): n chained roundings):
+//  - the foot of the perpendicular l = f + (b'/a)·d is computed from quantities of size |f|,
+//    f = o − c, in about 10 roundings: the float line is the exact line displaced by at most
+//    δ = γ(10)·|f| (the float direction itself is shared, so it adds nothing). Two lines δ apart
+//    meet the sphere at points at most δ + |Δh| apart, h = √(r² − ρ²) the half-chord, and
+//    |Δh| = |ρ1² − ρ2²| / (h1 + h2) ≤ min(2δ/cosθ, √(2rδ)) (θ the incidence angle: the error
+//    grows towards the silhouette, where it is capped by the square root);
+//  - t = c/q or q/a, each a handful of roundings from the same quantities: the point moves along
+//    the ray by at most γ(10)·|f|, which re-projection onto the sphere enlarges by at most
+//    r / (r − γ(10)·|f|);
+//  - the re-projection and adding the centre back: sphereHitError (pbrt-v4 Sphere).
+double sphereHitPointBound(glm::dvec3 o, glm::dvec3 c, double r, double cosTheta) {
+    const double delta = double(gammaBound(10.0f)) * glm::length(o - c);
+    const double chord = std::min(2.0 * delta / std::max(cosTheta, 1e-300), std::sqrt(2.0 * r * delta));
+    const double along = delta * r / (r - delta);
+    return delta + chord + along + double(glm::length(sphereHitError(vec3(c), float(r))));
+}
+
+} // namespace
+
 TEST(IntersectionStress, SphereHitPointsAgreeWithDoubleWithinTheirErrorBound) {
     // Radius / distance from 1e-1 to 1e-5 and grazing rays within ±1e-4·r of the silhouette: the
-    // float hit point (re-projected) lies within sphereHitError of the double-precision one, and
-    // hit/miss agrees except within float rounding of the silhouette.
+    // float hit point (re-projected) lies within sphereHitError of the sphere, and within
+    // sphereHitPointBound (above, from float rounding) of the double-precision hit point;
+    // hit/miss agrees except within float rounding of the silhouette. The textbook quadratic
+    // (b² − ac, which cancels catastrophically for small far spheres) must break the bound: it
+    // is tight enough to tell a precise intersector from a naive one.
     Sampler s{rngCreate(uvec2(6, 2), 0u, 8u)};
-    double worstRelativeError = 0.0;
+    double worstRelativeError = 0.0, worstOfBound = 0.0;
+    int textbookOutOfBound = 0, textbookHits = 0;
     for (double ratio : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5}) {
-        int outOfBound = 0, disagreements = 0, hits = 0, undecided = 0;
+        int outOfBound = 0, farFromReference = 0, disagreements = 0, hits = 0, undecided = 0;
         const vec3 center = s.unitVector();   // distance 1 from the origin
         const float radius = float(ratio);
         for (int i = 0; i < 20000; ++i) {
@@ -148,34 +167,52 @@ TEST(IntersectionStress, SphereHitPointsAgreeWithDoubleWithinTheirErrorBound) {
             const double r2 = double(radius) * double(radius);
             const bool refHit = perp2 < r2;
             const float t = intersectSphere(ray, center, radius, 0.0f, FLOAT_MAX);
-                // Within float rounding of the silhouette either answer is right: the distance from
+            // Within float rounding of the silhouette either answer is right: the distance from
             // the centre to the line is computed from coordinates of size 1 (16 ulps of 1).
             const bool decided = std::abs(std::sqrt(perp2) - double(radius)) > 1e-6;
             undecided += !decided;
             if (decided && (t > 0.0f) != refHit) ++disagreements;
-            if (t > 0.0f && refHit) {
-                ++hits;
-                const glm::dvec3 pRef = (along - std::sqrt(std::max(0.0, r2 - perp2))) * d;
+            if (refHit) {
+                const double halfChord = std::sqrt(std::max(0.0, r2 - perp2));
+                const glm::dvec3 pRef = (along - halfChord) * d;
                 const glm::dvec3 pRefOnSphere = c + double(radius) * glm::normalize(pRef - c);
-                const vec3 p = sphereSurfacePoint(rayAt(ray, t), center, radius);
-                const vec3 bound = sphereHitError(center, radius);
-                // The re-projected point must lie on the sphere within the error bound.
-                const double radial = std::abs(glm::length(glm::dvec3(p) - c) - double(radius));
-                if (radial > double(glm::length(bound))) ++outOfBound;
-                worstRelativeError = std::max(worstRelativeError, glm::length(glm::dvec3(p) - pRefOnSphere) / double(radius));
+                const double bound = sphereHitPointBound(glm::dvec3(0.0), c, double(radius), halfChord / double(radius));
+                if (t > 0.0f) {
+                    ++hits;
+                    const vec3 p = sphereSurfacePoint(rayAt(ray, t), center, radius);
+                    // The re-projected point must lie on the sphere within the error bound.
+                    const double radial = std::abs(glm::length(glm::dvec3(p) - c) - double(radius));
+                    if (radial > double(glm::length(sphereHitError(center, radius)))) ++outOfBound;
+                    const double error = glm::length(glm::dvec3(p) - pRefOnSphere);
+                    if (error > bound) ++farFromReference;
+                    worstRelativeError = std::max(worstRelativeError, error / double(radius));
+                    worstOfBound = std::max(worstOfBound, error / bound);
+                }
+                // The textbook form, t = (b − √(b² − a·c)) / a with c = |f|² − r², in float.
+                const float a = dot(ray.dir, ray.dir), b = dot(center, ray.dir);
+                const float disc = b * b - a * (dot(center, center) - radius * radius);
+                if (disc >= 0.0f) {
+                    ++textbookHits;
+                    const vec3 p = sphereSurfacePoint(rayAt(ray, (b - std::sqrt(disc)) / a), center, radius);
+                    textbookOutOfBound += glm::length(glm::dvec3(p) - pRefOnSphere) > bound;
+                }
             }
         }
         EXPECT_EQ(disagreements, 0) << "r/d = " << ratio;
         EXPECT_EQ(outOfBound, 0) << "r/d = " << ratio;
+        EXPECT_EQ(farFromReference, 0) << "r/d = " << ratio;
         EXPECT_GT(hits, 1000) << "r/d = " << ratio;
         RecordProperty("undecided_at_" + std::to_string(ratio), undecided);
     }
-    // Distance between the float and the double hit point, relative to the radius: reported.
-    // It is dominated by rounding of the ray direction (1 ulp of 1 is 6e-8, i.e. 6e-3 of a
-    // radius of 1e-5) and grows near the silhouette, where a tiny change of the ray moves the
-    // hit point far along the sphere; the radial bound above is what offsetting relies on.
+    // Distance between the float and the double hit point, relative to the radius and to its
+    // bound: reported. It grows near the silhouette, where a tiny change of the line moves the hit
+    // point far along the sphere.
     RecordProperty("worst_relative_hit_point_error", std::to_string(worstRelativeError));
-    std::printf("sphere vs double: worst hit-point distance / radius = %.3g\n", worstRelativeError);
+    RecordProperty("worst_hit_point_error_over_bound", std::to_string(worstOfBound));
+    std::printf("sphere vs double: worst hit-point distance / radius = %.3g, / its bound = %.3g; "
+                "textbook quadratic: %d of %d hits out of bound\n",
+                worstRelativeError, worstOfBound, textbookOutOfBound, textbookHits);
+    EXPECT_GT(textbookOutOfBound, 100) << "of " << textbookHits;
 }
 
 namespace {
@@ -291,6 +328,108 @@ TEST(IntersectionStress, HugeCoordinatesDegenerateTrianglesAndZeroDirectionCompo
     EXPECT_EQ(missing, 0);
     EXPECT_EQ(nonFinite, 0);
     EXPECT_EQ(degenerateHits, 0);
+}
+
+TEST(IntersectionStress, HugeCoordinateSpheresAreHitAndLeftWithoutSelfHits) {
+    // Unit spheres with centres up to 10^6 from the origin (floats 0.0625 apart there), aimed at
+    // from 10 units at cosθ ≥ 0.1, axis-aligned directions (exact zero components) in a third of
+    // the cases: no NaN or Inf in t, the hit point or its error bound; a hit wherever the float
+    // ray passes within 0.999 r of the centre in double precision; and a ray leaving the offset
+    // hit point outwards (a quarter of them grazing) never hits the sphere again.
+    Sampler s{rngCreate(uvec2(9, 5), 0u, 9u)};
+    int missing = 0, nonFinite = 0, selfHits = 0, demanded = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const vec3 centre = s.unitVector() * s.logUniform(1.0f, 1e6f);
+        const float radius = 1.0f;
+        const vec3 normal = s.unitVector();
+        const vec3 target = centre + radius * normal;
+        vec3 back = sampleCosineHemisphere(s.next2());
+        back = normalize(vec3(back.x, back.y, std::max(back.z, 0.1f)));
+        vec3 dir = -10.0f * frameToWorld(frameFromNormal(normal), back);
+        if (i % 3 == 0) {   // along the axis nearest to the ray: two zero components
+            const vec3 a = abs(dir);
+            const int k = a.x > a.y && a.x > a.z ? 0 : (a.y > a.z ? 1 : 2);
+            const float sign = dir[k] < 0.0f ? -10.0f : 10.0f;
+            dir = vec3(0.0f);
+            dir[k] = sign;
+        }
+        const Ray ray(target - dir, dir);
+        const glm::dvec3 f = glm::dvec3(ray.origin) - glm::dvec3(centre), d = glm::normalize(glm::dvec3(ray.dir));
+        const bool mustHit = glm::length(f - glm::dot(f, d) * d) < 0.999 * radius && glm::dot(f, d) < 0.0;
+        demanded += mustHit;
+        const float t = intersectSphere(ray, centre, radius, 0.0f, FLOAT_MAX);
+        if (std::isnan(t) || std::isinf(t)) ++nonFinite;
+        if (!(t > 0.0f)) {
+            missing += mustHit;
+            continue;
+        }
+        const vec3 p = sphereSurfacePoint(rayAt(ray, t), centre, radius);
+        const vec3 n = normalize(p - centre);
+        const vec3 err = sphereHitError(centre, radius);
+        if (!finite(p) || !finite(n) || !finite(err)) {
+            ++nonFinite;
+            continue;
+        }
+        vec3 local = sampleCosineHemisphere(s.next2());
+        if (i % 4 == 0) local = normalize(vec3(local.x, local.y, 1e-3f));   // grazing
+        const Ray out(offsetRayOrigin(p, n, err), frameToWorld(frameFromNormal(n), local));
+        if (!finite(out.origin)) ++nonFinite;
+        selfHits += intersectSphere(out, centre, radius, 0.0f, FLOAT_MAX) > 0.0f;
+    }
+    EXPECT_EQ(nonFinite, 0);
+    EXPECT_EQ(missing, 0) << "of " << demanded << " demanded hits";
+    EXPECT_EQ(selfHits, 0);
+    EXPECT_GT(demanded, 15000);
+}
+
+TEST(IntersectionStress, HugeCoordinatesThroughTheBvhHaveNoMissesNoNanAndNoSelfHits) {
+    // The renderer's whole path for unit spheres and triangles up to 10^6 from the origin, placed
+    // by coordinates or by translations (support/far_objects.h), in one two-level BVH: 100 rays at
+    // each of 400 objects from 5 units away. A ray must find the object it was aimed at wherever
+    // the double-precision verdict says it passes inside by more than float rounding can move it
+    // (spheres: within 0.999 r; triangles: farther from the edges than the error bound of the
+    // origin carried into object space, 0.2 units at 10^6), with nothing else in the way (objects
+    // are 10 apart); t, the surface record and its error bound must be finite; a ray leaving the
+    // offset hit point towards the side it came from (a quarter grazing) must not hit the same
+    // primitive. The same rays through the GPU: BvhGpuTest.HugeCoordinates*.
+    const raylab::Scene scene = raylab::test::farObjectsScene(400, 9);
+    const raylab::SceneGeometry g = raylab::buildSceneGeometry(scene);
+    cpuTraversal.geometry = &g;
+    Sampler s{rngCreate(uvec2(9, 6), 0u, 9u)};
+    int missing = 0, demanded = 0, demandedTriangles = 0, nonFinite = 0, selfHits = 0, left = 0;
+    for (const raylab::test::AimedRay& a : raylab::test::raysAtEachObject(g, 100, 10)) {
+        demanded += a.mustHit;
+        demandedTriangles += a.mustHit && g.instances[a.instance].info.x == INSTANCE_MESH;
+        TraceRecord rec{};
+        const bool hit = traceScene(a.ray, FLOAT_MAX, false, rec);
+        if (hit && !std::isfinite(rec.t)) ++nonFinite;
+        if (!hit || rec.instance != a.instance) {
+            missing += a.mustHit;
+            continue;
+        }
+        const SurfaceHit surface = surfaceAt(a.ray, rec);
+        if (!finite(surface.position) || !finite(surface.normal) || !finite(surface.error)) {
+            ++nonFinite;
+            continue;
+        }
+        const vec3 n = dot(surface.normal, a.ray.dir) < 0.0f ? surface.normal : -surface.normal;
+        vec3 local = sampleCosineHemisphere(s.next2());
+        if (left % 4 == 0) local = normalize(vec3(local.x, local.y, 1e-3f));
+        const Ray out(offsetRayOrigin(surface.position, n, surface.error), frameToWorld(frameFromNormal(n), local));
+        ++left;
+        if (!finite(out.origin)) ++nonFinite;
+        TraceRecord again{};
+        selfHits += traceScene(out, FLOAT_MAX, false, again) && again.instance == rec.instance &&
+                    again.primitive == rec.primitive;
+    }
+    cpuTraversal.geometry = nullptr;
+    std::printf("huge coordinates through the BVH: %d demanded hits (%d on triangles), %d missing, %d rays left, "
+                "%d self-hits\n", demanded, demandedTriangles, missing, left, selfHits);
+    EXPECT_EQ(nonFinite, 0);
+    EXPECT_EQ(missing, 0) << "of " << demanded << " demanded hits";
+    EXPECT_EQ(selfHits, 0) << "of " << left << " rays";
+    EXPECT_GT(demandedTriangles, 15000);
+    EXPECT_GT(demanded, 30000);
 }
 
 TEST(IntersectionStress, BoxTestWithZeroComponentsAndOriginsOnSlabPlanes) {

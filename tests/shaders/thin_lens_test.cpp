@@ -1,7 +1,7 @@
 // The thin-lens camera's maths on the CPU (shaders/include/camera.glsl).
 #include "shaders/include/camera.glsl"
 #include "shaders/include/random.glsl"
-#include "support/statistics.h"
+#include "support/disk_histogram.h"
 
 #include <gtest/gtest.h>
 
@@ -10,38 +10,34 @@ using namespace raylab::glsl;
 
 TEST(ShaderThinLens, LensSamplesAreUniformOnTheDiskChiSquare) {
     // Ray origins of the real thin-lens code, in lens coordinates, histogrammed on a 21 × 21 grid
-    // over the disk's bounding square; expected counts from each cell's area inside the disk
-    // (64 × 64 sub-cells). Cells outside the disk must stay empty. α = 0.01.
+    // over the disk's bounding square (support/disk_histogram.h). Cells outside the disk must stay
+    // empty. α = 0.01. The same test of the shader on the GPU: GpuSamplingTest.LensDisk*.
     const CameraBasis cam = cameraBasis(vec3(1, 2, 3), vec3(1, 2, -3), vec3(0, 1, 0), 40.0f, 1.5f);
     const float radius = 0.25f;
-    const int n = 21, samples = 1000000, sub = 64;
-    std::vector<double> observed(n * n, 0.0), expected(n * n, 0.0);
+    const int samples = 1000000;
+    test::DiskHistogram disk;
     Rng rng = rngCreate(uvec2(3, 1), 0u, 11u);
     for (int i = 0; i < samples; ++i) {
         const vec2 ndc = 2.0f * rngNext2(rng) - vec2(1.0f);
         const Ray r = cameraRayThinLens(cam, ndc, rngNext2(rng), radius, 5.0f);
         const vec3 d = r.origin - cam.origin;
-        const float x = dot(d, cam.right) / radius, y = dot(d, cam.up) / radius;   // in [-1, 1]
         ASSERT_NEAR(dot(d, cam.forward), 0.0f, 1e-6f) << "the lens lies across the view";
-        const int cx = std::min(n - 1, int((x + 1.0f) * 0.5f * n));
-        const int cy = std::min(n - 1, int((y + 1.0f) * 0.5f * n));
-        observed[std::size_t(cy * n + cx)] += 1.0;
+        disk.add(dot(d, cam.right) / radius, dot(d, cam.up) / radius);
     }
-    for (int cy = 0; cy < n; ++cy)
-        for (int cx = 0; cx < n; ++cx) {
-            int inside = 0;
-            for (int sy = 0; sy < sub; ++sy)
-                for (int sx = 0; sx < sub; ++sx) {
-                    const double x = -1.0 + 2.0 * (cx + (sx + 0.5) / sub) / n;
-                    const double y = -1.0 + 2.0 * (cy + (sy + 0.5) / sub) / n;
-                    inside += x * x + y * y <= 1.0;
-                }
-            const double cellArea = (2.0 / n) * (2.0 / n) * inside / double(sub * sub);
-            expected[std::size_t(cy * n + cx)] = samples * cellArea / PI;
-        }
-    const test::ChiSquareResult r = test::chiSquareTest(observed, expected);
+    const test::ChiSquareResult r = disk.chiSquare();
     EXPECT_FALSE(r.sampleInZeroCell);
     EXPECT_GT(r.pValue, 0.01) << "chi2 " << r.statistic << " dof " << r.dof;
+}
+
+TEST(ShaderThinLens, DiskChiSquareRejectsTheNaivePolarMap) {
+    // The test must be able to fail: r = u1, θ = 2π·u2 crowds the centre (pdf 1 / (2π r)).
+    test::DiskHistogram disk;
+    Rng rng = rngCreate(uvec2(4, 1), 0u, 12u);
+    for (int i = 0; i < 1000000; ++i) {
+        const vec2 u = rngNext2(rng);
+        disk.add(u.x * std::cos(2.0f * PI * u.y), u.x * std::sin(2.0f * PI * u.y));
+    }
+    EXPECT_LT(disk.chiSquare().pValue, 1e-6);
 }
 
 TEST(ShaderThinLens, RaysThroughAPixelMeetOnTheFocusPlaneAndZeroApertureIsThePinhole) {

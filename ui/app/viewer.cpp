@@ -139,9 +139,9 @@ Viewer::Variant Viewer::variantFor(DebugView view) {
 std::unique_ptr<PathTracer> Viewer::compileVariant(Variant v) {
     TracerOptions o;
     o.entry = TracerEntry::Fragment;   // bands need the scissor of the fragment entry
-    if (v == kMoments) o.extraDefines.emplace_back("RAYLAB_DEBUG_MOMENTS", "1");
-    if (v == kViews || v == kCounts) o.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
-    if (v == kCounts) o.extraDefines.emplace_back("RAYLAB_COUNT_TRAVERSAL", "1");
+    if (v == kMoments) o.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_MOMENTS"), "1");
+    if (v == kViews || v == kCounts) o.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_VIEWS"), "1");
+    if (v == kCounts) o.extraDefines.emplace_back(tracerDefine("RAYLAB_COUNT_TRAVERSAL"), "1");
     auto tracer = std::make_unique<PathTracer>(o);
     // The tracer compiles its program for a scene's features: do it here, so a shader error
     // surfaces while the previous tracer still runs.
