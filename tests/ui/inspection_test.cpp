@@ -35,6 +35,19 @@ protected:
         for (int i = 0; i < 100000 && !viewer->converged(); ++i) viewer->update(1e-5);
         ASSERT_TRUE(viewer->converged());
     }
+    // The paths recorded at pixel (x, y) after `done` samples (mean `before`) are the samples it
+    // takes next: traced on, its mean takes exactly their values.
+    void expectPixelTakesTheValues(int x, int y, glm::vec4 before, int done, const std::vector<PathRecord>& paths,
+                                   const std::string& where) {
+        const int spp = done + int(paths.size());
+        ASSERT_TRUE(viewer->set("render.spp", std::to_string(spp)));   // no restart: spp is a stop condition
+        traceToTarget();
+        glm::vec3 sum(0.0f);
+        for (const PathRecord& p : paths) sum += p.value;
+        const glm::vec3 expected = (glm::vec3(before) * float(done) + sum) / float(spp);
+        const glm::vec4 after = viewer->pixelValue(x, y);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(after[c], expected[c], 1e-5f * (1.0f + expected[c])) << where << " " << c;
+    }
     Log log{false};
     std::unique_ptr<Viewer> viewer;
 };
@@ -47,16 +60,10 @@ TEST_F(InspectionTest, RecordedPathsAreTheSamplesTheViewerTracesNext) {
     const glm::vec4 before = viewer->pixelValue(x, y);
     viewer->inspection.pathCount = 4;
     ASSERT_TRUE(viewer->inspection.inspect(*viewer, x, y));
-    const auto& paths = viewer->inspection.paths();
+    const auto paths = viewer->inspection.paths();
     ASSERT_EQ(paths.size(), 4u);
     EXPECT_EQ(paths[0].sample, 4u);   // the next sample of the pixel's sequence
-    ASSERT_TRUE(viewer->set("render.spp", "8"));   // no restart: spp is a stop condition
-    traceToTarget();
-    glm::vec3 sum(0.0f);
-    for (const PathRecord& p : paths) sum += p.value;
-    const glm::vec3 expected = (glm::vec3(before) * 4.0f + sum) / 8.0f;
-    const glm::vec4 after = viewer->pixelValue(x, y);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(after[c], expected[c], 1e-5f * (1.0f + expected[c])) << c;
+    expectPixelTakesTheValues(x, y, before, 4, paths, "beauty");
 }
 
 // Under the bounce views (bounce k, direct, indirect) the inspector records through the same
@@ -86,13 +93,7 @@ TEST_F(InspectionTest, UnderTheBounceViewsTheValuesAreThePixelsOwn) {
         EXPECT_EQ(viewer->inspection.filter(), c.filter) << where;
         const auto paths = viewer->inspection.paths();
         notCounted += test::expectTermsMultiplyOut(paths, where).notCounted;
-        ASSERT_TRUE(viewer->set("render.spp", "20"));   // no restart: spp is a stop condition
-        traceToTarget();
-        glm::vec3 sum(0.0f);
-        for (const PathRecord& p : paths) sum += p.value;
-        const glm::vec3 expected = (glm::vec3(before) * 4.0f + sum) / 20.0f;
-        const glm::vec4 after = viewer->pixelValue(x, y);
-        for (int c3 = 0; c3 < 3; ++c3) EXPECT_NEAR(after[c3], expected[c3], 1e-5f * (1.0f + expected[c3])) << where << " " << c3;
+        expectPixelTakesTheValues(x, y, before, 4, paths, where);
     }
     EXPECT_GT(notCounted, 10) << "the views left terms out";
     // Views that trace no light paths record the beauty estimator.
@@ -138,12 +139,7 @@ TEST_F(InspectionTest, InspectionFollowsBounceStepping) {
     const glm::vec4 before = viewer->pixelValue(x, y);
     viewer->inspection.pathCount = 4;
     ASSERT_TRUE(viewer->inspection.inspect(*viewer, x, y));
-    glm::vec3 sum(0.0f);
-    for (const PathRecord& p : viewer->inspection.paths()) sum += p.value;
-    ASSERT_TRUE(viewer->set("render.spp", "8"));
-    traceToTarget();
-    const glm::vec3 expected = (glm::vec3(before) * 4.0f + sum) / 8.0f;
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(viewer->pixelValue(x, y)[c], expected[c], 1e-5f * (1.0f + expected[c])) << c;
+    expectPixelTakesTheValues(x, y, before, 4, viewer->inspection.paths(), "bounce step 2");
 }
 
 TEST_F(InspectionTest, ClicksInInspectModeInspectAndFollowingRecordsAgain) {
