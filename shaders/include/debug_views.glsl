@@ -41,7 +41,7 @@ bool debugKeepBounce(int bounce) {
     if (uDebugView == DEBUG_INDIRECT) return bounce >= 2;
     return true;
 }
-#define RAYLAB_ADD_RADIANCE(radiance, bounce, value) if (debugKeepBounce(bounce)) radiance += (value)
+#define RAYLAB_KEEP_BOUNCE(bounce) debugKeepBounce(bounce)
 
 vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays);   // integrator.glsl, included after this file
 

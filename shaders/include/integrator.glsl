@@ -47,10 +47,13 @@ bool skyByMap() { return false; }
 float skyLightPdf(vec3 dir) { return skyByMap() ? environmentPdf(dir) : UNIFORM_SPHERE_PDF; }
 
 // Every radiance contribution goes through this hook, so the viewer's bounce views
-// (debug_views.glsl) can keep only some bounces. By default: add it.
-#ifndef RAYLAB_ADD_RADIANCE
-#define RAYLAB_ADD_RADIANCE(radiance, bounce, value) radiance += (value)
+// (debug_views.glsl) can keep only some bounces: RAYLAB_KEEP_BOUNCE(bounce) says which (bounce 0:
+// the camera ray; a light sample taken at bounce k counts as k + 1). By default: all of them. The
+// path inspector records the same verdict with each term, so its sum matches the filtered value.
+#ifndef RAYLAB_KEEP_BOUNCE
+#define RAYLAB_KEEP_BOUNCE(bounce) true
 #endif
+#define RAYLAB_ADD_RADIANCE(radiance, bounce, value) if (RAYLAB_KEEP_BOUNCE(bounce)) radiance += (value)
 
 BsdfParams materialBsdf(GpuMaterial m) {
 #if RAYLAB_STAGE < RAYLAB_STAGE_GGX
@@ -127,6 +130,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         ++rays;
         bool found = intersectScene(ray, hit);
         RAYLAB_RECORD(recordSegment(bounce, ray, found, hit, beta));
+        RAYLAB_RECORD(recordCounted(bounce, RAYLAB_KEEP_BOUNCE(bounce), RAYLAB_KEEP_BOUNCE(bounce + 1)));
         if (!found) {
 #if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
             break;   // render.stage primary: black sky, as the albedo view
@@ -145,7 +149,10 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         }
         GpuMaterial m = materials[hit.material];
 #if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
-        return m.albedo.rgb;   // render.stage primary: the flat albedo of the first hit
+        // render.stage primary: the flat albedo of the first hit is the whole estimate (beta is 1).
+        RAYLAB_ADD_RADIANCE(radiance, bounce, beta * m.albedo.rgb);
+        RAYLAB_RECORD(recordStageAlbedo(bounce, m.albedo.rgb));
+        break;
 #endif
         vec3 Le = m.emission.rgb;
 #ifdef RAYLAB_FEATURE_TEXTURES
@@ -283,8 +290,11 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         }
 #endif
         vec3 dir = frameToWorld(frame, bs.wi);
-        RAYLAB_RECORD(recordBsdfSample(bounce, dir, bs.lobe, bsdfLobeProbability(bsdf, wo, bs.lobe),
-                                       bsdfEval(bsdf, wo, bs.wi), abs(bs.wi.z), bs.weight, bs.pdf, bs.delta));
+        // f·|cosθ| as the sampler used it (weight × pdf): a second bsdfEval of a narrow GGX lobe
+        // differs from the sampler's by rounding the peak amplifies (5e-5 at α 0.0025 on llvmpipe),
+        // and the inspector's columns must multiply out to the weight the throughput took.
+        RAYLAB_RECORD(recordBsdfSample(bounce, dir, bs.lobe, bsdfLobeProbability(bsdf, wo, bs.lobe), bs.weight * bs.pdf,
+                                       abs(bs.wi.z), bs.weight, bs.pdf, bs.delta));
         if (bs.lobe == LOBE_NONE) break;
         // As for light samples: the geometric surface must agree with the lobe's side.
         if ((bs.wi.z * wo.z > 0.0f) != (dot(dir, hit.normal) * arrivalSide > 0.0f)) break;

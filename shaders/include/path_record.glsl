@@ -13,7 +13,7 @@
 #include "light_sampling.glsl"   // powerHeuristic
 
 #ifdef RAYLAB_INSPECT_PATHS
-const int PR_VEC4S = 17;          // vec4s per bounce record
+const int PR_VEC4S = 19;          // vec4s per bounce record
 const int PR_ORIGIN = 0;          // ray origin xyz, w: 1 hit, 0 miss (the sky)
 const int PR_DIRECTION = 1;       // unit ray direction xyz, w: hit distance (0 for a miss)
 const int PR_POSITION = 2;        // hit point xyz, w: sphere index or triangle index
@@ -31,6 +31,10 @@ const int PR_LIGHT_DIR = 13;      // shadow ray direction xyz, w: distance to th
 const int PR_LIGHT_TERMS = 14;    // x: light pdf, y: BSDF pdf of that direction, z: MIS weight, w: light index
 const int PR_LIGHT_F = 15;        // f·|cosθ| towards the light rgb, w: |cosθ|
 const int PR_LIGHT_LE = 16;       // the light's radiance rgb
+const int PR_COUNTED = 17;        // 1 when the term counts toward the value, else 0 (the viewer's bounce
+                                  // views keep some bounces only): x emission (or stage albedo), y light sample
+const int PR_STAGE_ALBEDO = 18;   // render.stage primary: the first hit's flat albedo rgb (that stage's whole
+                                  // estimate), w: 1 when recorded
 const int PR_PATH_VEC4S = 4;      // per path: final value rgb + bounce records; sample index,
                                   // the pixel, truncated; camera ray origin; camera ray direction
 
@@ -97,6 +101,15 @@ void recordSegment(int bounce, Ray ray, bool hitSomething, Hit hit, vec3 beta) {
 
 void recordEmission(int bounce, vec3 Le, float w) { recordPut(bounce, PR_EMISSION, vec4(Le, w)); }
 
+// Whether this bounce's emission and its light sample (counted as bounce + 1) reach the value: the
+// integrator's RAYLAB_KEEP_BOUNCE, all true but in the viewer's bounce views.
+void recordCounted(int bounce, bool emission, bool light) {
+    recordPut(bounce, PR_COUNTED, vec4(emission ? 1.0f : 0.0f, light ? 1.0f : 0.0f, 0.0f, 0.0f));
+}
+
+// render.stage primary returns the first hit's albedo: the one term of that stage's estimate.
+void recordStageAlbedo(int bounce, vec3 albedo) { recordPut(bounce, PR_STAGE_ALBEDO, vec4(albedo, 1.0f)); }
+
 void recordShadingFrame(int bounce, vec3 ns) {
     if (!gRecording || bounce >= uInspectMaxRecords) return;
     vec4 v = inspectBounces[recordSlot(bounce, PR_SHADING)];
@@ -117,7 +130,8 @@ void recordLight(int bounce, int light, vec3 dir, float dist, vec3 Le, vec3 fCos
     recordPut(bounce, PR_LIGHT_LE, vec4(Le, 0.0f));
 }
 
-// The BSDF sample taken at this bounce (fCos = f·|cosθ|, from bsdfEval; for delta lobes the weight).
+// The BSDF sample taken at this bounce (fCos = f·|cosθ| as the sampler used it; for delta lobes
+// f is recorded as the weight).
 void recordBsdfSample(int bounce, vec3 dirWorld, int lobe, float lobeProbability, vec3 fCos, float cosTheta,
                       vec3 weight, float pdf, bool delta) {
     if (!gRecording || bounce >= uInspectMaxRecords) {

@@ -18,6 +18,12 @@ nlohmann::json bounceJson(const BounceRecord& b) {
     j["emission"] = vec(b.emission);
     j["emission_mis_weight"] = b.emissionWeight;
     j["emission_added"] = vec(b.emissionAdded());
+    if (b.hasStageAlbedo) {
+        j["stage_albedo"] = vec(b.stageAlbedo);
+        j["stage_albedo_added"] = vec(b.stageAlbedoAdded());
+    }
+    j["emission_counted"] = b.emissionCounted;
+    j["light_counted"] = b.lightCounted;
     if (b.hit) {
         j["distance"] = b.distance;
         j["position"] = vec(b.position);
@@ -115,6 +121,12 @@ std::vector<PathRecord> pathsFromJson(const nlohmann::json& json) {
             b.throughputBefore = readVec(jb.at("throughput_before"));
             b.emission = readVec(jb.at("emission"));
             b.emissionWeight = jb.at("emission_mis_weight").get<float>();
+            if (jb.contains("stage_albedo")) {
+                b.hasStageAlbedo = true;
+                b.stageAlbedo = readVec(jb["stage_albedo"]);
+            }
+            b.emissionCounted = jb.value("emission_counted", true);
+            b.lightCounted = jb.value("light_counted", true);
             if (b.hit) {
                 b.distance = jb.at("distance").get<float>();
                 b.position = readVec(jb.at("position"));
@@ -171,7 +183,8 @@ std::string pathsToCsv(const std::vector<PathRecord>& paths) {
     o << "path,sample,bounce,hit,px,py,pz,gnx,gny,gnz,snx,sny,snz,material,primitive,"
          "inx,iny,inz,outx,outy,outz,lobe,lobe_probability,fr,fg,fb,cos_theta,pdf,"
          "beta_before_r,beta_before_g,beta_before_b,beta_after_r,beta_after_g,beta_after_b,"
-         "emission_r,emission_g,emission_b,emission_mis_weight,"
+         "emission_r,emission_g,emission_b,emission_mis_weight,stage_albedo_r,stage_albedo_g,stage_albedo_b,"
+         "emission_counted,light_counted,"
          "light_status,light,light_tx,light_ty,light_tz,light_pdf,light_bsdf_pdf,light_mis_weight,"
          "light_r,light_g,light_b,rr_probability,rr_outcome,value_r,value_g,value_b\n";
     for (std::size_t i = 0; i < paths.size(); ++i) {
@@ -191,7 +204,10 @@ std::string pathsToCsv(const std::vector<PathRecord>& paths) {
             v3(b.throughputBefore);
             v3(b.throughputAfter);
             v3(b.emission);
-            o << ',' << b.emissionWeight << ',' << lightStatusName(b.lightStatus) << ',' << b.lightIndex;
+            o << ',' << b.emissionWeight;
+            v3(b.stageAlbedo);
+            o << ',' << int(b.emissionCounted) << ',' << int(b.lightCounted);
+            o << ',' << lightStatusName(b.lightStatus) << ',' << b.lightIndex;
             v3(b.shadowTarget(1.0f));
             o << ',' << b.lightPdf << ',' << b.lightBsdfPdf << ',' << b.lightMisWeight;
             v3(b.lightContribution);

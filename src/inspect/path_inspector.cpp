@@ -21,6 +21,10 @@ BounceRecord decodeBounce(const glm::vec4* s) {
     b.throughputBefore = xyz(s[kBetaBefore]);
     b.emission = xyz(s[kEmission]);
     b.emissionWeight = s[kEmission].w;
+    b.hasStageAlbedo = s[kStageAlbedo].w > 0.5f;
+    b.stageAlbedo = xyz(s[kStageAlbedo]);
+    b.emissionCounted = s[kCounted].x > 0.5f;
+    b.lightCounted = s[kCounted].y > 0.5f;
     if (b.hit) {
         b.position = xyz(s[kPosition]);
         b.primitive = int(s[kPosition].w);
@@ -67,7 +71,14 @@ BounceRecord decodeBounce(const glm::vec4* s) {
 TracerOptions PathInspector::inspectorOptions() {
     TracerOptions o;
     o.extraDefines.emplace_back(tracerDefine("RAYLAB_INSPECT_PATHS"), "1");
+    o.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_VIEWS"), "1");   // the bounce views' filter (uDebugView)
     return o;
+}
+
+void PathInspector::setBounceFilter(BounceFilter filter, int bounce) {
+    if (bounce < 0) throw std::invalid_argument("PathInspector: a bounce filter's bounce must be at least 0");
+    filter_ = filter;
+    filterBounce_ = bounce;
 }
 
 PathInspector::PathInspector(int maxRecords)
@@ -101,6 +112,8 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
     const ShaderProgram& p = tracer_->program();
     p.set("uInspectPixel", glm::ivec2(x, glY));
     p.set("uInspectMaxRecords", maxRecords_);
+    p.set("uDebugView", int(filter_));
+    p.set("uDebugBounce", filterBounce_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, buffers_[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, buffers_[1]);
     tracer_->reset();

@@ -3,7 +3,9 @@
 // estimator (inspect/path_record.h). It runs its own tracer variant, compiled with
 // RAYLAB_INSPECT_PATHS (shaders/include/path_record.glsl), over the pixel's row only; the
 // samples are the very ones the normal tracer takes (same seed, same sample indices), so the
-// recorded values are the contributions the pixel gets. Needs a current GL 4.5 context.
+// recorded values are the contributions the pixel gets. Under a bounce filter (the viewer's
+// bounce views) the values are those of that view, and each term says whether it counts. Needs a
+// current GL 4.5 context.
 #include "inspect/path_record.h"
 #include "render/path_tracer.h"
 #include "scene/scene.h"
@@ -13,6 +15,11 @@
 #include <vector>
 
 namespace raylab {
+
+// Which bounces' light the recorded value keeps, as the viewer's bounce views do
+// (shaders/include/debug_views.glsl, whose uDebugView numbers these are): all (the beauty
+// estimator), bounce k only, direct (bounces 0 and 1), indirect (bounces 2 and more).
+enum class BounceFilter { All = 0, Only = 7, Direct = 8, Indirect = 9 };
 
 class PathInspector {
 public:
@@ -27,15 +34,22 @@ public:
     // Samples [firstSample, firstSample + count) of image pixel (x, y), top-left origin.
     // Throws std::out_of_range for a pixel outside the image, std::logic_error before setScene.
     std::vector<PathRecord> record(int x, int y, int count, std::uint64_t firstSample = 0);
+    // Records the values a bounce view shows from now on (bounce: the k of BounceFilter::Only).
+    void setBounceFilter(BounceFilter filter, int bounce = 0);
+    BounceFilter bounceFilter() const { return filter_; }
+    int filterBounce() const { return filterBounce_; }
 
     const PathTracer& tracer() const { return *tracer_; }
     int maxRecords() const { return maxRecords_; }
-    // The define that turns the recorder on (for tests that render with the variant).
+    // The defines that turn the recorder on, with the bounce views' filter (for tests that render
+    // with the variant; uDebugView 0 traces the beauty image).
     static TracerOptions inspectorOptions();
 
 private:
     std::unique_ptr<PathTracer> tracer_;
     int maxRecords_;
+    BounceFilter filter_ = BounceFilter::All;
+    int filterBounce_ = 0;
     bool hasScene_ = false;
     unsigned buffers_[2] = {0, 0};   // bindings 20 (bounces) and 21 (paths)
     std::size_t capacity_ = 0;       // paths the buffers hold

@@ -26,7 +26,8 @@ glm::dvec3 PathRecord::sumOfTerms() const {
     glm::dvec3 sum(0.0);
     for (const BounceRecord& b : bounces) {
         const glm::dvec3 beta(b.throughputBefore);
-        sum += beta * (glm::dvec3(b.emission) * double(b.emissionWeight) + glm::dvec3(b.lightContribution));
+        if (b.emissionCounted) sum += beta * (glm::dvec3(b.emission) * double(b.emissionWeight) + glm::dvec3(b.stageAlbedo));
+        if (b.lightCounted) sum += beta * glm::dvec3(b.lightContribution);
     }
     return sum;
 }

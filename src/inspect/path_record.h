@@ -1,7 +1,9 @@
 #pragma once
 // One recorded sample path of the pixel path inspector: every term of the estimator at every
 // bounce, as the tracer computed them (shaders/include/path_record.glsl), read back by
-// PathInspector. The sample's value is Σ_k throughputBefore_k · (emission_k · w_k + light_k).
+// PathInspector. The sample's value is Σ_k throughputBefore_k · (emission_k · w_k + light_k), over
+// the terms that count (all but under the viewer's bounce views, which keep some bounces only);
+// under render.stage primary it is the first hit's albedo (stageAlbedo).
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -32,6 +34,14 @@ struct BounceRecord {
     // Emission found here (an emitter, or the sky for a miss) and its MIS weight.
     glm::vec3 emission{0.0f};
     float emissionWeight = 0.0f;
+    // render.stage primary: the first hit's flat albedo, that stage's whole estimate (no light at all).
+    bool hasStageAlbedo = false;
+    glm::vec3 stageAlbedo{0.0f};
+    // Whether this bounce's emission (or stage albedo) and its light sample count toward the value:
+    // the viewer's bounce views (debug view bounce k, direct, indirect) keep some bounces only; a
+    // light sample taken here counts as bounce k + 1.
+    bool emissionCounted = true;
+    bool lightCounted = true;
     // Throughput arriving here.
     glm::vec3 throughputBefore{0.0f};
     // Next-event estimation from here.
@@ -61,8 +71,10 @@ struct BounceRecord {
     float rrProbability = 0.0f;    // survival probability q
     int rrOutcome = -1;            // -1 not played, 0 killed, 1 survived
 
-    glm::vec3 emissionAdded() const { return throughputBefore * emission * emissionWeight; }
-    glm::vec3 lightAdded() const { return throughputBefore * lightContribution; }
+    // What each term adds to the value (0 when it does not count).
+    glm::vec3 emissionAdded() const { return emissionCounted ? throughputBefore * emission * emissionWeight : glm::vec3(0.0f); }
+    glm::vec3 stageAlbedoAdded() const { return emissionCounted ? throughputBefore * stageAlbedo : glm::vec3(0.0f); }
+    glm::vec3 lightAdded() const { return lightCounted ? throughputBefore * lightContribution : glm::vec3(0.0f); }
     // Where the shadow ray ends: the light's surface, or `skyLength` along it for the sky.
     glm::vec3 shadowTarget(float skyLength) const {
         return position + lightDirection * (lightDistance >= 0.0f ? lightDistance : skyLength);
@@ -76,7 +88,8 @@ struct PathRecord {
     glm::vec3 value{0.0f};         // what the sample added to the pixel's mean (before the NaN guard)
     bool truncated = false;        // more bounces than the buffer held
     std::vector<BounceRecord> bounces;
-    // Σ throughputBefore · (emission · w + light contribution), summed in double.
+    // Σ throughputBefore · (emission · w + stage albedo + light contribution) over the terms that
+    // count, summed in double.
     glm::dvec3 sumOfTerms() const;
 };
 

@@ -205,7 +205,7 @@ std::vector<MaterialParamSpec> buildMaterialTable() {
              Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.f0; });
     add(spec("transmission", T::Float, atLeast(0), atMost(1), "fraction",
-             "Fraction of the surface that is smooth glass of index ior (the rest is albedo / f0).",
+             "Fraction of the surface that is glass of index ior, smooth or rough by its roughness (the rest is albedo / f0).",
              Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.transmission; });
     add(spec("ior", T::Float, above(0), kAny, "",

@@ -58,7 +58,7 @@ struct Material {
     glm::vec3 albedo{0.8f};          // diffuse reflectance, each channel in [0, 1]
     float roughness = 1.0f;          // perceptual roughness r in [0, 1]; GGX alpha = r^2
     glm::vec3 f0{0.0f};              // specular reflectance at normal incidence; 0 = pure Lambert
-    float transmission = 0.0f;       // fraction that is smooth glass (dielectric of index ior)
+    float transmission = 0.0f;       // fraction that is glass (dielectric of index ior; rough by roughness)
     float ior = 1.5f;                // index of refraction inside / outside, > 0
     glm::vec3 emission{0.0f};        // emitted radiance colour
     float emissionStrength = 0.0f;   // multiplies emission; radiance = emission × strength

@@ -1,5 +1,7 @@
 #include "selftest/self_test.h"
 
+#include "shaders/include/light_sampling.glsl"
+
 #include "render/path_tracer.h"
 #include "render/progressive_render.h"
 #include "selftest/gpu_sampler.h"
@@ -86,6 +88,54 @@ SelfTestResult chiSquare(const std::string& name, const std::vector<GpuSample>& 
     return r;
 }
 
+// The sphere light's cone sampler seen from the origin: cells of equal solid angle over the cone
+// (equal steps of 1 − cosθ around the axis by equal steps of φ), each expecting N × pdf × its
+// solid angle, pdf the density the tracer divides by. A sample outside the cone (beyond float
+// rounding) fails outright.
+SelfTestResult sphereConeChiSquare(const GpuSampler& sampler, unsigned n, unsigned seed,
+                                   const std::function<double(glm::vec3, float)>& pdf, double alpha) {
+    const glm::vec3 axis = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    const glm::vec3 center = 2.5f * axis;
+    const float radius = 1.0f;
+    const double omcMax = double(glsl::sphereConeOneMinusCos(glm::vec3(0.0f), center, radius));
+    const glsl::Frame frame = glsl::frameFromNormal(axis);
+    constexpr int nt = 16, nphi = 32;
+    std::vector<double> observed(std::size_t(nt * nphi), 0.0);
+    const double cellSolidAngle = omcMax / nt * (2.0 * M_PI / nphi);
+    const std::vector<double> expected(observed.size(), double(n) * pdf(center, radius) * cellSolidAngle);
+    int outside = 0, nonFinite = 0;
+    for (const GpuSample& s : sampler.sphereCone(center, radius, n, seed)) {
+        const glm::vec3 w = s.wi();
+        if (!std::isfinite(w.x + w.y + w.z)) {
+            ++nonFinite;
+            continue;
+        }
+        const glm::vec3 l = glsl::frameToLocal(frame, w);
+        const double omc = 1.0 - double(l.z);
+        if (omc > omcMax * (1.0 + 1e-3) + 1e-6) {
+            ++outside;
+            continue;
+        }
+        double phi = std::atan2(double(l.y), double(l.x));
+        if (phi < 0) phi += 2 * M_PI;
+        observed[std::size_t(std::clamp(int(omc / omcMax * nt), 0, nt - 1) * nphi +
+                             std::min(int(phi / (2 * M_PI) * nphi), nphi - 1))] += 1.0;
+    }
+    const stats::ChiSquareResult chi = stats::chiSquareTest(observed, expected);
+    SelfTestResult r;
+    r.name = "sphere light cone";
+    r.kind = "chi2";
+    r.alpha = alpha;
+    r.statistic = chi.statistic;
+    r.dof = chi.dof;
+    r.pValue = chi.pValue;
+    r.pass = chi.pValue > alpha && outside == 0 && nonFinite == 0;
+    if (outside > 0) r.detail = std::to_string(outside) + " samples outside the cone";
+    else if (nonFinite > 0) r.detail = std::to_string(nonFinite) + " non-finite samples";
+    else if (!r.pass) r.detail = "the samples do not follow the pdf";
+    return r;
+}
+
 SelfTestResult failed(const std::string& name, const std::string& why) {
     SelfTestResult r;
     r.name = name;
@@ -114,9 +164,13 @@ SelfTestReport runSelfTest(const SelfTestOptions& o) {
     const auto bsdfPdf = o.bsdfPdf ? o.bsdfPdf : [](const glsl::BsdfParams& m, glm::vec3 wo, glm::vec3 wi) {
         return double(glsl::bsdfPdf(m, wo, wi));
     };
+    const auto conePdf = o.sphereConePdf ? o.sphereConePdf : [](glm::vec3 c, float r) {
+        return double(glsl::sphereConePdf(glm::vec3(0.0f), c, r));
+    };
     // GGX visible normals of a metal (F = 1, no diffuse lobe) at (α, cos θo).
     const float cases[][2] = {{0.1f, 0.9f}, {0.3f, 0.5f}, {0.6f, 0.2f}};
-    const int tests = 1 + int(std::size(cases));
+    // Cosine, the GGX cases, rough glass, the sphere cone.
+    const int tests = 1 + int(std::size(cases)) + 2;
     const double alpha = stats::sidak(o.alpha, tests);
     try {
         const GpuSampler sampler;
@@ -134,6 +188,17 @@ SelfTestReport runSelfTest(const SelfTestOptions& o) {
             report.results.push_back(chiSquare(name, sampler.bsdf(m, wo, o.samples, ++seed), grid,
                                                [&](glm::vec3 w) { return bsdfPdf(m, wo, w); }, alpha));
         }
+        {
+            // Rough glass (Walter et al. 2007), reflection and refraction together, from outside;
+            // the cells centred on the refracted direction.
+            const float a = 0.25f, mu = 0.7f;
+            const glsl::BsdfParams m(glm::vec3(0.0f), glm::vec3(0.0f), a, 1.0f, 1.5f);
+            const glm::vec3 wo(std::sqrt(1.0f - mu * mu), 0.0f, mu);
+            const LobeGrid grid(glm::normalize(refractionLobeCentre(wo, 1.5f)), 2.0f * a);
+            report.results.push_back(chiSquare("rough glass a=0.25 cos=0.7", sampler.bsdf(m, wo, o.samples, ++seed), grid,
+                                               [&](glm::vec3 w) { return bsdfPdf(m, wo, w); }, alpha));
+        }
+        report.results.push_back(sphereConeChiSquare(sampler, o.samples, ++seed, conePdf, alpha));
     } catch (const std::exception& e) {
         report.results.push_back(failed("GLSL samplers", e.what()));
     }

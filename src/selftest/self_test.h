@@ -1,7 +1,8 @@
 #pragma once
 // One-click self-test on the user's own GL driver (the viewer's Self-test panel): the white
 // furnace through the real tracer, and χ² tests of the real GLSL samplers (cosine hemisphere,
-// GGX visible normals at a few (α, θ)) against their pdfs. Needs a current GL 4.5 context.
+// GGX visible normals at a few (α, θ), rough glass, the sphere light's cone) against their pdfs.
+// Needs a current GL 4.5 context.
 #include "shaders/include/bsdf.glsl"
 
 #include <functional>
@@ -36,6 +37,8 @@ struct SelfTestOptions {
     // (what the tracer divides by). Tests pass wrong ones to check that the self-test can fail.
     std::function<double(float cosTheta)> cosinePdf;
     std::function<double(const glsl::BsdfParams&, glm::vec3 wo, glm::vec3 wi)> bsdfPdf;
+    // Solid-angle density of the sphere light's cone sampler seen from the origin.
+    std::function<double(glm::vec3 center, float radius)> sphereConePdf;
 };
 
 // Runs every test; exceptions (a shader that fails to compile) become a failed result.

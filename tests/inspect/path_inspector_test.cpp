@@ -1,7 +1,9 @@
 // The pixel path inspector: the recorded terms reproduce each sample's value, the recorded path
 // agrees with a CPU computation of the same path, and recording changes nothing in the image.
+#include "inspect/path_checks.h"
 #include "inspect/path_export.h"
 #include "inspect/path_inspector.h"
+#include "inspect/path_record_layout.h"
 #include "render/path_tracer.h"
 #include "scene/scene_loader.h"
 #include "support/gl_test.h"
@@ -55,22 +57,10 @@ void expectNear3(glm::vec3 a, glm::vec3 b, float tol, const std::string& what) {
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], tol) << what << " component " << i;
 }
 
-// Relative to the sum of the terms' magnitudes: float rounding of a sum is bounded by that.
-void expectTermsMultiplyOut(const std::vector<PathRecord>& paths, const std::string& where) {
-    for (const PathRecord& p : paths) {
-        ASSERT_FALSE(p.truncated) << where;
-        const glm::dvec3 sum = p.sumOfTerms();
-        glm::dvec3 magnitude(0.0);
-        for (const BounceRecord& b : p.bounces)
-            magnitude += glm::abs(glm::dvec3(b.emissionAdded())) + glm::abs(glm::dvec3(b.lightAdded()));
-        for (int c = 0; c < 3; ++c)
-            EXPECT_NEAR(sum[c], double(p.value[c]), 1e-5 * magnitude[c] + 1e-12)
-                << where << " sample " << p.sample << " channel " << c << " bounces " << p.bounces.size();
-    }
-}
-
 using PathInspectorTest = GlTest;
 
+// Every scene case and every render stage: the recorded terms multiply out to the sample's value,
+// and the throughput chains through the bounces (path_checks.h).
 TEST_F(PathInspectorTest, RecordedTermsMultiplyOutToTheSampleValue) {
     struct Case {
         const char* scene;
@@ -80,9 +70,21 @@ TEST_F(PathInspectorTest, RecordedTermsMultiplyOutToTheSampleValue) {
         {"lesson_one_sphere.json", {"render.nee=false"}},
         {"lesson_one_sphere.json", {"render.nee=true", "render.mis=true"}},
         {"lesson_one_sphere.json", {"render.nee=true", "render.mis=false"}},
+        // GGX plastic and metals, rough and smooth glass, a mirror (spheres).
         {"materials.json", {"render.nee=true"}},
+        {"materials.json", {"render.nee=false"}},
+        // Meshes, an emissive triangle light.
         {"cornell_box.json", {"render.nee=true"}},
+        // Every render stage (render.stage): primary returns the albedo, emission stops at the
+        // first hit, lambert and ggx path-trace, textures and full on scenes that use them.
+        {"materials.json", {"render.stage=primary"}},
+        {"materials.json", {"render.stage=emission"}},
+        {"materials.json", {"render.stage=lambert"}},
+        {"materials.json", {"render.stage=ggx"}},
+        {"material_textures.json", {"render.stage=textures"}},
+        {"depth_of_field.json", {"render.stage=full"}},
     };
+    PathCheckCounts total;
     int nonZero = 0, withLight = 0;
     for (const Case& c : cases) {
         std::vector<std::string> o = c.overrides;
@@ -91,22 +93,55 @@ TEST_F(PathInspectorTest, RecordedTermsMultiplyOutToTheSampleValue) {
         const Scene scene = loadScene(scenePath(c.scene), o);
         PathInspector inspector;
         inspector.setScene(scene);
-        for (auto [x, y] : {std::pair{16, 10}, std::pair{5, 15}, std::pair{28, 3}}) {
+        // The centre, two corners, and a row across the image (materials.json: one sphere each).
+        std::vector<std::pair<int, int>> pixels = {{16, 10}, {5, 15}, {28, 3}};
+        for (int x = 1; x < 32; x += 3) pixels.emplace_back(x, 12);
+        const int stageAlbedoBefore = total.stageAlbedo;
+        for (auto [x, y] : pixels) {
             const auto paths = inspector.record(x, y, 24, 3);
             ASSERT_EQ(paths.size(), 24u);
-            expectTermsMultiplyOut(paths, std::string(c.scene) + " " + o[0] + " pixel " + std::to_string(x) + "," +
-                                              std::to_string(y));
+            const PathCheckCounts n = expectTermsMultiplyOut(
+                paths, std::string(c.scene) + " " + o[0] + " pixel " + std::to_string(x) + "," + std::to_string(y));
+            total.chained += n.chained;
+            total.weightsChecked += n.weightsChecked;
+            total.deltaSamples += n.deltaSamples;
+            total.roulette += n.roulette;
+            total.stageAlbedo += n.stageAlbedo;
+            for (int l = 0; l < 5; ++l) total.lobes[l] += n.lobes[l];
             for (const PathRecord& p : paths) {
                 EXPECT_EQ(p.x, x);
                 ASSERT_FALSE(p.bounces.empty());
                 nonZero += glm::length(p.value) > 0.0f;
                 for (const BounceRecord& b : p.bounces) withLight += b.lightStatus == LightStatus::Visible;
+                if (scene.render.stage == RenderStage::Primary) {
+                    // The value is the first hit's albedo, and the record says so.
+                    ASSERT_EQ(p.bounces.size(), 1u);
+                    const BounceRecord& b = p.bounces[0];
+                    EXPECT_EQ(b.hasStageAlbedo, b.hit);
+                    if (b.hit) {
+                        EXPECT_EQ(p.value, scene.materials[std::size_t(b.material)].albedo);
+                    }
+                } else if (scene.render.stage == RenderStage::Emission) {
+                    EXPECT_EQ(p.bounces.size(), 1u) << "emission stops at the first hit";
+                }
             }
         }
+        if (scene.render.stage == RenderStage::Primary) {
+            EXPECT_GT(total.stageAlbedo - stageAlbedoBefore, 100);
+        } else {
+            EXPECT_EQ(total.stageAlbedo, stageAlbedoBefore) << c.scene << ": only the primary stage records an albedo";
+        }
     }
-    // The check is not vacuous: paths carry light, and light samples were taken and seen.
+    // The checks are not vacuous: paths carry light, light samples were taken and seen, every
+    // lobe was sampled (diffuse, specular, glass reflection and transmission, delta and not),
+    // throughputs were chained, and roulette was played.
     EXPECT_GT(nonZero, 100);
     EXPECT_GT(withLight, 50);
+    for (int lobe = 1; lobe <= 4; ++lobe) EXPECT_GT(total.lobes[lobe], 20) << lobeName(lobe);
+    EXPECT_GT(total.weightsChecked, 1000);
+    EXPECT_GT(total.deltaSamples, 50);
+    EXPECT_GT(total.chained, 1000);
+    EXPECT_GT(total.roulette, 100);
 }
 
 TEST_F(PathInspectorTest, RecordedPathMatchesACpuComputation) {
@@ -192,6 +227,7 @@ TEST_F(PathInspectorTest, RecordedPathMatchesACpuComputation) {
     }
     EXPECT_GT(bouncesChecked, 60);
     EXPECT_GT(killed + survived, 10);   // roulette was played and recorded
+    expectTermsMultiplyOut(inspector.record(12, 10, 48, 0), "two spheres");
 }
 
 // NEE of a constant sky from one sphere: the light sample's terms, computed on the CPU.
@@ -248,8 +284,8 @@ TEST_F(PathInspectorTest, InspectorVariantRendersTheSameImage) {
         recording.setScene(scene);
         GLuint buffers[2];
         glCreateBuffers(2, buffers);
-        glNamedBufferStorage(buffers[0], 4 * 64 * 17 * 16, nullptr, 0);
-        glNamedBufferStorage(buffers[1], 4 * 4 * 16, nullptr, 0);
+        glNamedBufferStorage(buffers[0], 4 * 64 * path_layout::kBounceVec4s * 16, nullptr, 0);
+        glNamedBufferStorage(buffers[1], 4 * path_layout::kPathVec4s * 16, nullptr, 0);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, buffers[0]);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, buffers[1]);
         recording.program().set("uInspectPixel", glm::ivec2(17, 24 - 1 - 11));

@@ -23,6 +23,7 @@ bool Inspection::inspect(Viewer& viewer, int x, int y) {
     try {
         if (!inspector_) inspector_ = std::make_unique<PathInspector>();
         inspector_->setScene(viewer.tracedScene());
+        inspector_->setBounceFilter(bounceFilterFor(viewer.debugView()), viewer.debugBounce());
         pathCount = std::clamp(pathCount, 1, 256);
         paths_ = inspector_->record(x, y, pathCount, viewer.tracer()->samplesPerPixel());
     } catch (const std::exception& e) {
@@ -31,6 +32,8 @@ bool Inspection::inspect(Viewer& viewer, int x, int y) {
     }
     x_ = x;
     y_ = y;
+    filter_ = inspector_->bounceFilter();
+    filterBounce_ = inspector_->filterBounce();
     panelOpen = true;
     shownPath = std::min(shownPath, int(paths_.size()) - 1);
     recordedAtRestart_ = viewer.stats().restarts;
@@ -62,6 +65,19 @@ bool Inspection::exportPaths(Viewer& viewer, const std::filesystem::path& file) 
     }
     viewer.log().info("wrote " + std::to_string(paths_.size()) + " paths to " + file.string());
     return true;
+}
+
+// The shader takes the filter as a debug view number (debug_views.glsl).
+static_assert(int(BounceFilter::Only) == int(DebugView::BounceK) && int(BounceFilter::Direct) == int(DebugView::Direct) &&
+              int(BounceFilter::Indirect) == int(DebugView::Indirect) && int(BounceFilter::All) == int(DebugView::Beauty));
+
+BounceFilter bounceFilterFor(DebugView view) {
+    switch (view) {
+    case DebugView::BounceK: return BounceFilter::Only;
+    case DebugView::Direct: return BounceFilter::Direct;
+    case DebugView::Indirect: return BounceFilter::Indirect;
+    default: return BounceFilter::All;
+    }
 }
 
 PathOverlay pathOverlay(const Scene& scene, int width, int height, const std::vector<PathRecord>& paths,

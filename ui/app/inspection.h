@@ -2,7 +2,10 @@
 // The viewer's pixel path inspector (model of the Inspector panel): the inspected pixel, its
 // recorded sample paths (src/inspect/path_inspector.h: the next samples the tracer will take
 // there), which of them to show, and the paths as image-space lines for the overlay, drawn with
-// the tracer's own camera (app/view_geometry.h). No ImGui here.
+// the tracer's own camera (app/view_geometry.h). The values are those of the pixel on screen under
+// the beauty view and the bounce views (bounce k, direct, indirect: the same bounce filter); the
+// other debug views do not trace paths, so under them the beauty estimator is recorded. No ImGui here.
+#include "app/debug_view.h"
 #include "app/view_geometry.h"
 #include "inspect/path_inspector.h"
 #include "inspect/path_record.h"
@@ -55,6 +58,9 @@ public:
     int x() const { return x_; }
     int y() const { return y_; }
     const std::vector<PathRecord>& paths() const { return paths_; }
+    // The bounce view the paths were recorded under (All: the beauty estimator).
+    BounceFilter filter() const { return filter_; }
+    int filterBounce() const { return filterBounce_; }
     void clear();
     // Records the next pathCount samples of image pixel (x, y) of the viewer's traced image.
     // Logs and returns false for a pixel outside the image or a GL/shader error.
@@ -69,9 +75,14 @@ private:
     std::vector<PathRecord> paths_;
     int x_ = -1;
     int y_ = -1;
+    BounceFilter filter_ = BounceFilter::All;
+    int filterBounce_ = 0;
     std::uint64_t recordedAtRestart_ = 0;
     std::uint64_t lastSeenRestart_ = 0;
 };
+
+// The bounce filter of a debug view: its own for the bounce views, All (beauty) for the others.
+BounceFilter bounceFilterFor(DebugView view);
 
 // The recorded paths as image lines of a width × height image (only `path` when >= 0).
 PathOverlay pathOverlay(const Scene& scene, int width, int height, const std::vector<PathRecord>& paths,

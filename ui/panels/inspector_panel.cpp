@@ -7,9 +7,11 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace raylab::ui {
 namespace {
@@ -39,13 +41,25 @@ ImU32 pathColour(int i, float alpha = 1.0f) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, alpha));
 }
 
+// A term's contribution, or "off" when the bounce view leaves it out of the value.
+std::string added(bool counted, glm::vec3 v) { return counted ? rgb(v) : "off"; }
+
+bool hasStageAlbedo(const PathRecord& p) {
+    return std::any_of(p.bounces.begin(), p.bounces.end(), [](const BounceRecord& b) { return b.hasStageAlbedo; });
+}
+
 void bounceTable(Viewer& viewer, const PathRecord& p) {
     const Scene& scene = viewer.scene();
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
                                   ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
-    const char* columns[] = {"#", "hit", "lobe (P)", "f", "cos", "pdf", "f cos/pdf", "beta before", "beta after",
-                             "Le", "w", "Le w added", "light", "light w", "light added", "RR q", "BRDF"};
-    if (!ImGui::BeginTable("bounces", int(IM_ARRAYSIZE(columns)), flags, ImVec2(0, 11 * ImGui::GetTextLineHeightWithSpacing())))
+    // render.stage primary: one more column, the albedo that stage returns.
+    const bool stage = hasStageAlbedo(p);
+    std::vector<const char*> columns = {"#",  "hit", "lobe (P)",   "f",     "cos",     "pdf",         "f cos/pdf",
+                                        "beta before", "beta after", "Le", "w", "Le w added", "light", "light w",
+                                        "light added", "RR q",        "BRDF"};
+    if (stage) columns.insert(columns.begin() + 2, "albedo added");
+    if (!ImGui::BeginTable(stage ? "bounces+albedo" : "bounces", int(columns.size()), flags,
+                           ImVec2(0, 11 * ImGui::GetTextLineHeightWithSpacing())))
         return;
     ImGui::TableSetupScrollFreeze(1, 1);
     for (const char* c : columns) ImGui::TableSetupColumn(c);
@@ -66,6 +80,11 @@ void bounceTable(Viewer& viewer, const PathRecord& p) {
         } else {
             cell("sky");
         }
+        if (stage) {
+            cell(b.hasStageAlbedo ? added(b.emissionCounted, b.stageAlbedoAdded()) : "-");
+            if (b.hasStageAlbedo && ImGui::IsItemHovered())
+                ImGui::SetTooltip("render.stage primary: the first hit's albedo %s is the whole estimate", rgb(b.stageAlbedo).c_str());
+        }
         if (b.sampled) {
             cell(lobeName(b.lobe) + " (" + num(b.lobeProbability) + ")");
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("out %s%s", rgb(b.sampledDirection).c_str(), b.delta ? "\ndelta lobe" : "");
@@ -80,14 +99,14 @@ void bounceTable(Viewer& viewer, const PathRecord& p) {
         cell(b.sampled ? rgb(b.throughputAfter) : "-");
         cell(rgb(b.emission));
         cell(num(b.emissionWeight));
-        cell(rgb(b.emissionAdded()));
+        cell(added(b.emissionCounted, b.emissionAdded()));
         cell(lightStatusName(b.lightStatus));
         if (b.lightStatus != LightStatus::None && ImGui::IsItemHovered())
             ImGui::SetTooltip("light %d, dir %s\nLe %s\nf cos %s, cos %.4g\nlight pdf %.4g, BSDF pdf %.4g", b.lightIndex,
                               rgb(b.lightDirection).c_str(), rgb(b.lightRadiance).c_str(), rgb(b.lightFCos).c_str(),
                               double(b.lightCosTheta), double(b.lightPdf), double(b.lightBsdfPdf));
         cell(b.lightStatus == LightStatus::None ? "-" : num(b.lightMisWeight));
-        cell(b.lightStatus == LightStatus::None ? "-" : rgb(b.lightAdded()));
+        cell(b.lightStatus == LightStatus::None ? "-" : added(b.lightCounted, b.lightAdded()));
         cell(b.rrOutcome < 0 ? "-" : num(b.rrProbability) + (b.rrOutcome ? " lived" : " died"));
         ImGui::TableNextColumn();
         if (b.hit && ImGui::SmallButton("explore")) {
@@ -149,10 +168,22 @@ void drawInspectorPanel(Viewer& viewer, UiState&) {
         }
         ImGui::EndCombo();
     }
+    // What the values are: the pixel's own under beauty and the bounce views, else beauty's.
+    if (in.filter() == BounceFilter::Only)
+        ImGui::TextWrapped("Recorded under the bounce view, k = %d: only light that reached the eye after exactly k "
+                           "bounces counts; other terms show \"off\".", in.filterBounce());
+    else if (in.filter() == BounceFilter::Direct)
+        ImGui::TextWrapped("Recorded under the direct view: only bounces 0 and 1 count; other terms show \"off\".");
+    else if (in.filter() == BounceFilter::Indirect)
+        ImGui::TextWrapped("Recorded under the indirect view: only bounces 2 and more count; other terms show \"off\".");
+    else if (tracedDebugView(viewer.debugView()))
+        ImGui::TextWrapped("The %s view traces no light paths: these are the beauty estimator's terms, not the "
+                           "pixel on screen.", std::string(debugViewName(viewer.debugView())).c_str());
     if (!paths.empty()) {
         const PathRecord& p = paths[std::size_t(std::max(in.shownPath, 0))];
         const glm::dvec3 sum = p.sumOfTerms();
-        ImGui::Text("value %s  =  sum of beta (Le w + light) %s%s", rgb(p.value).c_str(), rgb(glm::vec3(sum)).c_str(),
+        ImGui::Text("value %s  =  sum of beta (%s + light) %s%s", rgb(p.value).c_str(),
+                    hasStageAlbedo(p) ? "Le w + albedo" : "Le w", rgb(glm::vec3(sum)).c_str(),
                     p.truncated ? "  (truncated)" : "");
         bounceTable(viewer, p);
     }
