@@ -129,27 +129,7 @@ void ViewerDebugWindowTest::checkBvhOverlay() {
     const Scene s = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json");
     const SceneGeometry g = buildSceneGeometry(s);
     ASSERT_EQ(bvhLevel(g.topNodes, 0, 1).size(), 2u);
-    std::vector<std::pair<glm::vec2, glm::vec2>> segs;   // window pixels
-    for (const Segment& e : topLevelBvhSegments(s, g, kW, kH, 1))
-        segs.push_back({glm::vec2(on.x + e.a.x / float(kW) * on.w, on.y + e.a.y / float(kH) * on.h),
-                        glm::vec2(on.x + e.b.x / float(kW) * on.w, on.y + e.b.y / float(kH) * on.h)});
-    auto distance = [&](glm::vec2 p) {
-        float best = 1e9f;
-        for (const auto& [a, b] : segs) {
-            const glm::vec2 ab = b - a;
-            const float t = glm::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-9f), 0.0f, 1.0f);
-            best = std::min(best, glm::length(p - (a + t * ab)));
-        }
-        return best;
-    };
-    const float kReach = 0.5f + 1.0f + 0.7072f;   // line half-width, AA feather, half a pixel diagonal
-    int changed = 0, far = 0;
-    for (int y = int(on.y) + 1; y < int(on.y + on.h) - 1; ++y)
-        for (int x = int(on.x) + 1; x < int(on.x + on.w) - 1; ++x) {
-            if (glm::length(on.image.rgb(x, y) - off.image.rgb(x, y)) < 0.02f) continue;
-            ++changed;
-            if (distance(glm::vec2(float(x) + 0.5f, float(y) + 0.5f)) > kReach) ++far;
-        }
+    const auto [changed, far] = overlayPixels(off, on, toWindow(on, topLevelBvhSegments(s, g, kW, kH, 1), kW, kH));
     EXPECT_GT(changed, 300) << "no overlay drawn";
     EXPECT_EQ(far, 0) << "of " << changed << " overlay pixels";
 }
