@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -68,10 +69,25 @@ bool anyInputHeld() {
     return false;
 }
 
+// The script's `key` names (src/script/script.h) as GLFW key codes: ImGui's GLFW backend indexes
+// io.KeysDown by them, so a scripted key goes through the same handling as a pressed one.
+int scriptKeyCode(const std::string& name) {
+    static const std::map<std::string, int> codes = {
+        {"page-down", GLFW_KEY_PAGE_DOWN}, {"page-up", GLFW_KEY_PAGE_UP}, {"space", GLFW_KEY_SPACE},
+        {"r", GLFW_KEY_R}, {"f5", GLFW_KEY_F5}, {"f9", GLFW_KEY_F9}, {"f12", GLFW_KEY_F12}};
+    const auto it = codes.find(name);
+    return it == codes.end() ? -1 : it->second;
+}
+
 class WindowHost : public ScriptHost {
 public:
     explicit WindowHost(GLFWwindow* w) : window_(w) {}
     void resizeWindow(int width, int height) override { glfwSetWindowSize(window_, width, height); }
+    // The script's `drop`: the very callback GLFW calls for a drop on the window.
+    void dropFile(const std::string& path) override {
+        const char* paths[] = {path.c_str()};
+        onDrop(window_, 1, paths);
+    }
 
 private:
     GLFWwindow* window_;
@@ -287,8 +303,9 @@ int main(int argc, char** argv) {
             if (scriptKey >= 0) io.KeysDown[scriptKey] = false;
             scriptKey = -1;
             if (!ui.pendingKey.empty()) {
-                scriptKey = ui.pendingKey == "page-up" ? GLFW_KEY_PAGE_UP : GLFW_KEY_PAGE_DOWN;
-                io.KeysDown[scriptKey] = true;
+                scriptKey = scriptKeyCode(ui.pendingKey);
+                if (scriptKey >= 0) io.KeysDown[scriptKey] = true;
+                else log.error("script: no key code for key '" + ui.pendingKey + "'");
                 ui.pendingKey.clear();
             }
             ImGui::NewFrame();
@@ -297,7 +314,7 @@ int main(int argc, char** argv) {
             if (!io.WantTextInput) {
                 if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) ui.pendingScreenshot = ui.screenshotPath;
                 if (ImGui::IsKeyPressed(GLFW_KEY_F9, false)) viewer.exportRender(ui.exportPath);
-                if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) viewer.reloadShaders();
+                if (ImGui::IsKeyPressed(GLFW_KEY_F5, false) && viewer.reloadShaders()) log.info("reloaded the shaders (F5)");
                 if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false) && !(ui.teachFocused && ui.lesson.isOpen()))
                     viewer.setPaused(!viewer.paused());   // in the Teach window Space is the next step
                 if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) ui.showTeach = !ui.showTeach;
