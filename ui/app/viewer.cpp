@@ -340,7 +340,9 @@ int Viewer::imageHeight() const { return std::max(1, int(std::lround(float(scene
 bool Viewer::converged() const {
     if (!hasScene()) return true;
     if (tracer_->samplesPerPixel() >= std::uint64_t(scene_.render.spp)) return true;
-    return scene_.render.timeBudget > 0.0 && stats_.traceSeconds >= scene_.render.timeBudget;
+    // The time budget stops between passes, after the pass that crosses it (as raylab-render):
+    // stopped mid-pass, the rows already traced would hold more samples than the others.
+    return scene_.render.timeBudget > 0.0 && stats_.traceSeconds >= scene_.render.timeBudget && !slicer_.midPass();
 }
 
 void Viewer::update(double budgetSeconds) {
