@@ -146,7 +146,13 @@ std::unique_ptr<PathTracer> Viewer::compileVariant(Variant v) {
 bool Viewer::activateVariant(Variant v) {
     if (!tracers_[v]) {
         try {
+            const double t0 = now();
             tracers_[v] = compileVariant(v);
+            // A new variant stalls the UI for its compile: say how long (bench/viewer.md).
+            char text[160];
+            std::snprintf(text, sizeof text, "compiled the tracer for the %s view in %.2f s (shader %.2f s)",
+                          std::string(debugViewName(view_)).c_str(), now() - t0, stats_.shaderCompileSeconds);
+            log_.info(text);
         } catch (const std::exception& e) {
             lastError_ = e.what();
             log_.error(lastError_);
@@ -155,6 +161,7 @@ bool Viewer::activateVariant(Variant v) {
     }
     tracer_ = tracers_[v].get();
     variant_ = v;
+    slicer_.forgetCosts();   // another variant, another cost per sample
     if (hasScene_) {
         tracer_->setScene(tracedScene());
         restart();
@@ -176,6 +183,7 @@ bool Viewer::reloadShaders() {
         return false;
     }
     lastError_.clear();
+    slicer_.forgetCosts();   // new shaders, new costs
     if (hasScene_) {
         tracer_->setScene(tracedScene());
         restart();
@@ -235,7 +243,8 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
         return true;
     }
     // ResetAccumulation and ReloadScene: the upload is cheap for these scenes, and setScene
-    // reallocates only when the image size changed.
+    // reallocates only when the image size changed. Another scene costs what it costs.
+    if (trigger == Trigger::ReloadScene) slicer_.forgetCosts();
     try {
         tracer_->setScene(traced(next));
     } catch (const std::exception& e) {
@@ -314,7 +323,8 @@ void Viewer::setDebugView(DebugView view) {
             return;
         }
     } else if (v == kViews) {
-        resetAccumulation();   // another quantity accumulates
+        slicer_.forgetCosts();   // a normal costs one ray, a bounce view a path
+        resetAccumulation();     // another quantity accumulates
     } else {
         displayDirty_ = true;  // same samples, drawn differently
     }
@@ -331,6 +341,7 @@ void Viewer::setBounceStep(int k) {
     k = std::max(k, 0);
     if (k == bounceStep_) return;
     bounceStep_ = k;
+    slicer_.forgetCosts();   // another path length
     if (hasScene()) applyScene(scene_, Trigger::ResetAccumulation);
 }
 
