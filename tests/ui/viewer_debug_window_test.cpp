@@ -19,15 +19,12 @@ using namespace test_run;
 // Traced image size at --scale 0.5 for the 640 x 360 default scene.
 constexpr int kW = 320, kH = 180;
 
-class ViewerDebugWindowTest : public ::testing::Test {
+class ViewerDebugWindowTest : public ViewerRunSuite<ViewerDebugWindowTest> {
 protected:
     static void SetUpTestSuite() {
-        if (test::findProgram("Xvfb").empty()) return;
-        xvfb_ = new test::Xvfb();
-        if (xvfb_->display().empty()) return;
+        if (!startXvfb("raylab_viewer_debug_window")) return;
         const std::string scene = std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json";
         const std::string terrain = std::string(RAYLAB_SOURCE_DIR) + "/scenes/displaced_terrain.json";
-        dir_ = fs::temp_directory_path() / ("raylab_viewer_debug_window_" + std::to_string(::getpid()));
         const std::string d = dir_.string();
         const Scene s = loadScene(scene);
         const auto c = projectPoint(s, kW, kH, s.spheres[1].center);   // the white sphere
@@ -50,28 +47,8 @@ protected:
             "debug-view triangles\nwait-frames 2\nscreenshot " + d + "/triangles.png\nquit\n",
             scene));
     }
-    static void TearDownTestSuite() {
-        delete run_;
-        delete xvfb_;
-        std::error_code ec;
-        if (!dir_.empty()) fs::remove_all(dir_, ec);
-    }
-    void SetUp() override {
-        if (test::findProgram("Xvfb").empty()) GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";
-        ASSERT_FALSE(xvfb_->display().empty()) << "Xvfb did not start";
-        ASSERT_EQ(run_->status, 0) << run_->log;
-    }
-    const Shot& shot(const std::string& name) {
-        static Shot none;
-        auto it = run_->shots.find(name);
-        EXPECT_NE(it, run_->shots.end()) << name << " missing; log:\n" << run_->log;
-        return it == run_->shots.end() ? none : it->second;
-    }
     void checkBvhOverlay();
     void checkHeatMaps();
-    static inline test::Xvfb* xvfb_ = nullptr;
-    static inline ViewerRun* run_ = nullptr;
-    static inline fs::path dir_;
 };
 
 // One test: ctest runs every test in its own process, and each would start the viewer again.

@@ -5,8 +5,10 @@
 #include "ui/xvfb.h"
 
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -140,6 +142,45 @@ inline int errorBannerPixels(const Shot& s) {
         }
     return red;
 }
+
+// A suite of tests that share one viewer run (ctest runs each test in its own process, and each
+// run of the viewer takes seconds): the derived suite's SetUpTestSuite calls startXvfb, then sets
+// run_. Suite is the derived class, so each suite has its own run.
+template <class Suite>
+class ViewerRunSuite : public ::testing::Test {
+protected:
+    // Starts Xvfb and names the run's directory; false when Xvfb is missing or did not start
+    // (SetUp then skips or fails the tests with the reason).
+    static bool startXvfb(const std::string& dirName) {
+        if (::raylab::test::findProgram("Xvfb").empty()) return false;
+        xvfb_ = new ::raylab::test::Xvfb();
+        if (xvfb_->display().empty()) return false;
+        dir_ = fs::temp_directory_path() / (dirName + "_" + std::to_string(::getpid()));
+        return true;
+    }
+    static void TearDownTestSuite() {
+        delete run_;
+        delete xvfb_;
+        std::error_code ec;
+        if (!dir_.empty()) fs::remove_all(dir_, ec);
+    }
+    void SetUp() override {
+        if (::raylab::test::findProgram("Xvfb").empty()) GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";
+        ASSERT_FALSE(xvfb_->display().empty()) << "Xvfb did not start";
+        ASSERT_NE(run_, nullptr);
+        ASSERT_EQ(run_->status, 0) << run_->log;
+    }
+    // A screenshot the run saved, by file stem; a failure (with the log) when it is missing.
+    const Shot& shot(const std::string& name) {
+        static Shot none;
+        auto it = run_->shots.find(name);
+        EXPECT_NE(it, run_->shots.end()) << name << " missing; log:\n" << run_->log;
+        return it == run_->shots.end() ? none : it->second;
+    }
+    static inline ::raylab::test::Xvfb* xvfb_ = nullptr;
+    static inline ViewerRun* run_ = nullptr;
+    static inline fs::path dir_;
+};
 
 // Where the first-use layout of a 1280 x 800 window puts a 16:9 traced image
 // (ui/panels/viewport_panel.cpp, drawWorkspace).

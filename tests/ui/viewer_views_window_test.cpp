@@ -33,13 +33,10 @@ constexpr int kBvhDepth = 3;
 
 std::string shotName(DebugView v) { return "view-" + std::string(debugViewName(v)); }
 
-class ViewerViewsWindowTest : public ::testing::Test {
+class ViewerViewsWindowTest : public ViewerRunSuite<ViewerViewsWindowTest> {
 protected:
     static void SetUpTestSuite() {
-        if (test::findProgram("Xvfb").empty()) return;
-        xvfb_ = new test::Xvfb();
-        if (xvfb_->display().empty()) return;
-        dir_ = fs::temp_directory_path() / ("raylab_viewer_views_window_" + std::to_string(::getpid()));
+        if (!startXvfb("raylab_viewer_views_window")) return;
         const std::string d = dir_.string();
         std::string script = "set render.spp " + std::to_string(kSpp) + "\nwait-spp " + std::to_string(kSpp) +
                              "\nscreenshot " + d + "/beauty.png\nexport " + d + "/beauty.exr\n";
@@ -59,26 +56,6 @@ protected:
         small.scriptTimeout = 400;   // a shader variant per kind of view, compiled on llvmpipe
         run_ = new ViewerRun(runViewer(*xvfb_, dir_, script, kScene, small));
     }
-    static void TearDownTestSuite() {
-        delete run_;
-        delete xvfb_;
-        std::error_code ec;
-        if (!dir_.empty()) fs::remove_all(dir_, ec);
-    }
-    void SetUp() override {
-        if (test::findProgram("Xvfb").empty()) GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";
-        ASSERT_FALSE(xvfb_->display().empty()) << "Xvfb did not start";
-        ASSERT_EQ(run_->status, 0) << run_->log;
-    }
-    const Shot& shot(const std::string& name) {
-        static Shot none;
-        auto it = run_->shots.find(name);
-        EXPECT_NE(it, run_->shots.end()) << name << " missing; log:\n" << run_->log;
-        return it == run_->shots.end() ? none : it->second;
-    }
-    static inline test::Xvfb* xvfb_ = nullptr;
-    static inline ViewerRun* run_ = nullptr;
-    static inline fs::path dir_;
 };
 
 // What the run saved of one view, and what the checks compare it with.

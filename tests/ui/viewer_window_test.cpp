@@ -20,14 +20,11 @@ namespace {
 
 using namespace test_run;
 
-class ViewerWindowTest : public ::testing::Test {
+class ViewerWindowTest : public ViewerRunSuite<ViewerWindowTest> {
 protected:
     static void SetUpTestSuite() {
-        if (test::findProgram("Xvfb").empty()) return;
-        xvfb_ = new test::Xvfb();
-        if (xvfb_->display().empty()) return;
+        if (!startXvfb("raylab_viewer_window")) return;
         scene_ = std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json";
-        dir_ = fs::temp_directory_path() / ("raylab_viewer_window_" + std::to_string(::getpid()));
         const std::string d = dir_.string();
         // The click lands on sphere 1 (the white one) where the first-use layout puts it; the test
         // below checks that layout from the screenshots.
@@ -49,31 +46,11 @@ protected:
                                  "export " + d + "/normals.exr\nquit\n",
                                  scene_));
     }
-    static void TearDownTestSuite() {
-        delete run_;
-        delete xvfb_;
-        std::error_code ec;
-        if (!dir_.empty()) fs::remove_all(dir_, ec);
-    }
-    void SetUp() override {
-        if (test::findProgram("Xvfb").empty()) GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";
-        ASSERT_FALSE(xvfb_->display().empty()) << "Xvfb did not start";
-        ASSERT_EQ(run_->status, 0) << run_->log;
-    }
-    const Shot& shot(const std::string& name) {
-        static Shot none;
-        auto it = run_->shots.find(name);
-        EXPECT_NE(it, run_->shots.end()) << name << " missing; log:\n" << run_->log;
-        return it == run_->shots.end() ? none : it->second;
-    }
     void ShowsTheTracedImageWhereTheLayoutPutsIt();
     void ADebugViewDiffersFromTheBeautyImage();
     void ClickingAnObjectAndEditingItsAlbedoChangesThatObject();
     void RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights();
     void OverlayPixelsLandOnTheProjectedBoxes();
-    static inline test::Xvfb* xvfb_ = nullptr;
-    static inline ViewerRun* run_ = nullptr;
-    static inline fs::path dir_;
     static inline std::string scene_;
     static inline float clickX_ = 0, clickY_ = 0;
 };
