@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -68,10 +69,25 @@ bool anyInputHeld() {
     return false;
 }
 
+// The script's `key` names (src/script/script.h) as GLFW key codes: ImGui's GLFW backend indexes
+// io.KeysDown by them, so a scripted key goes through the same handling as a pressed one.
+int scriptKeyCode(const std::string& name) {
+    static const std::map<std::string, int> codes = {
+        {"page-down", GLFW_KEY_PAGE_DOWN}, {"page-up", GLFW_KEY_PAGE_UP}, {"space", GLFW_KEY_SPACE},
+        {"r", GLFW_KEY_R}, {"f5", GLFW_KEY_F5}, {"f9", GLFW_KEY_F9}, {"f12", GLFW_KEY_F12}};
+    const auto it = codes.find(name);
+    return it == codes.end() ? -1 : it->second;
+}
+
 class WindowHost : public ScriptHost {
 public:
     explicit WindowHost(GLFWwindow* w) : window_(w) {}
     void resizeWindow(int width, int height) override { glfwSetWindowSize(window_, width, height); }
+    // The script's `drop`: the very callback GLFW calls for a drop on the window.
+    void dropFile(const std::string& path) override {
+        const char* paths[] = {path.c_str()};
+        onDrop(window_, 1, paths);
+    }
 
 private:
     GLFWwindow* window_;
@@ -117,8 +133,12 @@ struct FrameTimes {
         std::vector<double> s = ms;
         std::sort(s.begin(), s.end());
         const double m = mean(s);
-        std::printf("frames %zu: mean %.2f ms (%.1f fps), median %.2f ms, p95 %.2f ms, max %.2f ms\n", s.size(), m,
-                    1000.0 / m, s[s.size() / 2], s[std::min(s.size() - 1, s.size() * 95 / 100)], s.back());
+        const auto over50 = s.end() - std::upper_bound(s.begin(), s.end(), 50.0);
+        std::printf("frames %zu: mean %.2f ms (%.1f fps), median %.2f ms, p95 %.2f ms, max %.2f ms, %td over 50 ms\n", s.size(),
+                    m, 1000.0 / m, s[s.size() / 2], s[std::min(s.size() - 1, s.size() * 95 / 100)], s.back(), over50);
+        double slowestTrace = 0.0;
+        for (double t : traceMs) slowestTrace = std::max(slowestTrace, t);
+        std::printf("slowest tracing in one frame: %.2f ms\n", slowestTrace);
         std::printf("per frame (means): trace %.2f ms, display pass %.2f ms, UI draw %.2f ms, swap %.2f ms, other %.2f ms\n",
                     mean(traceMs), mean(displayMs), mean(drawMs), mean(swapMs),
                     m - mean(traceMs) - mean(displayMs) - mean(drawMs) - mean(swapMs));
@@ -287,8 +307,9 @@ int main(int argc, char** argv) {
             if (scriptKey >= 0) io.KeysDown[scriptKey] = false;
             scriptKey = -1;
             if (!ui.pendingKey.empty()) {
-                scriptKey = ui.pendingKey == "page-up" ? GLFW_KEY_PAGE_UP : GLFW_KEY_PAGE_DOWN;
-                io.KeysDown[scriptKey] = true;
+                scriptKey = scriptKeyCode(ui.pendingKey);
+                if (scriptKey >= 0) io.KeysDown[scriptKey] = true;
+                else log.error("script: no key code for key '" + ui.pendingKey + "'");
                 ui.pendingKey.clear();
             }
             ImGui::NewFrame();
@@ -297,7 +318,7 @@ int main(int argc, char** argv) {
             if (!io.WantTextInput) {
                 if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) ui.pendingScreenshot = ui.screenshotPath;
                 if (ImGui::IsKeyPressed(GLFW_KEY_F9, false)) viewer.exportRender(ui.exportPath);
-                if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) viewer.reloadShaders();
+                if (ImGui::IsKeyPressed(GLFW_KEY_F5, false) && viewer.reloadShaders()) log.info("reloaded the shaders (F5)");
                 if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false) && !(ui.teachFocused && ui.lesson.isOpen()))
                     viewer.setPaused(!viewer.paused());   // in the Teach window Space is the next step
                 if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) ui.showTeach = !ui.showTeach;

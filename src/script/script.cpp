@@ -27,6 +27,7 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"bounce-step", {1, 1}}, {"stage", {1, 1}},       {"split", {1, 1}},      {"split-a", {2, 2}},
         {"split-b", {2, 2}},     {"split-divider", {1, 1}}, {"ui-scale", {1, 1}}, {"key", {1, 1}},
         {"lesson", {1, 1}},      {"lesson-step", {1, 1}}, {"self-test", {0, 0}},   {"teach", {1, 1}},
+        {"drop", {1, 1}},
     };
     return table;
 }
@@ -35,6 +36,9 @@ const std::map<std::string, Arity, std::less<>>& commands() {
 constexpr std::array<std::string_view, 14> kDebugViews = {"beauty", "normals", "albedo",      "depth",
                                                           "material-id", "object-id", "nan", "noise", "bounce",
                                                           "direct", "indirect", "boxes", "triangles", "uv"};
+
+// The keys `key` presses (ui/main.cpp maps them to GLFW's codes; ui/README.md lists what they do).
+constexpr std::array<std::string_view, 7> kKeys = {"page-down", "page-up", "space", "r", "f5", "f9", "f12"};
 
 // render.stage's names (scene/parameters.cpp; tests/script keeps the two in step).
 constexpr std::array<std::string_view, 6> kStages = {"primary", "emission", "lambert", "ggx", "textures", "full"};
@@ -48,6 +52,7 @@ bool isNumber(const std::string& s) {
 } // namespace
 
 std::span<const std::string_view> scriptDebugViews() { return kDebugViews; }
+std::span<const std::string_view> scriptKeys() { return kKeys; }
 
 std::string ScriptCommand::text() const {
     std::string t = "line " + std::to_string(line) + ": " + name;
@@ -117,8 +122,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         if (c.name == "teach" && c.args[0] != "lesson" && c.args[0] != "classroom" && c.args[0] != "self-test" &&
             c.args[0] != "off")
             fail("teach takes lesson, classroom, self-test or off");
-        if (c.name == "key" && c.args[0] != "page-down" && c.args[0] != "page-up")
-            fail("key takes page-down or page-up");
+        if (c.name == "key" && std::find(kKeys.begin(), kKeys.end(), c.args[0]) == kKeys.end())
+            fail("key takes page-down, page-up, space, r, f5, f9 or f12");
         out.push_back(std::move(c));
     }
     return out;

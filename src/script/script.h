@@ -4,6 +4,8 @@
 // state each step sets (lessons/README.md). This is the core copy: the viewer will use this one
 // (its own ui/app/script.* is to be deleted at merge). Commands:
 //   open PATH              load a scene (errors are shown, the previous scene stays)
+//   drop PATH              drop a file on the window: the window's drop handling opens it next
+//                          frame (a failed open shows its error; the script goes on)
 //   set KEY VALUE          edit a scene key (camera.fov 50, materials.red.albedo [1,0,0]);
 //                          selected.KEY: a key of the selected object or of its material
 //   click X Y              a left click at window pixel (X, Y), as the mouse would
@@ -41,7 +43,10 @@
 //   split-a KEY VALUE      an override of side A (left); split-b KEY VALUE: of side B (right)
 //   split-divider X        where the sides meet, 0 to 1 of the image width
 //   ui-scale S             UI scale for projectors (0.5 to 4)
-//   key NAME               press a presenter key in the window: page-down, page-up (next / previous step)
+//   key NAME               press a key in the window, through the window's own key handling:
+//                          page-down, page-up (next / previous lesson step), space (pause /
+//                          resume), r (reset), f5 (reload shaders), f9 (export the render to
+//                          raylab-render.exr), f12 (screenshot to raylab-screenshot.png)
 //   lesson PATH            open a lesson in the Lesson panel;  lesson-step N: apply its step N
 //   self-test              run the self-test (furnace, χ² of the GLSL samplers), log the verdicts
 //   teach TAB              show the Teach window at lesson, classroom or self-test; off hides it
@@ -68,6 +73,8 @@ public:
 
 // The names `debug-view` accepts, in the order the viewer lists them.
 std::span<const std::string_view> scriptDebugViews();
+// The names `key` accepts.
+std::span<const std::string_view> scriptKeys();
 
 // Parses and checks every line up front (command names, argument counts and numbers), so a typo
 // fails before the viewer opens. Errors read "FILE:LINE: error: what"; LINE is firstLine plus the

@@ -1,7 +1,8 @@
 #pragma once
 // A fixture for the viewer's panels in ImGui frames without a window (as imgui's example_null
 // does): font atlas built, display size set, NewFrame/Render; the viewer runs the default scene at
-// 32×18 on the headless context. frame() draws the whole workspace as the window loop does.
+// 32×18 on the headless context. frame() draws the whole workspace as the window loop does;
+// windowText() the text a panel draws.
 #include "panels/panels.h"
 
 #include "render/render_helpers.h"
@@ -10,7 +11,9 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <functional>
 #include <memory>
+#include <string>
 
 namespace raylab::test {
 
@@ -42,9 +45,29 @@ protected:
         ui::drawWorkspace(*viewer, ui, 1280, 800);
         ImGui::Render();
     }
+    // A frame in which only `draw` submits windows (ui::drawStatsPanel, ui::drawViewport, ...);
+    // returns the text they drew, one line per line, up to the end of the first window that is
+    // not a child window: ImGui's log ends there (ImGui::End), and LogToClipboard hands its text
+    // to the clipboard, kept here. A tooltip is such a window: the text of its owner up to it.
+    std::string windowText(const std::function<void()>& draw) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.ClipboardUserData = &clipboard_;
+        io.SetClipboardTextFn = [](void* user, const char* text) { *static_cast<std::string*>(user) = text; };
+        io.GetClipboardTextFn = [](void* user) { return static_cast<std::string*>(user)->c_str(); };
+        clipboard_.clear();
+        ImGui::NewFrame();
+        ImGui::LogToClipboard();
+        draw();
+        ImGui::LogFinish();   // nothing to do when a window's End finished it
+        ImGui::Render();
+        return clipboard_;
+    }
     ui::Log log{false};
     ui::UiState ui;
     std::unique_ptr<ui::Viewer> viewer;
+
+private:
+    std::string clipboard_;
 };
 
 } // namespace raylab::test

@@ -20,6 +20,7 @@ const fs::path kLessons = fs::path(RAYLAB_SOURCE_DIR) / "lessons";
 
 struct NoWindow : ScriptHost {
     void resizeWindow(int, int) override {}
+    void dropFile(const std::string&) override {}
 };
 
 class LessonSessionTest : public test::GlTest {

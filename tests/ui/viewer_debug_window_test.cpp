@@ -19,15 +19,12 @@ using namespace test_run;
 // Traced image size at --scale 0.5 for the 640 x 360 default scene.
 constexpr int kW = 320, kH = 180;
 
-class ViewerDebugWindowTest : public ::testing::Test {
+class ViewerDebugWindowTest : public ViewerRunSuite<ViewerDebugWindowTest> {
 protected:
     static void SetUpTestSuite() {
-        if (test::findProgram("Xvfb").empty()) return;
-        xvfb_ = new test::Xvfb();
-        if (xvfb_->display().empty()) return;
+        if (!startXvfb("raylab_viewer_debug_window")) return;
         const std::string scene = std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json";
         const std::string terrain = std::string(RAYLAB_SOURCE_DIR) + "/scenes/displaced_terrain.json";
-        dir_ = fs::temp_directory_path() / ("raylab_viewer_debug_window_" + std::to_string(::getpid()));
         const std::string d = dir_.string();
         const Scene s = loadScene(scene);
         const auto c = projectPoint(s, kW, kH, s.spheres[1].center);   // the white sphere
@@ -50,28 +47,8 @@ protected:
             "debug-view triangles\nwait-frames 2\nscreenshot " + d + "/triangles.png\nquit\n",
             scene));
     }
-    static void TearDownTestSuite() {
-        delete run_;
-        delete xvfb_;
-        std::error_code ec;
-        if (!dir_.empty()) fs::remove_all(dir_, ec);
-    }
-    void SetUp() override {
-        if (test::findProgram("Xvfb").empty()) GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";
-        ASSERT_FALSE(xvfb_->display().empty()) << "Xvfb did not start";
-        ASSERT_EQ(run_->status, 0) << run_->log;
-    }
-    const Shot& shot(const std::string& name) {
-        static Shot none;
-        auto it = run_->shots.find(name);
-        EXPECT_NE(it, run_->shots.end()) << name << " missing; log:\n" << run_->log;
-        return it == run_->shots.end() ? none : it->second;
-    }
     void checkBvhOverlay();
     void checkHeatMaps();
-    static inline test::Xvfb* xvfb_ = nullptr;
-    static inline ViewerRun* run_ = nullptr;
-    static inline fs::path dir_;
 };
 
 // One test: ctest runs every test in its own process, and each would start the viewer again.
@@ -129,27 +106,7 @@ void ViewerDebugWindowTest::checkBvhOverlay() {
     const Scene s = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json");
     const SceneGeometry g = buildSceneGeometry(s);
     ASSERT_EQ(bvhLevel(g.topNodes, 0, 1).size(), 2u);
-    std::vector<std::pair<glm::vec2, glm::vec2>> segs;   // window pixels
-    for (const Segment& e : topLevelBvhSegments(s, g, kW, kH, 1))
-        segs.push_back({glm::vec2(on.x + e.a.x / float(kW) * on.w, on.y + e.a.y / float(kH) * on.h),
-                        glm::vec2(on.x + e.b.x / float(kW) * on.w, on.y + e.b.y / float(kH) * on.h)});
-    auto distance = [&](glm::vec2 p) {
-        float best = 1e9f;
-        for (const auto& [a, b] : segs) {
-            const glm::vec2 ab = b - a;
-            const float t = glm::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-9f), 0.0f, 1.0f);
-            best = std::min(best, glm::length(p - (a + t * ab)));
-        }
-        return best;
-    };
-    const float kReach = 0.5f + 1.0f + 0.7072f;   // line half-width, AA feather, half a pixel diagonal
-    int changed = 0, far = 0;
-    for (int y = int(on.y) + 1; y < int(on.y + on.h) - 1; ++y)
-        for (int x = int(on.x) + 1; x < int(on.x + on.w) - 1; ++x) {
-            if (glm::length(on.image.rgb(x, y) - off.image.rgb(x, y)) < 0.02f) continue;
-            ++changed;
-            if (distance(glm::vec2(float(x) + 0.5f, float(y) + 0.5f)) > kReach) ++far;
-        }
+    const auto [changed, far] = overlayPixels(off, on, toWindow(on, topLevelBvhSegments(s, g, kW, kH, 1), kW, kH));
     EXPECT_GT(changed, 300) << "no overlay drawn";
     EXPECT_EQ(far, 0) << "of " << changed << " overlay pixels";
 }

@@ -20,14 +20,11 @@ namespace {
 
 using namespace test_run;
 
-class ViewerWindowTest : public ::testing::Test {
+class ViewerWindowTest : public ViewerRunSuite<ViewerWindowTest> {
 protected:
     static void SetUpTestSuite() {
-        if (test::findProgram("Xvfb").empty()) return;
-        xvfb_ = new test::Xvfb();
-        if (xvfb_->display().empty()) return;
+        if (!startXvfb("raylab_viewer_window")) return;
         scene_ = std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json";
-        dir_ = fs::temp_directory_path() / ("raylab_viewer_window_" + std::to_string(::getpid()));
         const std::string d = dir_.string();
         // The click lands on sphere 1 (the white one) where the first-use layout puts it; the test
         // below checks that layout from the screenshots.
@@ -49,31 +46,11 @@ protected:
                                  "export " + d + "/normals.exr\nquit\n",
                                  scene_));
     }
-    static void TearDownTestSuite() {
-        delete run_;
-        delete xvfb_;
-        std::error_code ec;
-        if (!dir_.empty()) fs::remove_all(dir_, ec);
-    }
-    void SetUp() override {
-        if (test::findProgram("Xvfb").empty()) GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";
-        ASSERT_FALSE(xvfb_->display().empty()) << "Xvfb did not start";
-        ASSERT_EQ(run_->status, 0) << run_->log;
-    }
-    const Shot& shot(const std::string& name) {
-        static Shot none;
-        auto it = run_->shots.find(name);
-        EXPECT_NE(it, run_->shots.end()) << name << " missing; log:\n" << run_->log;
-        return it == run_->shots.end() ? none : it->second;
-    }
     void ShowsTheTracedImageWhereTheLayoutPutsIt();
     void ADebugViewDiffersFromTheBeautyImage();
     void ClickingAnObjectAndEditingItsAlbedoChangesThatObject();
     void RaisingTheRoughnessOfThePickedSphereChangesOnlyItsHighlights();
     void OverlayPixelsLandOnTheProjectedBoxes();
-    static inline test::Xvfb* xvfb_ = nullptr;
-    static inline ViewerRun* run_ = nullptr;
-    static inline fs::path dir_;
     static inline std::string scene_;
     static inline float clickX_ = 0, clickY_ = 0;
 };
@@ -141,30 +118,10 @@ void ViewerWindowTest::OverlayPixelsLandOnTheProjectedBoxes() {
     const Shot& off = shot("beauty");
     const Shot& on = shot("overlay");
     const Scene s = loadScene(scene_);
-    std::vector<std::pair<glm::vec2, glm::vec2>> segs;   // window pixels
+    std::vector<Segment> boxes;
     for (const Sphere& sp : s.spheres)
-        for (const Segment& g : projectBox(s, 320, 180, objectBounds(sp)))
-            segs.push_back({glm::vec2(on.x + g.a.x / 320.0f * on.w, on.y + g.a.y / 180.0f * on.h),
-                            glm::vec2(on.x + g.b.x / 320.0f * on.w, on.y + g.b.y / 180.0f * on.h)});
-    auto distance = [&](glm::vec2 p) {
-        float best = 1e9f;
-        for (const auto& [a, b] : segs) {
-            const glm::vec2 ab = b - a;
-            const float t = glm::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-9f), 0.0f, 1.0f);
-            best = std::min(best, glm::length(p - (a + t * ab)));
-        }
-        return best;
-    };
-    // ImGui draws a 1-pixel line with a 1-pixel anti-aliasing feather on each side: coverage reaches
-    // 0.5 + 1 px from the centre line, and a touched pixel's centre lies within half a diagonal more.
-    const float kReach = 0.5f + 1.0f + 0.7072f;
-    int changed = 0, far = 0;
-    for (int y = int(on.y) + 1; y < int(on.y + on.h) - 1; ++y)
-        for (int x = int(on.x) + 1; x < int(on.x + on.w) - 1; ++x) {
-            if (glm::length(on.image.rgb(x, y) - off.image.rgb(x, y)) < 0.02f) continue;
-            ++changed;
-            if (distance(glm::vec2(float(x) + 0.5f, float(y) + 0.5f)) > kReach) ++far;
-        }
+        for (const Segment& g : projectBox(s, 320, 180, objectBounds(sp))) boxes.push_back(g);
+    const auto [changed, far] = overlayPixels(off, on, toWindow(on, boxes, 320, 180));
     EXPECT_GT(changed, 500) << "no overlay drawn";
     EXPECT_EQ(far, 0) << "of " << changed << " overlay pixels";
 }
@@ -198,13 +155,7 @@ TEST(ViewerWindow, ABrokenSceneKeepsThePreviousImageAndShowsTheError) {
     const Shot& after = run.shots.at("after");
     const Shot& before = run.shots.at("before");
     // The error banner (red text) sits above the image in the viewport; the image is the same.
-    int red = 0;
-    for (int y = 20; y < int(after.y); ++y)
-        for (int px = int(after.x); px < int(after.x + after.w); ++px) {
-            const glm::vec3 c = after.image.rgb(px, y);
-            red += c.x > 0.6f && c.y < 0.5f && c.z < 0.5f;
-        }
-    EXPECT_GT(red, 50);
+    EXPECT_GT(errorBannerPixels(after), 50);
     ASSERT_NEAR(after.w, before.w, 0.01f);
     // The banner moved the image down by a fraction of a pixel count: compare the window pixels that
     // hold each traced pixel's centre (both show that texel: the image is magnified, nearest filter).

@@ -211,6 +211,7 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
     else if (c.name == "export") return ui.split.on() ? ui.split.exportComposite(a[0], viewer) : viewer.exportRender(a[0]);
     else if (c.name == "save") return viewer.saveScene(a[0]);
     else if (c.name == "window") host.resizeWindow(int(num(0)), int(num(1)));
+    else if (c.name == "drop") host.dropFile(a[0]);   // opened by the window loop next frame
     return true;
 }
 

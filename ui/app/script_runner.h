@@ -7,6 +7,7 @@
 #include "app/viewer.h"
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace raylab::ui {
@@ -15,6 +16,8 @@ class ScriptHost {
 public:
     virtual ~ScriptHost() = default;
     virtual void resizeWindow(int width, int height) = 0;
+    // As if the file had been dropped on the window (the window's drop callback).
+    virtual void dropFile(const std::string& path) = 0;
 };
 
 class ScriptRunner {

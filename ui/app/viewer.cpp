@@ -153,7 +153,13 @@ std::unique_ptr<PathTracer> Viewer::compileVariant(Variant v) {
 bool Viewer::activateVariant(Variant v) {
     if (!tracers_[v]) {
         try {
+            const double t0 = now();
             tracers_[v] = compileVariant(v);
+            // A new variant stalls the UI for its compile: say how long (bench/viewer.md).
+            char text[160];
+            std::snprintf(text, sizeof text, "compiled the tracer for the %s view in %.2f s (shader %.2f s)",
+                          std::string(debugViewName(view_)).c_str(), now() - t0, stats_.shaderCompileSeconds);
+            log_.info(text);
         } catch (const std::exception& e) {
             lastError_ = e.what();
             log_.error(lastError_);
@@ -162,6 +168,7 @@ bool Viewer::activateVariant(Variant v) {
     }
     tracer_ = tracers_[v].get();
     variant_ = v;
+    slicer_.forgetCosts();   // another variant, another cost per sample
     if (hasScene_) {
         tracer_->setScene(tracedScene());
         restart();
@@ -183,6 +190,7 @@ bool Viewer::reloadShaders() {
         return false;
     }
     lastError_.clear();
+    slicer_.forgetCosts();   // new shaders, new costs
     if (hasScene_) {
         tracer_->setScene(tracedScene());
         restart();
@@ -241,6 +249,9 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
         displayDirty_ = true;
         return true;
     }
+    // Another scene, other materials or objects elsewhere cost what they cost: the pass slicer
+    // measures again (camera edits keep its costs: they come every frame of a drag).
+    if (trigger != Trigger::ResetAccumulation) slicer_.forgetCosts();
     if (trigger == Trigger::MoveObjects && hasScene_ && next.spheres.size() == scene_.spheres.size() &&
         next.meshes.size() == scene_.meshes.size())
         return moveObjects(std::move(next));
@@ -346,7 +357,8 @@ void Viewer::setDebugView(DebugView view) {
             return;
         }
     } else if (v == kViews) {
-        resetAccumulation();   // another quantity accumulates
+        slicer_.forgetCosts();   // a normal costs one ray, a bounce view a path
+        resetAccumulation();     // another quantity accumulates
     } else {
         displayDirty_ = true;  // same samples, drawn differently
     }
@@ -363,6 +375,7 @@ void Viewer::setBounceStep(int k) {
     k = std::max(k, 0);
     if (k == bounceStep_) return;
     bounceStep_ = k;
+    slicer_.forgetCosts();   // another path length
     if (hasScene()) applyScene(scene_, Trigger::ResetAccumulation);
 }
 
@@ -372,7 +385,9 @@ int Viewer::imageHeight() const { return std::max(1, int(std::lround(float(scene
 bool Viewer::converged() const {
     if (!hasScene()) return true;
     if (tracer_->samplesPerPixel() >= std::uint64_t(scene_.render.spp)) return true;
-    return scene_.render.timeBudget > 0.0 && stats_.traceSeconds >= scene_.render.timeBudget;
+    // The time budget stops between passes, after the pass that crosses it (as raylab-render):
+    // stopped mid-pass, the rows already traced would hold more samples than the others.
+    return scene_.render.timeBudget > 0.0 && stats_.traceSeconds >= scene_.render.timeBudget && !slicer_.midPass();
 }
 
 void Viewer::update(double budgetSeconds) {

@@ -108,7 +108,7 @@ public:
     // The traced image size (the scene's render size × resolution scale).
     int imageWidth() const;
     int imageHeight() const;
-    // Finished: target spp or time budget reached.
+    // Finished: target spp reached, or the time budget spent and the pass that crossed it complete.
     bool converged() const;
     // Traces slices of passes for about budgetSeconds (at least one slice unless paused/converged).
     void update(double budgetSeconds);
