@@ -68,9 +68,11 @@ TEST_F(PixelTooltipTest, ShowsThePixelsValueAndWhatIsSeenThere) {
         const auto seen = pickObject(s, 32, 18, ImagePoint{float(x) + 0.5f, float(y) + 0.5f});
         if (seen) {
             ++objects;
+            // The default scene has spheres only: object i is sphere i.
+            ASSERT_LT(std::size_t(*seen), s.spheres.size());
             const int m = s.spheres[std::size_t(*seen)].material;
-            EXPECT_EQ(t[2], "object " + std::to_string(*seen) + ", material " + std::to_string(m) + " '" +
-                                s.materials[std::size_t(m)].name + "'");
+            EXPECT_EQ(t[2], "object " + std::to_string(*seen) + " (sphere " + std::to_string(*seen) + "), material " +
+                                std::to_string(m) + " '" + s.materials[std::size_t(m)].name + "'");
         } else {
             ++sky;
             EXPECT_EQ(t[2], "sky");
