@@ -94,6 +94,8 @@ TEST(BenchBlenderExport, ScriptRebuildsTheSceneInBlenderCoordinatesAndIsValidPyt
     EXPECT_NE(py.find("world_gradient("), std::string::npos);
     EXPECT_NE(py.find("settings(640, 360, 8, 1)"), std::string::npos);
     EXPECT_NE(py.find("material(\"quote\\\"and\\\\back\""), std::string::npos);
+    // No far plane short of the scene: Blender's default (100 units) hid the Cornell box (mm).
+    EXPECT_NE(py.find("data.clip_end = 1e9"), std::string::npos);
     const fs::path file = scratch() / "scene.py";
     writeBlenderScript(scene, file);
     const std::string cmd = "python3 -c \"import ast,sys; ast.parse(open(sys.argv[1]).read())\" '" + file.string() + "'";
