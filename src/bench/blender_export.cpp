@@ -1,5 +1,6 @@
 #include "bench/blender_export.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <fstream>
@@ -326,6 +327,32 @@ std::string blenderScript(const Scene& scene) {
     py << ")\n";
     py << "render_if_asked()\n";
     return py.str();
+}
+
+std::vector<std::string> blenderExportApproximations(const Scene& scene) {
+    bool layered = false, metals = false, textures = false, perTriangle = false;
+    for (const Material& m : scene.materials) {
+        const glm::vec3 albedo = m.albedo * (1.0f - m.metallic), f0 = glm::mix(m.f0, m.albedo, m.metallic);
+        const float f0Max = std::max({f0.r, f0.g, f0.b}), f0Min = std::min({f0.r, f0.g, f0.b});
+        const bool opaque = m.transmission < 1.0f;
+        // Schlick's F is the same at every angle only where f0 = 1; a mirror reflects at h = n,
+        // where the view-angle F and the half-vector F agree.
+        const bool fresnelVaries = f0Max > 0.0f && f0Min < 1.0f && m.roughness >= 0.0316f && opaque;
+        layered |= fresnelVaries && std::max({albedo.r, albedo.g, albedo.b}) > 0.0f;
+        metals |= fresnelVaries && std::max({albedo.r, albedo.g, albedo.b}) == 0.0f;
+        textures |= m.albedoTextureIndex >= 0 || m.normalTextureIndex >= 0 || m.roughnessTextureIndex >= 0 ||
+                    m.metallicTextureIndex >= 0 || m.emissionTextureIndex >= 0;
+    }
+    for (const Mesh& m : scene.meshes) perTriangle |= !m.triangleMaterials.empty();
+    std::vector<std::string> out;
+    if (layered)
+        out.push_back("diffuse under a rough Fresnel-weighted GGX layer (plastic): Blender weights both lobes by F "
+                      "at the view angle, raylab by F at the half vector inside Cook-Torrance, so grazing glossy "
+                      "surfaces come out brighter in Cycles");
+    if (metals) out.push_back("rough metals with f0 < 1: F at the view angle in Blender, at the half vector in raylab");
+    if (textures) out.push_back("textures are not exported");
+    if (perTriangle) out.push_back("per-triangle (glTF) materials are not exported");
+    return out;
 }
 
 void writeBlenderScript(const Scene& scene, const std::filesystem::path& path) {

@@ -15,10 +15,18 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
 std::string blenderScript(const Scene& scene);
+
+// Where the exported scene can only approximate raylab's (beyond sphere tessellation), in words,
+// one entry per kind: Fresnel-weighted layers (plastics, coloured metals: Blender takes F at the
+// view angle, raylab at the half vector), textures, per-triangle materials. Empty: Lambert, F = 1
+// GGX, glass and emission only, which map exactly. The benchmark prints it beside the difference
+// of the two renderers' references.
+std::vector<std::string> blenderExportApproximations(const Scene& scene);
 
 // Writes blenderScript(scene) atomically; throws std::runtime_error naming the path on failure.
 void writeBlenderScript(const Scene& scene, const std::filesystem::path& path);

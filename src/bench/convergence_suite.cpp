@@ -253,7 +253,17 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 const ImageError between = imageError(peerReference.mean, reference.mean);
                 ratios << "- " << s.name << ": RMSE between the raylab and Cycles references "
                        << fmt("%.4g", between.rmse) << " (reference mean " << fmt("%.4g", imageMean(reference.mean))
-                       << "; tessellated spheres and differing estimators explain small offsets).\n";
+                       << "). ";
+                const std::vector<std::string> approximations = blenderExportApproximations(scene);
+                if (approximations.empty()) {
+                    ratios << "The export maps every material exactly (Lambert, F = 1 GGX, glass, emission): "
+                              "what differs is noise and sphere tessellation.\n";
+                } else {
+                    ratios << "The export approximates:";
+                    for (size_t i = 0; i < approximations.size(); ++i)
+                        ratios << (i ? ";" : "") << " " << approximations[i];
+                    ratios << ". Each renderer's error is measured against its own reference.\n";
+                }
             } catch (const std::exception& e) {
                 std::cerr << "raylab-bench: Cycles: " << e.what() << "\n";
                 if (o.peer == "on") return 3;

@@ -4,9 +4,12 @@
 #include "bench/convergence.h"
 #include "bench/error_metrics.h"
 #include "bench/reference.h"
+#include "gl/gl_context.h"
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <fstream>
@@ -102,6 +105,23 @@ TEST(BenchBlenderExport, ScriptRebuildsTheSceneInBlenderCoordinatesAndIsValidPyt
     EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
 }
 
+TEST(BenchBlenderExport, NamesWhatItCanOnlyApproximate) {
+    const auto load = [](const char* name) { return loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/" + name); };
+    EXPECT_TRUE(blenderExportApproximations(load("default.json")).empty()) << "Lambert and emission map exactly";
+    EXPECT_TRUE(blenderExportApproximations(load("cornell_box.json")).empty());
+    const auto materials = blenderExportApproximations(load("materials.json"));
+    ASSERT_FALSE(materials.empty());
+    EXPECT_NE(materials[0].find("plastic"), std::string::npos) << materials[0];
+    const auto textured = blenderExportApproximations(load("textured_bricks.json"));
+    EXPECT_NE(std::find(textured.begin(), textured.end(), "textures are not exported"), textured.end());
+    Scene mirror = load("default.json");
+    mirror.materials[1].f0 = glm::vec3(0.9f);   // a smooth coloured mirror: F is taken at h = n
+    mirror.materials[1].roughness = 0.0f;
+    EXPECT_TRUE(blenderExportApproximations(mirror).empty());
+    mirror.materials[1].roughness = 0.3f;
+    EXPECT_FALSE(blenderExportApproximations(mirror).empty());
+}
+
 TEST(BenchBlenderExport, MeshesTransformsMaterialsThinLensAndSkyMap) {
     Scene scene = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json");
     // 1. A mesh with normals, placed by a transform (kept in y-up terms; placement() converts).
@@ -186,6 +206,31 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     // The figures name what made them: the GL renderer and how long the run took.
     EXPECT_NE(md.str().find("- GL: osmesa | "), std::string::npos) << md.str();
     EXPECT_NE(md.str().find("- run time: "), std::string::npos) << md.str();
+}
+
+TEST(BenchConvergenceCli, RunsThroughEglAndSaysSo) {
+    // The benchmark a GPU machine runs: `--gl egl` (a GPU device when present, else Mesa's
+    // surfaceless llvmpipe), and the summary names the context so figures carry their hardware.
+    try {
+        createEglContext();
+    } catch (const std::exception& e) {
+        GTEST_SKIP() << "no EGL here: " << e.what();
+    }
+    const fs::path dir = scratch();
+    std::ofstream(dir / "suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, "seeds": 1,
+        "reference_spp": 4, "reference_batches": 2, "peer_max_spp": 1}},
+        "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
+    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
+                            "' --gl egl convergence --suite '" + (dir / "suite.json").string() + "' --out '" +
+                            (dir / "out").string() + "' --references '" + (dir / "refs").string() +
+                            "' --peer off > '" + (dir / "log.txt").string() + "' 2>&1";
+    const int raw = std::system(cmd.c_str());
+    std::stringstream log, md;
+    log << std::ifstream(dir / "log.txt").rdbuf();
+    ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << log.str();
+    md << std::ifstream(dir / "out" / "quick" / "summary.md").rdbuf();
+    EXPECT_NE(md.str().find("- GL: egl-"), std::string::npos) << md.str();
+    EXPECT_NE(md.str().find("| f | raylab | analytic [0.5, 0.5, 0.5] | 4 |"), std::string::npos) << md.str();
 }
 
 TEST(BenchScalingCli, WritesBothSeriesWithTheCommand) {
