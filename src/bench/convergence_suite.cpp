@@ -66,7 +66,7 @@ std::string cpuModel() {
 void writePlots(const fs::path& dir, const std::string& scene, const std::vector<std::string>& renderers) {
     const fs::path script = dir / (scene + ".gp");
     std::ofstream gp(script);
-    gp << "set terminal pngcairo size 900,380 font ',10'\n"
+    gp << "set terminal pngcairo size 900,380 font ',10' noenhanced\n"   // scene names keep their '_'
        << "set output '" << (dir / (scene + ".png")).string() << "'\n"
        << "set datafile separator ','\nset logscale xy\nset grid\nset key bottom left\n"
        << "set multiplot layout 1,2 title '" << scene << ": RMSE against time and samples'\n"

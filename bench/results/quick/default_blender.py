@@ -6,34 +6,119 @@ from mathutils import Matrix, Vector
 def clear_scene():
     bpy.ops.wm.read_factory_settings(use_empty=True)
 
-def material(name, albedo, emission):
+# raylab's material (scenes/FORMAT.md) as Cycles nodes:
+#   opaque = Diffuse(albedo * (1 - F)) + Glossy(GGX, colour F), F = Schlick f0 + (f90 - f0)(1 - cos)^5
+#            with f90 = min(1, 50 max(f0)) and cos taken at the shading normal and view direction
+#            (Layer Weight "Facing" with blend 0.5 is 1 - |N.I|). Blender's Glossy BSDF has no
+#            Fresnel of its own, so its colour is this F.
+#   surface = Mix(opaque, Glass(IOR ior), fac = transmission) + Emission(radiance).
+# Roughness: Cycles squares the Roughness input (alpha = Roughness^2) as raylab does with its
+# perceptual roughness, so Blender Roughness = raylab roughness; below 0.0316 (alpha < 0.001) both
+# are perfect mirrors / smooth glass ("SHARP").
+# Known mismatches: raylab applies F at the half vector inside Cook-Torrance, here F at the view
+# angle multiplies the whole lobe (equal for mirrors, close for glossy, off by a few percent at
+# grazing angles for rough metals); Cycles 3.4's GGX uses the separable Smith G1 * G1 where raylab
+# uses the height-correlated G2 (slightly darker here at high roughness); raylab's 1/eta^2 radiance
+# scaling across glass does not change camera-path images.
+def material(name, albedo, emission, f0=(0.0, 0.0, 0.0, 1.0), roughness=1.0, transmission=0.0, ior=1.5):
     m = bpy.data.materials.new(name)
     m.use_nodes = True
     nodes, links = m.node_tree.nodes, m.node_tree.links
     nodes.clear()
     out = nodes.new("ShaderNodeOutputMaterial")
+    sharp = roughness < 0.0316
     diffuse = nodes.new("ShaderNodeBsdfDiffuse")
     diffuse.inputs["Color"].default_value = albedo
     diffuse.inputs["Roughness"].default_value = 0.0   # Lambert
+    surface = diffuse.outputs[0]
+    if max(f0[:3]) > 0.0:
+        f90 = min(1.0, 50.0 * max(f0[:3]))
+        facing = nodes.new("ShaderNodeLayerWeight")
+        facing.inputs["Blend"].default_value = 0.5     # Facing = 1 - |cos|
+        pow5 = nodes.new("ShaderNodeMath")
+        pow5.operation = "POWER"
+        pow5.inputs[1].default_value = 5.0
+        links.new(facing.outputs["Facing"], pow5.inputs[0])
+        fresnel = nodes.new("ShaderNodeMixRGB")          # f0 + (f90 - f0) * (1 - cos)^5
+        fresnel.inputs["Color1"].default_value = f0
+        fresnel.inputs["Color2"].default_value = (f90, f90, f90, 1.0)
+        links.new(pow5.outputs[0], fresnel.inputs["Fac"])
+        one_minus = nodes.new("ShaderNodeVectorMath")
+        one_minus.operation = "SUBTRACT"
+        one_minus.inputs[0].default_value = (1.0, 1.0, 1.0)
+        links.new(fresnel.outputs[0], one_minus.inputs[1])
+        weighted = nodes.new("ShaderNodeVectorMath")
+        weighted.operation = "MULTIPLY"
+        weighted.inputs[0].default_value = albedo[:3]
+        links.new(one_minus.outputs[0], weighted.inputs[1])
+        links.new(weighted.outputs[0], diffuse.inputs["Color"])
+        glossy = nodes.new("ShaderNodeBsdfGlossy")
+        glossy.distribution = "SHARP" if sharp else "GGX"
+        glossy.inputs["Roughness"].default_value = roughness
+        links.new(fresnel.outputs[0], glossy.inputs["Color"])
+        add = nodes.new("ShaderNodeAddShader")
+        links.new(diffuse.outputs[0], add.inputs[0])
+        links.new(glossy.outputs[0], add.inputs[1])
+        surface = add.outputs[0]
+    if transmission > 0.0:
+        glass = nodes.new("ShaderNodeBsdfGlass")
+        glass.distribution = "SHARP" if sharp else "GGX"
+        glass.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+        glass.inputs["Roughness"].default_value = roughness
+        glass.inputs["IOR"].default_value = ior
+        mix = nodes.new("ShaderNodeMixShader")
+        mix.inputs["Fac"].default_value = transmission
+        links.new(surface, mix.inputs[1])
+        links.new(glass.outputs[0], mix.inputs[2])
+        surface = mix.outputs[0]
     if max(emission[:3]) > 0.0:
         emit = nodes.new("ShaderNodeEmission")
         emit.inputs["Color"].default_value = emission
         emit.inputs["Strength"].default_value = 1.0
         add = nodes.new("ShaderNodeAddShader")
-        links.new(diffuse.outputs[0], add.inputs[0])
+        links.new(surface, add.inputs[0])
         links.new(emit.outputs[0], add.inputs[1])
-        links.new(add.outputs[0], out.inputs["Surface"])
-    else:
-        links.new(diffuse.outputs[0], out.inputs["Surface"])
+        surface = add.outputs[0]
+    links.new(surface, out.inputs["Surface"])
     return m
 
-def sphere(name, center, radius, mat):
-    # Fine tessellation with smooth shading; Cycles has no analytic spheres.
-    bpy.ops.mesh.primitive_uv_sphere_add(segments=192, ring_count=96, radius=radius, location=center)
+# raylab places objects by world = T . Rz . Ry . Rx . S . local (degrees, extrinsic x then y then z)
+# in y-up coordinates; TO_Z_UP (a +90 degree turn about x: (x, y, z) -> (x, -z, y)) conjugates it
+# into Blender's z-up world.
+TO_Z_UP = Matrix.Rotation(math.pi / 2.0, 4, "X")
+
+def placement(translation, rotation_degrees, scale):
+    rx, ry, rz = (math.radians(a) for a in rotation_degrees)
+    m = (Matrix.Translation(translation) @ Matrix.Rotation(rz, 4, "Z") @ Matrix.Rotation(ry, 4, "Y")
+         @ Matrix.Rotation(rx, 4, "X") @ Matrix.Diagonal((scale[0], scale[1], scale[2], 1.0)))
+    return TO_Z_UP @ m @ TO_Z_UP.inverted()
+
+def sphere(name, center, radius, mat, transform=None):
+    # Fine tessellation with smooth shading; Cycles has no analytic spheres. center is z-up already;
+    # transform is raylab's (translation, rotation, scale), y-up, as written in the scene.
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=192, ring_count=96, radius=radius, location=(0.0, 0.0, 0.0))
     obj = bpy.context.active_object
     obj.name = name
     bpy.ops.object.shade_smooth()
     obj.data.materials.append(mat)
+    m = Matrix.Translation(center)
+    if transform is not None:
+        m = placement(*transform) @ m
+    obj.matrix_world = m
+
+def mesh(name, positions, triangles, normals, mat, transform):
+    # positions and normals are z-up already (object space); the object's matrix places it.
+    data = bpy.data.meshes.new(name)
+    data.from_pydata(positions, [], triangles)
+    data.update()
+    if normals:
+        data.polygons.foreach_set("use_smooth", [True] * len(data.polygons))
+        data.use_auto_smooth = True                      # needed for custom normals in 3.4
+        data.normals_split_custom_set_from_vertices(normals)
+    data.materials.append(mat)
+    obj = bpy.data.objects.new(name, data)
+    bpy.context.scene.collection.objects.link(obj)
+    obj.matrix_world = placement(*transform)
 
 def world_constant(color):
     w = bpy.data.worlds.new("raylab_sky")
@@ -62,10 +147,36 @@ def world_gradient(bottom, top):
     nodes["Background"].inputs["Strength"].default_value = 1.0
     bpy.context.scene.world = w
 
-def camera(position, look_at, up, fov_y_degrees):
+def world_map(path, strength, rotation_degrees):
+    # raylab's map: centre column along -z (Blender +y), +x to its right; rotation turns the content
+    # about +y (Blender +z), bringing +x towards the front. Blender's equirectangular centre column
+    # looks along +x with +y to its left, so the lookup direction is turned by -(90 + rotation)
+    # degrees about z. Closest interpolation: raylab takes the texel a direction falls in.
+    w = bpy.data.worlds.new("raylab_sky")
+    w.use_nodes = True
+    nodes, links = w.node_tree.nodes, w.node_tree.links
+    coords = nodes.new("ShaderNodeTexCoord")
+    turn = nodes.new("ShaderNodeMapping")
+    turn.vector_type = "POINT"
+    turn.inputs["Rotation"].default_value = (0.0, 0.0, -math.radians(90.0 + rotation_degrees))
+    env = nodes.new("ShaderNodeTexEnvironment")
+    env.image = bpy.data.images.load(path)
+    env.interpolation = "Closest"
+    env.projection = "EQUIRECTANGULAR"
+    links.new(coords.outputs["Generated"], turn.inputs["Vector"])
+    links.new(turn.outputs["Vector"], env.inputs["Vector"])
+    links.new(env.outputs["Color"], nodes["Background"].inputs["Color"])
+    nodes["Background"].inputs["Strength"].default_value = strength
+    bpy.context.scene.world = w
+
+def camera(position, look_at, up, fov_y_degrees, aperture=0.0, focus_distance=0.0):
     data = bpy.data.cameras.new("raylab_camera")
     data.sensor_fit = "VERTICAL"
     data.angle_y = math.radians(fov_y_degrees)
+    # raylab's camera rays have no clipping planes; Blender's default far plane (100 units) would
+    # hide scenes measured in millimetres, such as the Cornell box.
+    data.clip_start = 1e-5
+    data.clip_end = 1e9
     cam = bpy.data.objects.new("raylab_camera", data)
     bpy.context.scene.collection.objects.link(cam)
     forward = (Vector(look_at) - Vector(position)).normalized()
@@ -75,6 +186,14 @@ def camera(position, look_at, up, fov_y_degrees):
     rot = Matrix((right, true_up, -forward)).transposed()
     cam.matrix_world = Matrix.Translation(position) @ rot.to_4x4()
     bpy.context.scene.camera = cam
+    if aperture > 0.0:
+        # Thin lens. Cycles' lens radius is lens_mm * 1e-3 / (2 * fstop) scene units (1 unit = 1 m),
+        # so fstop = lens_mm * 1e-3 / (2 * aperture), lens_mm being the focal length that angle_y
+        # set against the sensor height. A round (unbladed) aperture like raylab's disk.
+        data.dof.use_dof = True
+        data.dof.aperture_fstop = data.lens * 1e-3 / (2.0 * aperture)
+        data.dof.aperture_blades = 0
+        data.dof.focus_distance = focus_distance if focus_distance > 0.0 else (Vector(look_at) - Vector(position)).length
 
 def settings(width, height, max_bounces, seed):
     s = bpy.context.scene
@@ -117,14 +236,14 @@ def render_if_asked():
 
 clear_scene()
 settings(96, 54, 8, 1)
-mat0 = material("blue", (0.1, 0.25, 0.8, 1.0), (0, 0, 0, 1.0))
-mat1 = material("cool_lamp", (0, 0, 0, 1.0), (2.4, 3.2, 4, 1.0))
-mat2 = material("green", (0.15, 0.65, 0.2, 1.0), (0, 0, 0, 1.0))
-mat3 = material("ground", (0.55, 0.55, 0.5, 1.0), (0, 0, 0, 1.0))
-mat4 = material("red", (0.8, 0.12, 0.1, 1.0), (0, 0, 0, 1.0))
-mat5 = material("warm_lamp", (0, 0, 0, 1.0), (8, 6, 3.6, 1.0))
-mat6 = material("white", (0.8, 0.8, 0.8, 1.0), (0, 0, 0, 1.0))
-mat7 = material("yellow", (0.85, 0.7, 0.15, 1.0), (0, 0, 0, 1.0))
+mat0 = material("blue", (0.1, 0.25, 0.8, 1.0), (0, 0, 0, 1.0), f0=(0, 0, 0, 1.0), roughness=1, transmission=0, ior=1.5)
+mat1 = material("cool_lamp", (0, 0, 0, 1.0), (2.4, 3.2, 4, 1.0), f0=(0, 0, 0, 1.0), roughness=1, transmission=0, ior=1.5)
+mat2 = material("green", (0.15, 0.65, 0.2, 1.0), (0, 0, 0, 1.0), f0=(0, 0, 0, 1.0), roughness=1, transmission=0, ior=1.5)
+mat3 = material("ground", (0.55, 0.55, 0.5, 1.0), (0, 0, 0, 1.0), f0=(0, 0, 0, 1.0), roughness=1, transmission=0, ior=1.5)
+mat4 = material("red", (0.8, 0.12, 0.1, 1.0), (0, 0, 0, 1.0), f0=(0, 0, 0, 1.0), roughness=1, transmission=0, ior=1.5)
+mat5 = material("warm_lamp", (0, 0, 0, 1.0), (8, 6, 3.6, 1.0), f0=(0, 0, 0, 1.0), roughness=1, transmission=0, ior=1.5)
+mat6 = material("white", (0.8, 0.8, 0.8, 1.0), (0, 0, 0, 1.0), f0=(0, 0, 0, 1.0), roughness=1, transmission=0, ior=1.5)
+mat7 = material("yellow", (0.85, 0.7, 0.15, 1.0), (0, 0, 0, 1.0), f0=(0, 0, 0, 1.0), roughness=1, transmission=0, ior=1.5)
 sphere("sphere0", (0, -0, -1000), 1000, mat3)
 sphere("sphere1", (0, -0, 1), 1, mat6)
 sphere("sphere2", (-2.3, -0.6, 0.7), 0.7, mat4)

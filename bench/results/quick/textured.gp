@@ -1,4 +1,4 @@
-set terminal pngcairo size 900,380 font ',10'
+set terminal pngcairo size 900,380 font ',10' noenhanced
 set output 'bench/results/quick/textured.png'
 set datafile separator ','
 set logscale xy

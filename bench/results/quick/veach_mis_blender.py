@@ -173,6 +173,10 @@ def camera(position, look_at, up, fov_y_degrees, aperture=0.0, focus_distance=0.
     data = bpy.data.cameras.new("raylab_camera")
     data.sensor_fit = "VERTICAL"
     data.angle_y = math.radians(fov_y_degrees)
+    # raylab's camera rays have no clipping planes; Blender's default far plane (100 units) would
+    # hide scenes measured in millimetres, such as the Cornell box.
+    data.clip_start = 1e-5
+    data.clip_end = 1e9
     cam = bpy.data.objects.new("raylab_camera", data)
     bpy.context.scene.collection.objects.link(cam)
     forward = (Vector(look_at) - Vector(position)).normalized()
