@@ -43,15 +43,22 @@ double efficiency(const Checkpoint& c) {
 }
 
 double convergenceSlope(const std::vector<Checkpoint>& curve) {
+    // Least squares of log RMSE on log spp over the checkpoints with an error: an exact one
+    // (RMSE 0, e.g. a furnace's first checkpoints) has no logarithm.
     double mx = 0, my = 0;
-    for (const Checkpoint& c : curve) {
-        mx += std::log(double(c.spp));
-        my += std::log(c.error.rmse);
-    }
-    mx /= double(curve.size());
-    my /= double(curve.size());
+    int n = 0;
+    for (const Checkpoint& c : curve)
+        if (c.error.rmse > 0.0) {
+            mx += std::log(double(c.spp));
+            my += std::log(c.error.rmse);
+            ++n;
+        }
+    if (n < 2) return 0.0;
+    mx /= double(n);
+    my /= double(n);
     double sxy = 0, sxx = 0;
     for (const Checkpoint& c : curve) {
+        if (!(c.error.rmse > 0.0)) continue;
         const double x = std::log(double(c.spp)) - mx;
         sxy += x * (std::log(c.error.rmse) - my);
         sxx += x * x;
