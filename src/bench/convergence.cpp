@@ -26,16 +26,23 @@ std::vector<Checkpoint> runConvergence(PathTracer& tracer, int rpp, std::uint64_
 }
 
 double timeToReach(const std::vector<Checkpoint>& curve, double targetRmse) {
+    // The first crossing, interpolated log–log between its neighbours. A progressive curve's
+    // times only grow, so that is the answer; a peer's checkpoints are separate runs whose times
+    // jitter, and a later run that reached the target sooner is the cheaper way to reach it.
+    double best = -1.0;
     for (size_t i = 0; i < curve.size(); ++i) {
         if (curve[i].error.rmse > targetRmse) continue;
-        if (i == 0) return curve[0].seconds;   // reached by the first checkpoint already
-        const Checkpoint& a = curve[i - 1];
-        const Checkpoint& b = curve[i];
-        const double la = std::log(a.error.rmse), lb = std::log(b.error.rmse);
-        const double f = la == lb ? 1.0 : (la - std::log(targetRmse)) / (la - lb);
-        return std::exp(std::log(a.seconds) + f * (std::log(b.seconds) - std::log(a.seconds)));
+        double t = curve[i].seconds;
+        if (best < 0.0 && i > 0) {
+            const Checkpoint& a = curve[i - 1];
+            const Checkpoint& b = curve[i];
+            const double la = std::log(a.error.rmse), lb = std::log(b.error.rmse);
+            const double f = la == lb ? 1.0 : (la - std::log(targetRmse)) / (la - lb);
+            t = std::exp(std::log(a.seconds) + f * (std::log(b.seconds) - std::log(a.seconds)));
+        }
+        best = best < 0.0 ? t : std::min(best, t);
     }
-    return -1.0;
+    return best;
 }
 
 double efficiency(const Checkpoint& c) {

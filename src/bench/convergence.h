@@ -19,8 +19,9 @@ struct Checkpoint {
 std::vector<Checkpoint> runConvergence(PathTracer& tracer, int rpp, std::uint64_t maxSpp,
                                        const Image& reference);
 
-// Seconds until the RMSE first falls to target, interpolated log–log between checkpoints;
-// negative when the curve never gets there.
+// Least seconds at which the RMSE is at most target: the first crossing interpolated log–log
+// between checkpoints, or a later checkpoint that took less time (separate runs, as a peer's,
+// need not take longer for more samples); negative when the curve never gets there.
 double timeToReach(const std::vector<Checkpoint>& curve, double targetRmse);
 
 // 1 / (MSE × seconds) at a checkpoint (Veach; pbrt 3rd ed. §13.7): higher is better.

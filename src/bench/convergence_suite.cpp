@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -243,11 +244,21 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 // (files and libraries not yet cached), which the fixed-cost fit below would take
                 // for a cost per sample.
                 runCycles(script, 1, o.threads, 1, work);
+                // Each point is a separate Blender run, and one run's time jitters by up to
+                // ±0.5 s here (measured: 1.5 s for 1 spp, 0.65 s for 2): the point's time is the
+                // median of three runs, its error that of the first.
+                constexpr int kTimingRuns = 3;
                 Curve c{"cycles", 1, {}};
                 for (int spp = 1; spp <= mode.peerMaxSpp; spp *= 2) {
                     const CyclesRun r = runCycles(script, spp, o.threads, 1, work);
-                    c.points.push_back({std::uint64_t(spp), r.seconds, imageError(r.image, peerReference.mean)});
-                    std::cerr << "   Cycles " << spp << " spp: " << r.seconds << " s\n";
+                    std::vector<double> times{r.seconds};
+                    for (int k = 1; k < kTimingRuns; ++k) times.push_back(runCycles(script, spp, o.threads, 1, work).seconds);
+                    std::sort(times.begin(), times.end());
+                    const double seconds = times[times.size() / 2];
+                    c.points.push_back({std::uint64_t(spp), seconds, imageError(r.image, peerReference.mean)});
+                    std::cerr << "   Cycles " << spp << " spp: " << seconds << " s (median of";
+                    for (double t : times) std::cerr << " " << fmt("%.3f", t);
+                    std::cerr << ")\n";
                 }
                 curves.push_back(c);
                 const ImageError between = imageError(peerReference.mean, reference.mean);
@@ -348,11 +359,14 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
        << "- date: " << date << "\n- machine: " << cpuModel() << ", " << std::thread::hardware_concurrency()
        << " hardware threads\n- GL: " << (o.glDescription.empty() ? std::string("unknown") : o.glDescription)
        << "\n- command: `" << o.commandLine << "`\n- run time: " << fmt("%.1f", runMinutes)
-       << " min, of which " << fmt("%.1f", referenceSeconds / 60.0)
-       << " min built references (cached in the reference folder for later runs)\n- image: " << mode.width << "×" << mode.height
+       << (referenceSeconds > 0.0
+               ? " min, of which " + fmt("%.1f", referenceSeconds / 60.0) +
+                     " min built references (cached in the reference folder for later runs)"
+               : std::string(" min, every reference read from the cache"))
+       << "\n- image: " << mode.width << "×" << mode.height
        << ", raylab checkpoints at 1, 2, 4 … " << mode.maxSpp << " spp, rpp 1, time = tracing only; Cycles "
        << (peerReady ? "3.4 (CPU, " + std::to_string(o.threads) + " threads, no denoising), one Blender run per sample count, "
-                       "time = its render call"
+                       "time = its render call (median of 3 runs)"
                      : "not run: " + (peerWanted ? peerWhy : std::string("--peer off")))
        << "\n- slope: log–log slope of RMSE against spp (−0.5 when unbiased); efficiency at the last checkpoint\n\n"
        << summary.str();

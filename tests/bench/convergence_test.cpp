@@ -68,6 +68,26 @@ TEST(BenchConvergence, TimeToReachInterpolatesLogLogAndSlopeIsMinusHalf) {
     EXPECT_NEAR(efficiency(curve.back()), 1.0 / (curve.back().error.mse * 1.024), 1e-9);
 }
 
+TEST(BenchConvergence, TimeToReachTakesTheCheapestRunThatGetsThere) {
+    // A peer's checkpoints are separate runs: here the 1-spp run took 1.5 s (a slow start) and
+    // the 4-spp run 0.8 s. RMSE 0.6 is first crossed between 1 and 2 spp (≈1.2 s interpolated),
+    // but the 4-spp run reached it in 0.8 s: the least time is the answer, never more time for a
+    // looser target.
+    const double rmse[] = {1.0, 0.5, 0.25};
+    const double seconds[] = {1.5, 1.0, 0.8};
+    std::vector<Checkpoint> curve;
+    for (int i = 0; i < 3; ++i) {
+        Checkpoint c;
+        c.spp = std::uint64_t(1) << (2 * i);
+        c.seconds = seconds[i];
+        c.error.rmse = rmse[i];
+        curve.push_back(c);
+    }
+    EXPECT_NEAR(timeToReach(curve, 0.6), 0.8, 1e-12);
+    EXPECT_NEAR(timeToReach(curve, 0.25), 0.8, 1e-12);
+    EXPECT_LE(timeToReach(curve, 0.6), timeToReach(curve, 0.25));
+}
+
 TEST(BenchReference, CachedReferenceIsReusedAndRebuiltWhenItsKeyChanges) {
     const fs::path base = scratch() / "ref";
     fs::remove(base.string() + ".json");
