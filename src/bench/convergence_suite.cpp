@@ -29,6 +29,10 @@ struct ModeSettings {
     // Cycles' reference needs only to be long against Cycles' own curve (peerMaxSpp), and Cycles
     // costs several times raylab per sample here: "peer_reference_spp" (default: reference_spp).
     int peerReferenceSpp = 4096;
+    // Blender runs per Cycles point; the point's time is their median. One run's time jitters by
+    // up to ±0.5 s here (measured: 1.5 s for 1 spp, 0.65 s for 2 spp), so a fair comparison wants
+    // three; a quick look can take one. "peer_timing_runs" (default 1).
+    int peerTimingRuns = 1;
 };
 
 struct SuiteScene {
@@ -106,6 +110,8 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         mode = {m.at("width"), m.at("height"), m.at("max_spp"), m.at("seeds"), m.at("reference_spp"),
                 m.at("reference_batches"), m.at("peer_max_spp")};
         mode.peerReferenceSpp = m.value("peer_reference_spp", mode.referenceSpp);
+        mode.peerTimingRuns = m.value("peer_timing_runs", 1);
+        if (mode.peerTimingRuns < 1) throw std::runtime_error("modes." + o.mode + ".peer_timing_runs must be at least 1");
         for (const auto& s : j.at("scenes")) {
             SuiteScene e;
             e.name = s.at("name");
@@ -244,15 +250,13 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 // (files and libraries not yet cached), which the fixed-cost fit below would take
                 // for a cost per sample.
                 runCycles(script, 1, o.threads, 1, work);
-                // Each point is a separate Blender run, and one run's time jitters by up to
-                // ±0.5 s here (measured: 1.5 s for 1 spp, 0.65 s for 2): the point's time is the
-                // median of three runs, its error that of the first.
-                constexpr int kTimingRuns = 3;
+                // Each point is a separate Blender run whose time jitters: the point's time is
+                // the median of peerTimingRuns runs, its error that of the first.
                 Curve c{"cycles", 1, {}};
                 for (int spp = 1; spp <= mode.peerMaxSpp; spp *= 2) {
                     const CyclesRun r = runCycles(script, spp, o.threads, 1, work);
                     std::vector<double> times{r.seconds};
-                    for (int k = 1; k < kTimingRuns; ++k) times.push_back(runCycles(script, spp, o.threads, 1, work).seconds);
+                    for (int k = 1; k < mode.peerTimingRuns; ++k) times.push_back(runCycles(script, spp, o.threads, 1, work).seconds);
                     std::sort(times.begin(), times.end());
                     const double seconds = times[times.size() / 2];
                     c.points.push_back({std::uint64_t(spp), seconds, imageError(r.image, peerReference.mean)});
@@ -320,8 +324,14 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
             }
             const double perSample = sxx > 0 ? sxy / sxx : 0.0;
             const double fixed = my - perSample * mx;
-            ratios << "- " << s.name << ": Cycles time per run ≈ " << fmt("%.3g", fixed) << " s fixed + "
-                   << fmt("%.3g", perSample * 1e3) << " ms per sample per pixel; raylab "
+            // Run times that jitter more than the sampling adds can fit a negative slope: say so
+            // rather than print a negative cost.
+            ratios << "- " << s.name << ": Cycles time per run ≈ "
+                   << (perSample > 0.0 ? fmt("%.3g", fixed) + " s fixed + " + fmt("%.3g", perSample * 1e3) +
+                                             " ms per sample per pixel"
+                                       : fmt("%.3g", my) + " s, no cost per sample resolved (the runs' times "
+                                                            "jitter more than their sampling adds)")
+                   << "; raylab "
                    << fmt("%.3g", curves.front().points.back().seconds * 1e3 / double(curves.front().points.back().spp))
                    << " ms per sample per pixel after a one-off startup of " << fmt("%.3g", startupSeconds)
                    << " s (scene load and shader compile)\n";
@@ -366,7 +376,9 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
        << "\n- image: " << mode.width << "×" << mode.height
        << ", raylab checkpoints at 1, 2, 4 … " << mode.maxSpp << " spp, rpp 1, time = tracing only; Cycles "
        << (peerReady ? "3.4 (CPU, " + std::to_string(o.threads) + " threads, no denoising), one Blender run per sample count, "
-                       "time = its render call (median of 3 runs)"
+                       "time = its render call" +
+                       (mode.peerTimingRuns > 1 ? " (median of " + std::to_string(mode.peerTimingRuns) + " runs)"
+                                                : std::string(" (one run per point)"))
                      : "not run: " + (peerWanted ? peerWhy : std::string("--peer off")))
        << "\n- slope: log–log slope of RMSE against spp (−0.5 when unbiased); efficiency at the last checkpoint\n\n"
        << summary.str();

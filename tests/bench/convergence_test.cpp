@@ -231,6 +231,26 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     EXPECT_NE(md.str().find("- run time: "), std::string::npos) << md.str();
 }
 
+TEST(BenchConvergenceCli, BadSuiteNamesTheFileAndTheKey) {
+    // peer_timing_runs is how many Blender runs give each Cycles point its median time: zero
+    // would leave a point with no time, so the suite is refused before anything runs.
+    const fs::path dir = scratch();
+    std::ofstream(dir / "bad_suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, "seeds": 1,
+        "reference_spp": 4, "reference_batches": 2, "peer_max_spp": 1, "peer_timing_runs": 0}},
+        "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
+    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
+                            "' convergence --suite '" + (dir / "bad_suite.json").string() + "' --out '" +
+                            (dir / "bad_out").string() + "' --peer off > '" + (dir / "bad_log.txt").string() + "' 2>&1";
+    const int raw = std::system(cmd.c_str());
+    std::stringstream log;
+    log << std::ifstream(dir / "bad_log.txt").rdbuf();
+    ASSERT_TRUE(WIFEXITED(raw));
+    EXPECT_EQ(WEXITSTATUS(raw), 1) << log.str();
+    EXPECT_NE(log.str().find("bad_suite.json: error: modes.quick.peer_timing_runs must be at least 1"), std::string::npos)
+        << log.str();
+    EXPECT_FALSE(fs::exists(dir / "bad_out" / "quick" / "summary.md"));
+}
+
 TEST(BenchConvergenceCli, RunsThroughEglAndSaysSo) {
     // The benchmark a GPU machine runs: `--gl egl` (a GPU device when present, else Mesa's
     // surfaceless llvmpipe), and the summary names the context so figures carry their hardware.

@@ -1,0 +1,13 @@
+set terminal pngcairo size 900,380 font ',10' noenhanced
+set output 'bench/results/full/veach_mis.png'
+set datafile separator ','
+set logscale xy
+set grid
+set key bottom left
+set multiplot layout 1,2 title 'veach_mis: RMSE against time and samples'
+set xlabel 'seconds'
+set ylabel 'RMSE'
+plot 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'raylab' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab', 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'raylab:bsdf' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab:bsdf', 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'raylab:nee' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab:nee', 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'raylab:mis' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab:mis', 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'cycles' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'cycles'
+set xlabel 'samples per pixel'
+plot 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'raylab' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab', 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'raylab:bsdf' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab:bsdf', 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'raylab:nee' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab:nee', 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'raylab:mis' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab:mis', 'bench/results/full/convergence.csv' using (strcol(1) eq 'veach_mis' && strcol(2) eq 'cycles' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'cycles'
+unset multiplot
