@@ -32,11 +32,8 @@ float distanceToSegment(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
 }
 
 TEST(InspectorWindow, InspectDrawsThePixelsPathsOverTheImage) {
-    if (test::findProgram("Xvfb").empty()) GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";
-    test::Xvfb x;
-    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
-    const fs::path dir = fs::temp_directory_path() / ("raylab_inspector_window_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    RAYLAB_START_XVFB(x);
+    const fs::path dir = test::windowTestDir("raylab_inspector_window_");
     const std::string scenePath = std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json";
     Scene scene = loadScene(scenePath);
     // `inspect X Y` takes pixels of the scene's image (640×360); the viewer traces at scale 0.5

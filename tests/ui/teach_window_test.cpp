@@ -56,11 +56,8 @@ int countPixels(const Image& img, int x0, int y0, int x1, int y1, bool (*test)(g
 } // namespace
 
 TEST(TeachWindow, ALessonStepsTheSplitScreenMatchesTheRendererAndTheSelfTestPasses) {
-    if (test::findProgram("Xvfb").empty()) GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";
-    test::Xvfb x;
-    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
-    const fs::path dir = fs::temp_directory_path() / ("raylab_teach_window_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    RAYLAB_START_XVFB(x);
+    const fs::path dir = test::windowTestDir("raylab_teach_window_");
     const std::string d = dir.string();
     const std::string src = RAYLAB_SOURCE_DIR;
     std::ofstream(dir / "script.txt") << "wait-frames 2\nkey page-down\nwait-spp 2\npause\nscreenshot " << d << "/step1.png\n"

@@ -137,11 +137,8 @@ TEST_F(ViewerWindowTest, ScriptedRun) {
 }
 
 TEST(ViewerWindow, ABrokenSceneKeepsThePreviousImageAndShowsTheError) {
-    if (test::findProgram("Xvfb").empty()) GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";
-    test::Xvfb x;
-    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
-    const fs::path dir = fs::temp_directory_path() / ("raylab_viewer_broken_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    RAYLAB_START_XVFB(x);
+    const fs::path dir = test::windowTestDir("raylab_viewer_broken_");
     std::ofstream(dir / "broken.json") << "{\n  \"render\": {\n    \"max_bounces\": -1\n  }\n}\n";
     const std::string d = dir.string();
     const ViewerRun run = runViewer(x, dir,

@@ -66,4 +66,19 @@ private:
     std::string display_;
 };
 
+// A fresh scratch folder for one window test: the temp directory / (prefix + process id).
+inline std::filesystem::path windowTestDir(const std::string& prefix) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
 } // namespace raylab::test
+
+// In a test body: skips the test when Xvfb is not installed, otherwise starts one as NAME and
+// fails the test when it does not come up.
+#define RAYLAB_START_XVFB(NAME)                                                                           \
+    if (::raylab::test::findProgram("Xvfb").empty())                                                      \
+        GTEST_SKIP() << "Xvfb is not installed (cmake/install-deps.sh installs it)";                      \
+    ::raylab::test::Xvfb NAME;                                                                            \
+    ASSERT_FALSE(NAME.display().empty()) << "Xvfb did not start"
