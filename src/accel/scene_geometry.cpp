@@ -62,6 +62,17 @@ SceneGeometry buildSceneGeometry(const Scene& scene, const BvhOptions& options) 
     return g;
 }
 
+Aabb transformedBounds(const Aabb& bounds, const glm::mat4& toWorld) {
+    Aabb world;
+    if (bounds.empty()) return world;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? bounds.max.x : bounds.min.x, (c & 2) ? bounds.max.y : bounds.min.y,
+                               (c & 4) ? bounds.max.z : bounds.min.z);
+        world.grow(glm::vec3(toWorld * glm::vec4(corner, 1.0f)));
+    }
+    return world;
+}
+
 void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& options) {
     const auto start = Clock::now();
     std::vector<glsl::GpuInstance> objects;
@@ -89,14 +100,8 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
         const unsigned objectId = unsigned(scene.spheres.size() + m);   // then meshes
         inst.info = glm::uvec4(glsl::INSTANCE_MESH, g.meshRoot.at(m), unsigned(mesh.material), flags | (objectId << 2u));
         objects.push_back(inst);
-        Aabb world;
-        const Aabb& b = g.meshBounds.at(m);
-        if (!b.empty()) {
-            for (int c = 0; c < 8; ++c) {
-                const glm::vec3 corner((c & 1) ? b.max.x : b.min.x, (c & 2) ? b.max.y : b.min.y,
-                                       (c & 4) ? b.max.z : b.min.z);
-                world.grow(glm::vec3(toWorld * glm::vec4(corner, 1.0f)));
-            }
+        Aabb world = transformedBounds(g.meshBounds.at(m), toWorld);
+        if (!world.empty()) {
             // The rounded corners may sit a little inside the exact box: widen by a few ulps.
             const glm::vec3 slack = 4.0f * 5.9604645e-8f * (glm::abs(world.min) + glm::abs(world.max));
             world.min -= slack;

@@ -38,4 +38,8 @@ SceneGeometry buildSceneGeometry(const Scene& scene, const BvhOptions& options =
 // the meshes themselves (their count and data) must be unchanged.
 void updateTopLevel(SceneGeometry& geometry, const Scene& scene, const BvhOptions& options = {});
 
+// The axis-aligned box around the eight corners of `bounds` moved by `toWorld` (an empty box stays
+// empty): a mesh instance's world box, as the top level holds it before its rounding slack.
+Aabb transformedBounds(const Aabb& bounds, const glm::mat4& toWorld);
+
 } // namespace raylab

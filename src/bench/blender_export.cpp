@@ -1,5 +1,7 @@
 #include "bench/blender_export.h"
 
+#include "shaders/include/ggx.glsl"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -335,9 +337,10 @@ std::vector<std::string> blenderExportApproximations(const Scene& scene) {
         const glm::vec3 albedo = m.albedo * (1.0f - m.metallic), f0 = glm::mix(m.f0, m.albedo, m.metallic);
         const float f0Max = std::max({f0.r, f0.g, f0.b}), f0Min = std::min({f0.r, f0.g, f0.b});
         const bool opaque = m.transmission < 1.0f;
-        // Schlick's F is the same at every angle only where f0 = 1; a mirror reflects at h = n,
-        // where the view-angle F and the half-vector F agree.
-        const bool fresnelVaries = f0Max > 0.0f && f0Min < 1.0f && m.roughness >= 0.0316f && opaque;
+        // Schlick's F is the same at every angle only where f0 = 1; a mirror (the tracer's delta
+        // lobe) reflects at h = n, where the view-angle F and the half-vector F agree.
+        const bool mirror = glsl::ggxIsDelta(glsl::ggxAlpha(m.roughness));
+        const bool fresnelVaries = f0Max > 0.0f && f0Min < 1.0f && !mirror && opaque;
         layered |= fresnelVaries && std::max({albedo.r, albedo.g, albedo.b}) > 0.0f;
         metals |= fresnelVaries && std::max({albedo.r, albedo.g, albedo.b}) == 0.0f;
         textures |= m.albedoTextureIndex >= 0 || m.normalTextureIndex >= 0 || m.roughnessTextureIndex >= 0 ||

@@ -63,6 +63,18 @@ int triangleMaterial(const Mesh& mesh, std::size_t triangle) {
     return own >= 0 ? own : mesh.material;
 }
 
+bool meshHasEmissiveTriangle(const Scene& scene, const Mesh& mesh) {
+    auto emissive = [&](int material) {
+        return material >= 0 && std::size_t(material) < scene.materials.size() &&
+               emits(lightRadiance(scene.materials[std::size_t(material)]));
+    };
+    if (mesh.triangles.empty()) return false;
+    if (mesh.triangleMaterials.empty()) return emissive(mesh.material);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        if (emissive(triangleMaterial(mesh, t))) return true;
+    return false;
+}
+
 bool lightPowersDiffer(const Scene& scene) {
     double lo = HUGE_VAL, hi = 0.0;
     auto add = [&](double p) {
@@ -77,13 +89,14 @@ bool lightPowersDiffer(const Scene& scene) {
     for (const Sphere& s : scene.spheres)
         if (emits(radianceOf(s.material))) add(sphereLightPower(radianceOf(s.material), worldSphere(s).radius));
     for (const Mesh& mesh : scene.meshes) {
+        if (!meshHasEmissiveTriangle(scene, mesh)) continue;   // a camera edit comes here too: skip big dark meshes
         const glm::mat4 toWorld = transformMatrix(mesh.transform);
         for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
             const glm::uvec3& t = mesh.triangles[k];
             const glm::vec3 L = radianceOf(triangleMaterial(mesh, k));
             if (!emits(L)) continue;
             glm::dvec3 p[3];
-            for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(toWorld * glm::vec4(mesh.positions.at(t[k]), 1.0f));
+            for (int v = 0; v < 3; ++v) p[v] = glm::dvec3(toWorld * glm::vec4(mesh.positions.at(t[v]), 1.0f));
             const double area = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
             if (area > 0.0) add(triangleLightPower(L, area));
         }

@@ -21,6 +21,10 @@ double triangleLightPower(glm::vec3 radiance, double area);
 // The material of a mesh's triangle (original order): its own (glTF primitives), else the mesh's.
 int triangleMaterial(const Mesh& mesh, std::size_t triangle);
 
+// Whether any triangle of the mesh is a light (its material's lightRadiance is above 0): one test
+// for a mesh of one material, a walk over the per-triangle materials otherwise.
+bool meshHasEmissiveTriangle(const Scene& scene, const Mesh& mesh);
+
 // The radiance a material's surface has as a light: its emission, or 0 when an emission texture
 // varies it (one radiance per light; such surfaces count through BSDF hits alone, unbiased).
 glm::vec3 lightRadiance(const Material& material);

@@ -39,20 +39,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     if (f.stage < RenderStage::Full) f.depthOfField = false;
     f.lightPowerSelection = f.nee && lightPowersDiffer(scene);
     f.emissiveTriangles = false;
-    bool anyMaterialEmits = false;   // else no triangle is looked at (a camera edit comes here too)
-    for (const Material& m : scene.materials) {
-        const glm::vec3 L = lightRadiance(m);
-        anyMaterialEmits |= std::max({L.r, L.g, L.b}) > 0.0f;
-    }
-    for (const Mesh& m : scene.meshes) {
-        if (!f.nee || !anyMaterialEmits) break;
-        for (std::size_t t = 0; t < m.triangles.size() && f.nee && !f.emissiveTriangles; ++t) {
-            const int material = triangleMaterial(m, t);
-            if (material < 0 || std::size_t(material) >= scene.materials.size()) continue;
-            const glm::vec3 L = lightRadiance(scene.materials[std::size_t(material)]);
-            f.emissiveTriangles = std::max({L.r, L.g, L.b}) > 0.0f;
-        }
-    }
+    for (const Mesh& m : scene.meshes) f.emissiveTriangles |= f.nee && meshHasEmissiveTriangle(scene, m);
     return f;
 }
 

@@ -59,12 +59,29 @@ SelfTestResult furnace() {
     return r;
 }
 
-SelfTestResult chiSquare(const std::string& name, const std::vector<GpuSample>& samples, const LobeGrid& grid,
-                         const std::function<double(glm::vec3)>& pdf, double alpha) {
+// The χ² verdict on binned samples: a pass needs p > alpha, no sample in a cell of pdf 0, no
+// non-finite sample and no other failure (`otherFailure`, said as it is; empty for none).
+SelfTestResult chiSquareVerdict(const std::string& name, const std::vector<double>& observed,
+                                const std::vector<double>& expected, double alpha, int nonFinite,
+                                const std::string& otherFailure) {
+    const stats::ChiSquareResult chi = stats::chiSquareTest(observed, expected);
     SelfTestResult r;
     r.name = name;
     r.kind = "chi2";
     r.alpha = alpha;
+    r.statistic = chi.statistic;
+    r.dof = chi.dof;
+    r.pValue = chi.pValue;
+    r.pass = chi.pValue > alpha && !chi.sampleInZeroCell && nonFinite == 0 && otherFailure.empty();
+    if (!otherFailure.empty()) r.detail = otherFailure;
+    else if (chi.sampleInZeroCell) r.detail = "samples where the pdf is 0";
+    else if (nonFinite > 0) r.detail = std::to_string(nonFinite) + " non-finite samples";
+    else if (!r.pass) r.detail = "the samples do not follow the pdf";
+    return r;
+}
+
+SelfTestResult chiSquare(const std::string& name, const std::vector<GpuSample>& samples, const LobeGrid& grid,
+                         const std::function<double(glm::vec3)>& pdf, double alpha) {
     std::vector<double> observed(std::size_t(grid.na * grid.nphi), 0.0);
     int nonFinite = 0;
     for (const GpuSample& s : samples) {
@@ -77,15 +94,7 @@ SelfTestResult chiSquare(const std::string& name, const std::vector<GpuSample>& 
         observed[std::size_t(grid.cell(w))] += 1.0;
     }
     const std::vector<double> expected = grid.expected(pdf, double(samples.size()), observed);
-    const stats::ChiSquareResult chi = stats::chiSquareTest(observed, expected);
-    r.statistic = chi.statistic;
-    r.dof = chi.dof;
-    r.pValue = chi.pValue;
-    r.pass = chi.pValue > alpha && !chi.sampleInZeroCell && nonFinite == 0;
-    if (chi.sampleInZeroCell) r.detail = "samples where the pdf is 0";
-    else if (nonFinite > 0) r.detail = std::to_string(nonFinite) + " non-finite samples";
-    else if (!r.pass) r.detail = "the samples do not follow the pdf";
-    return r;
+    return chiSquareVerdict(name, observed, expected, alpha, nonFinite, "");
 }
 
 // The sphere light's cone sampler seen from the origin: cells of equal solid angle over the cone
@@ -121,19 +130,8 @@ SelfTestResult sphereConeChiSquare(const GpuSampler& sampler, unsigned n, unsign
         observed[std::size_t(std::clamp(int(omc / omcMax * nt), 0, nt - 1) * nphi +
                              std::min(int(phi / (2 * M_PI) * nphi), nphi - 1))] += 1.0;
     }
-    const stats::ChiSquareResult chi = stats::chiSquareTest(observed, expected);
-    SelfTestResult r;
-    r.name = "sphere light cone";
-    r.kind = "chi2";
-    r.alpha = alpha;
-    r.statistic = chi.statistic;
-    r.dof = chi.dof;
-    r.pValue = chi.pValue;
-    r.pass = chi.pValue > alpha && outside == 0 && nonFinite == 0;
-    if (outside > 0) r.detail = std::to_string(outside) + " samples outside the cone";
-    else if (nonFinite > 0) r.detail = std::to_string(nonFinite) + " non-finite samples";
-    else if (!r.pass) r.detail = "the samples do not follow the pdf";
-    return r;
+    return chiSquareVerdict("sphere light cone", observed, expected, alpha, nonFinite,
+                            outside > 0 ? std::to_string(outside) + " samples outside the cone" : "");
 }
 
 SelfTestResult failed(const std::string& name, const std::string& why) {

@@ -49,10 +49,4 @@ std::string objectLabel(const Scene& scene, int object) {
     return label + "(" + std::to_string(materials.size()) + " materials)";
 }
 
-const Transform* objectTransform(const Scene& scene, int object) {
-    const auto r = objectRef(scene, object);
-    if (!r) return nullptr;
-    return r->mesh ? &scene.meshes[std::size_t(r->index)].transform : &scene.spheres[std::size_t(r->index)].transform;
-}
-
 } // namespace raylab::ui

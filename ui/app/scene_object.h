@@ -27,7 +27,5 @@ int objectMaterial(const Scene& scene, int object);
 std::vector<int> objectMaterials(const Scene& scene, int object);
 // The outliner's text: "0  sphere  ground", "5  mesh  white", "6  mesh  box.gltf  (3 materials)".
 std::string objectLabel(const Scene& scene, int object);
-// The object's transform (nullptr when out of range).
-const Transform* objectTransform(const Scene& scene, int object);
 
 } // namespace raylab::ui

@@ -5,7 +5,6 @@
 #include "scene/transform.h"
 #include "shaders/include/camera.glsl"
 
-#include <limits>
 
 namespace raylab::ui {
 namespace {
@@ -60,17 +59,10 @@ std::optional<Box> objectBounds(const Scene& scene, const SceneGeometry& geometr
     if (!r) return std::nullopt;
     if (!r->mesh) return objectBounds(scene.spheres[std::size_t(r->index)]);
     if (std::size_t(r->index) >= geometry.meshBounds.size()) return std::nullopt;   // geometry of another scene
-    const Aabb& a = geometry.meshBounds[std::size_t(r->index)];
-    if (a.empty()) return std::nullopt;
-    const glm::mat4 toWorld = transformMatrix(scene.meshes[std::size_t(r->index)].transform);
-    Box box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 corner(c & 1 ? a.max.x : a.min.x, c & 2 ? a.max.y : a.min.y, c & 4 ? a.max.z : a.min.z);
-        const glm::vec3 p(toWorld * glm::vec4(corner, 1.0f));
-        box.lo = glm::min(box.lo, p);
-        box.hi = glm::max(box.hi, p);
-    }
-    return box;
+    const Aabb world = transformedBounds(geometry.meshBounds[std::size_t(r->index)],
+                                         transformMatrix(scene.meshes[std::size_t(r->index)].transform));
+    if (world.empty()) return std::nullopt;
+    return Box{world.min, world.max};
 }
 
 namespace {

@@ -252,16 +252,17 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
     // Another scene, other materials or objects elsewhere cost what they cost: the pass slicer
     // measures again (camera edits keep its costs: they come every frame of a drag).
     if (trigger != Trigger::ResetAccumulation) slicer_.forgetCosts();
-    if (trigger == Trigger::MoveObjects && hasScene_ && next.spheres.size() == scene_.spheres.size() &&
-        next.meshes.size() == scene_.meshes.size())
-        return moveObjects(std::move(next));
     // ResetAccumulation keeps every scene buffer (camera, sky values, render settings: a camera
-    // drag must not rebuild a million-triangle BVH each frame); UpdateMaterials re-uploads the
-    // materials and the lights; ReloadScene everything. Each reallocates only when the image size
-    // changed and recompiles only for a feature set never met.
+    // drag must not rebuild a million-triangle BVH each frame); MoveObjects rebuilds the top level
+    // only (the meshes' BVHs stay); UpdateMaterials re-uploads the materials and the lights;
+    // ReloadScene everything. Each reallocates only when the image size changed and recompiles
+    // only for a feature set never met.
     try {
         if (hasScene_ && trigger == Trigger::ResetAccumulation)
             tracer_->updateSettings(traced(next));
+        else if (hasScene_ && trigger == Trigger::MoveObjects && next.spheres.size() == scene_.spheres.size() &&
+                 next.meshes.size() == scene_.meshes.size())
+            tracer_->updateTransforms(traced(next));
         else if (hasScene_ && trigger == Trigger::UpdateMaterials && next.materials.size() == scene_.materials.size())
             tracer_->updateMaterials(traced(next));
         else
@@ -274,21 +275,6 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
     }
     scene_ = std::move(next);
     hasScene_ = true;
-    lastError_.clear();
-    restart();
-    return true;
-}
-
-bool Viewer::moveObjects(Scene next) {
-    try {
-        tracer_->updateTransforms(traced(next));
-    } catch (const std::exception& e) {
-        lastError_ = e.what();
-        log_.error(lastError_);
-        tracer_->setScene(tracedScene());   // put the previous scene back
-        return false;
-    }
-    scene_ = std::move(next);
     lastError_.clear();
     restart();
     return true;

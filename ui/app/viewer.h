@@ -142,7 +142,6 @@ public:
 private:
     Scene traced(Scene s) const;  // s with the resolution scale and the bounce step applied
     bool applyScene(Scene next, Trigger trigger);
-    bool moveObjects(Scene next);   // MoveObjects: the top level only (PathTracer::updateTransforms)
     void restart();   // after a scene upload: clear moments, restart the slicer
     void ensureDisplayTargets();
 
