@@ -5,8 +5,7 @@
 // windowText() the text a panel draws.
 #include "panels/panels.h"
 
-#include "render/render_helpers.h"
-#include "support/gl_test.h"
+#include "support/viewer_test_base.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -17,10 +16,10 @@
 
 namespace raylab::test {
 
-class PanelFrameTest : public GlTest {
+class PanelFrameTest : public ViewerTestBase {
 protected:
     void SetUp() override {
-        GlTest::SetUp();
+        ViewerTestBase::SetUp();
         ImGui::CreateContext();
         ImGuiIO& io = ImGui::GetIO();
         io.IniFilename = nullptr;
@@ -29,10 +28,7 @@ protected:
         unsigned char* pixels = nullptr;
         int w = 0, h = 0;
         io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-        viewer = std::make_unique<ui::Viewer>(log);
-        ASSERT_TRUE(viewer->openScene(scenePath("default.json")));
-        ASSERT_TRUE(viewer->set("render.width", "32"));
-        ASSERT_TRUE(viewer->set("render.height", "18"));
+        openSmall("default.json", 32, 18);
     }
     void TearDown() override {
         viewer.reset();
@@ -62,9 +58,7 @@ protected:
         ImGui::Render();
         return clipboard_;
     }
-    ui::Log log{false};
     ui::UiState ui;
-    std::unique_ptr<ui::Viewer> viewer;
 
 private:
     std::string clipboard_;

@@ -8,27 +8,22 @@
 
 #include "inspect/path_checks.h"
 #include "render/render_helpers.h"
-#include "support/gl_test.h"
+#include "support/viewer_test_base.h"
 
 #include <gtest/gtest.h>
 
 namespace raylab::ui {
 namespace {
 
-class InspectionTest : public test::GlTest {
+class InspectionTest : public test::ViewerTestBase {
 protected:
     void SetUp() override {
-        GlTest::SetUp();
-        viewer = std::make_unique<Viewer>(log);
-        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json"))) << viewer->lastError();
-        ASSERT_TRUE(viewer->set("render.width", "48"));
-        ASSERT_TRUE(viewer->set("render.height", "27"));
+        ViewerTestBase::SetUp();
+        openSmall("default.json", 48, 27);
     }
     // The Cornell box (meshes, a triangle lamp): every path bounces on, with light at each bounce.
     void openCornellBox() {
-        ASSERT_TRUE(viewer->openScene(test::scenePath("cornell_box.json"))) << viewer->lastError();
-        ASSERT_TRUE(viewer->set("render.width", "48"));
-        ASSERT_TRUE(viewer->set("render.height", "27"));
+        openSmall("cornell_box.json", 48, 27);
         ASSERT_TRUE(viewer->set("render.nee", "true"));
     }
     void traceToTarget() {
@@ -48,8 +43,6 @@ protected:
         const glm::vec4 after = viewer->pixelValue(x, y);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(after[c], expected[c], 1e-5f * (1.0f + expected[c])) << where << " " << c;
     }
-    Log log{false};
-    std::unique_ptr<Viewer> viewer;
 };
 
 TEST_F(InspectionTest, RecordedPathsAreTheSamplesTheViewerTracesNext) {

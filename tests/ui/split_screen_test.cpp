@@ -7,21 +7,18 @@
 
 #include "render/render_helpers.h"
 #include "scene/parameters.h"
-#include "support/gl_test.h"
+#include "support/viewer_test_base.h"
 
 #include <gtest/gtest.h>
 
 namespace raylab::ui {
 namespace {
 
-class ClassroomTest : public test::GlTest {
+class ClassroomTest : public test::ViewerTestBase {
 protected:
     void SetUp() override {
-        GlTest::SetUp();
-        viewer = std::make_unique<Viewer>(log);
-        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json"))) << viewer->lastError();
-        ASSERT_TRUE(viewer->set("render.width", "48"));
-        ASSERT_TRUE(viewer->set("render.height", "27"));
+        ViewerTestBase::SetUp();
+        openSmall("default.json", 48, 27);
         ASSERT_TRUE(viewer->set("render.spp", "4"));
     }
     Scene with(const std::vector<std::pair<std::string, std::string>>& overrides) const {
@@ -37,8 +34,6 @@ protected:
         for (int i = 0; i < 100000 && !viewer->converged(); ++i) viewer->update(1e-3);
         return viewer->tracer()->readImage();
     }
-    Log log{false};
-    std::unique_ptr<Viewer> viewer;
 };
 
 } // namespace

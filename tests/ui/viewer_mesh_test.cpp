@@ -8,7 +8,7 @@
 #include "app/viewer.h"
 
 #include "render/render_helpers.h"
-#include "support/gl_test.h"
+#include "support/viewer_test_base.h"
 
 #include <gtest/gtest.h>
 
@@ -20,14 +20,11 @@ namespace {
 
 constexpr int kSize = 64;   // the Cornell box traced at 64 × 64
 
-class ViewerMeshTest : public test::GlTest {
+class ViewerMeshTest : public test::ViewerTestBase {
 protected:
     void SetUp() override {
-        GlTest::SetUp();
-        viewer = std::make_unique<Viewer>(log);
-        ASSERT_TRUE(viewer->openScene(test::scenePath("cornell_box.json"))) << viewer->lastError();
-        ASSERT_TRUE(viewer->set("render.width", std::to_string(kSize)));
-        ASSERT_TRUE(viewer->set("render.height", std::to_string(kSize)));
+        ViewerTestBase::SetUp();
+        openSmall("cornell_box.json", kSize, kSize);
         ASSERT_TRUE(viewer->set("render.spp", "2"));
     }
     void traceToTarget() {
@@ -56,8 +53,6 @@ protected:
         EXPECT_TRUE(q);
         return q.value_or(ImagePoint{});
     }
-    Log log{false};
-    std::unique_ptr<Viewer> viewer;
 };
 
 // On the green (right, x = 0) wall, and on the front face of the tall block (its corners

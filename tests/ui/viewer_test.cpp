@@ -3,7 +3,7 @@
 #include "app/viewer.h"
 
 #include "render/render_helpers.h"
-#include "support/gl_test.h"
+#include "support/viewer_test_base.h"
 
 #include <gtest/gtest.h>
 
@@ -14,24 +14,19 @@
 namespace raylab::ui {
 namespace {
 
-using test::GlTest;
+using test::ViewerTestBase;
 
-class ViewerTest : public GlTest {
+class ViewerTest : public ViewerTestBase {
 protected:
     void SetUp() override {
-        GlTest::SetUp();
-        viewer = std::make_unique<Viewer>(log);
-        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json"))) << viewer->lastError();
-        ASSERT_TRUE(viewer->set("render.width", "48"));
-        ASSERT_TRUE(viewer->set("render.height", "27"));
+        ViewerTestBase::SetUp();
+        openSmall("default.json", 48, 27);
     }
     // Traces with a tiny frame budget so passes are cut into bands (and chunks for rpp > 1).
     void traceToTarget() {
         for (int i = 0; i < 100000 && !viewer->converged(); ++i) viewer->update(1e-5);
         ASSERT_TRUE(viewer->converged());
     }
-    Log log{false};
-    std::unique_ptr<Viewer> viewer;
 };
 
 TEST_F(ViewerTest, SameImageAsTheHeadlessRendererForOneSamplePasses) {
