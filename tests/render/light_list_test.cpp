@@ -119,3 +119,31 @@ TEST(LightList, PowerSelectionOnlyWhenLightsDifferInPower) {
     EXPECT_TRUE(lightPowersDiffer(cornell));
     EXPECT_EQ(featureName(sceneFeatures(cornell)).find("light-power") != std::string::npos, true);
 }
+
+TEST(LightList, MeshHasEmissiveTriangleLooksAtTheMaterialsItsTrianglesUse) {
+    Scene scene;
+    Material dark, lamp, textured;
+    lamp.emission = glm::vec3(1.0f);
+    lamp.emissionStrength = 2.0f;
+    textured = lamp;
+    textured.emissionTextureIndex = 0;   // varies its emission: no light (lightRadiance 0)
+    scene.materials = {dark, lamp, textured};
+    Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
+    mesh.material = 1;
+    EXPECT_TRUE(meshHasEmissiveTriangle(scene, mesh)) << "one material for all: the mesh's";
+    mesh.material = 2;
+    EXPECT_FALSE(meshHasEmissiveTriangle(scene, mesh)) << "a textured emitter is no light";
+    mesh.material = 0;
+    mesh.triangleMaterials = {-1, 1};   // glTF: the second triangle's own material emits
+    EXPECT_TRUE(meshHasEmissiveTriangle(scene, mesh));
+    mesh.triangleMaterials = {-1, 0};
+    EXPECT_FALSE(meshHasEmissiveTriangle(scene, mesh));
+    mesh.material = 1;
+    mesh.triangleMaterials = {-1, 0};   // -1: the mesh's own, which emits
+    EXPECT_TRUE(meshHasEmissiveTriangle(scene, mesh));
+    mesh.triangles.clear();
+    mesh.triangleMaterials.clear();
+    EXPECT_FALSE(meshHasEmissiveTriangle(scene, mesh)) << "no triangles, no light";
+}
