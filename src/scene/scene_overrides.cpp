@@ -2,6 +2,7 @@
 
 #include "scene/json_parse.h"
 #include "scene/scene_error.h"
+#include "scene/scene_keys.h"
 
 #include <algorithm>
 #include <cctype>
@@ -30,14 +31,11 @@ AppliedOverride applyOverride(Json& root, const std::string& text) {
     const std::string valueText = text.substr(eq + 1);
 
     std::vector<std::string> segments;
-    for (std::size_t start = 0;;) {
-        const auto dot = key.find('.', start);
-        segments.push_back(key.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
-        if (dot == std::string::npos) break;
-        start = dot + 1;
+    try {
+        segments = splitKey(key);
+    } catch (const EditError& e) {
+        throw error(nullptr, e.what());
     }
-    for (const std::string& s : segments)
-        if (s.empty()) throw error(nullptr, "the key '" + key + "' has an empty part; write it like render.spp");
 
     Json value;
     ParseResult parsed = parseJson(valueText);
