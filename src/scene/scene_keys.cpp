@@ -41,7 +41,7 @@ Json textValue(std::string_view text) {
     return j;
 }
 
-// Runs one of the loader's checks; its complaint becomes a EditError at the document path.
+// Runs one of the loader's checks; its complaint becomes an EditError at the document path.
 template <class Check>
 void asLoaderChecks(Check&& check) {
     try {
