@@ -324,9 +324,23 @@ const std::vector<std::string_view>& meshKeys() {
     return keys;
 }
 
+const std::vector<TextureSlot>& textureSlots() {
+    static const std::vector<TextureSlot> slots = {
+        {"albedo_texture", &Material::albedoTexture, &Material::albedoTextureIndex, false},
+        {"normal_texture", &Material::normalTexture, &Material::normalTextureIndex, true},
+        {"roughness_texture", &Material::roughnessTexture, &Material::roughnessTextureIndex, true},
+        {"metallic_texture", &Material::metallicTexture, &Material::metallicTextureIndex, true},
+        {"emission_texture", &Material::emissionTexture, &Material::emissionTextureIndex, false},
+    };
+    return slots;
+}
+
 const std::vector<std::string_view>& materialFileKeys() {
-    static const std::vector<std::string_view> keys = {"albedo_texture", "normal_texture", "roughness_texture",
-                                                        "metallic_texture", "emission_texture"};
+    static const std::vector<std::string_view> keys = [] {
+        std::vector<std::string_view> k;
+        for (const TextureSlot& s : textureSlots()) k.push_back(s.key);
+        return k;
+    }();
     return keys;
 }
 

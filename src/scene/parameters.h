@@ -97,6 +97,17 @@ const std::vector<std::string_view>& meshKeys();
 // Keys of a material that name files (image textures), read by the loader itself.
 const std::vector<std::string_view>& materialFileKeys();
 
+// One image texture of a material: its key, the Material fields that hold the file as written and
+// its index into Scene::textures, and whether the image is data (linear) rather than sRGB colour.
+struct TextureSlot {
+    std::string_view key;             // "albedo_texture"
+    std::string Material::*file;
+    int Material::*index;
+    bool linearData = false;
+};
+// The slots in materialFileKeys() order.
+const std::vector<TextureSlot>& textureSlots();
+
 // Range/finiteness check of one number (one component for Vec3/Rgb). Returns the complaint without
 // location, e.g. "must be > 0, got -1", or nullopt when the value is acceptable. Integer types also
 // check that the value is whole and fits 32 bits.

@@ -3,23 +3,15 @@
 // documented key by key in scenes/FORMAT.md; the keys of "camera", "render" and "sky" come from the
 // parameter table in scene/parameters.h.
 #include "scene/scene.h"
-
-#include <nlohmann/json.hpp>
+#include "scene/scene_error.h"
+#include "scene/scene_writer.h"
 
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace raylab {
-
-// Error with a message already formatted as "FILE:LINE:COL: error: PATH: what" (or, for --set
-// overrides, "--set KEY=VALUE: error: PATH: what"). PATH is like objects[2].radius.
-class SceneError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 // Reads, parses and validates `file`. `overrides` are "dotted.key=value" strings (the renderer's
 // --set), e.g. "render.spp=256", "materials.red.albedo=[1,0,0]", "objects.0.radius=2": each value is
@@ -30,10 +22,5 @@ Scene loadScene(const std::filesystem::path& file, const std::vector<std::string
 // Same for text already in memory; `fileName` is used in messages and as Scene::sourcePath.
 Scene parseScene(std::string_view text, const std::string& fileName,
                  const std::vector<std::string>& overrides = {});
-
-// Writes a scene back in the file format: every key, all materials, all objects. Round-trips:
-// parseScene(sceneToJson(s).dump(), ...) gives back s (except sourcePath). Throws SceneError when a
-// sphere refers to a material index that does not exist.
-nlohmann::json sceneToJson(const Scene& scene);
 
 } // namespace raylab

@@ -2,7 +2,7 @@
 // through the tracer's BVH on the CPU finds meshes (and the nearest of a mesh and a sphere), edit
 // keys reach mesh transforms, boxes bound meshes, and a reload that only moves objects says so.
 #include "app/scene_change.h"
-#include "app/scene_edit.h"
+#include "scene/scene_keys.h"
 #include "app/scene_object.h"
 #include "app/view_geometry.h"
 

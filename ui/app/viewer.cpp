@@ -206,13 +206,6 @@ bool Viewer::set(const std::string& key, const std::string& valueText) {
         const Trigger t = setParam(next, key, valueText);
         return applyScene(std::move(next), t);
     } catch (const std::exception& e) {
-        // Keys the live-edit table lacks but the file format has (a material's texture files): the
-        // scene as it stands, re-read by the loader with the key as an override (as --set).
-        try {
-            Scene reloaded = parseScene(sceneToJson(scene_).dump(), scenePath_.string(), {key + "=" + valueText});
-            return applyScene(std::move(reloaded), Trigger::ReloadScene);
-        } catch (const std::exception&) {
-        }
         lastError_ = std::string("set ") + e.what();
         log_.error(lastError_);
         return false;

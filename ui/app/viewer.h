@@ -9,7 +9,7 @@
 #include "app/inspection.h"
 #include "app/log.h"
 #include "app/pass_slicer.h"
-#include "app/scene_edit.h"
+#include "scene/scene_keys.h"
 #include "gl/shader_program.h"
 #include "render/path_tracer.h"
 #include "scene/scene.h"

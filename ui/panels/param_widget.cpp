@@ -33,7 +33,7 @@ bool paramWidget(Viewer& viewer, const SceneParam& param, float vectorSpeed) {
     ParamValue value = param.get(viewer.scene());
     bool changed = false;
     ImGui::PushID(param.key.c_str());
-    if (typeName(s.type) == "bool") {   // stored as 0 / 1 (matched by name: see scene_edit.cpp)
+    if (s.type == ParamType::Bool) {   // stored as 0 / 1
         bool on = std::get<std::int64_t>(value) != 0;
         if (ImGui::Checkbox(label.c_str(), &on)) {
             value = std::int64_t(on ? 1 : 0);

@@ -2,7 +2,7 @@
 // One ImGui widget for one parameter-table entry (scene/parameters.h): a drag for numbers with the
 // table's range, a colour editor for reflectances, a combo for enums, the help, unit, range and
 // trigger as a tooltip. Panels build their widgets from the table, so new keys appear by themselves.
-#include "app/scene_edit.h"
+#include "scene/scene_keys.h"
 #include "app/viewer.h"
 
 namespace raylab::ui {

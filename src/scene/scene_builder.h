@@ -1,0 +1,29 @@
+#pragma once
+// Validation: a parsed scene document -> Scene, key by key through the parameter tables
+// (scene/parameters.h). The first problem is thrown as a ValidationFailure at its document path;
+// the loader places it in the file or at the --set that caused it.
+#include "scene/json_path.h"
+#include "scene/parameters.h"
+#include "scene/scene.h"
+
+#include <filesystem>
+#include <vector>
+
+namespace raylab::scenefmt {
+
+// Fills `scene` (whose sourcePath is set: relative files are read from its directory) from `root`.
+void buildScene(const Json& root, Scene& scene);
+
+// One image texture of a material (path relative to `sceneDir`), loaded once per file and decoding
+// into `textures`; sets the slot's file and index in `material`.
+void readTextureSlot(const TextureSlot& slot, const Json& v, const JsonPath& p, const std::filesystem::path& sceneDir,
+                     std::vector<Texture>& textures, Material& material);
+
+// camera.look_at must differ from camera.position, and camera.up must be a direction across the view.
+void checkCamera(const Camera& camera);
+
+// sky.map: a file name, relative to the scene file's directory; it must exist. sky.type "map"
+// needs one.
+void readSkyMap(const Json& root, Scene& scene);
+
+} // namespace raylab::scenefmt

@@ -1,0 +1,321 @@
+#include "scene/scene_keys.h"
+
+#include "scene/json_path.h"
+#include "scene/scene_builder.h"
+#include "scene/scene_error.h"
+
+#include <algorithm>
+#include <charconv>
+#include <optional>
+
+namespace raylab {
+namespace {
+
+using scenefmt::Json;
+using scenefmt::JsonPath;
+using scenefmt::ValidationFailure;
+
+std::optional<std::size_t> parseIndex(std::string_view s) {
+    std::size_t v = 0;
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
+    return v;
+}
+
+template <class T>
+std::string keysOf(const std::vector<FieldSpec<T>>& table) {
+    std::string out;
+    for (const auto& s : table) out += (out.empty() ? "" : ", ") + std::string(s.key);
+    return out;
+}
+
+double number(const nlohmann::json& j, std::string_view key) {
+    if (!j.is_number()) throw EditError(std::string(key) + ": expected a number, got " + j.dump());
+    return j.get<double>();
+}
+
+// A JSON value, or a bare word taken as a string (aces, textures/glow.png).
+Json textValue(std::string_view text) {
+    Json j = Json::parse(text, nullptr, false);
+    if (j.is_discarded()) j = std::string(text);
+    return j;
+}
+
+// Runs one of the loader's checks; its complaint becomes an EditError at the document path.
+template <class Check>
+void asLoaderChecks(Check&& check) {
+    try {
+        check();
+    } catch (const ValidationFailure& f) {
+        throw EditError(f.path.display() + ": " + f.message);
+    }
+}
+
+// The loader's cross-field checks that a scene-table key can break.
+void checkSection(Scene& scene, std::string_view section) {
+    asLoaderChecks([&] {
+        if (section == "camera") scenefmt::checkCamera(scene.camera);
+        if (section == "sky") scenefmt::readSkyMap(Json::object(), scene);
+    });
+}
+
+SceneParam sceneTableKey(const ParamSpec& p, std::string_view key) {
+    SceneParam k{std::string(key), &p, p.get, nullptr, nullptr, p.trigger};
+    k.set = [&p](Scene& sc, const ParamValue& v) {
+        const ParamValue old = p.get(sc);
+        p.set(sc, v);
+        try {
+            checkSection(sc, p.section());
+        } catch (const EditError&) {
+            p.set(sc, old);
+            throw;
+        }
+    };
+    return k;
+}
+
+SceneParam skyMapKey(std::string_view key) {
+    SceneParam k;
+    k.key = std::string(key);
+    k.setText = [](Scene& sc, std::string_view text) {
+        const Json root = {{"sky", {{"map", textValue(text)}}}};
+        asLoaderChecks([&] { scenefmt::readSkyMap(root, sc); });
+    };
+    return k;
+}
+
+// A key of a per-item table (a material's, a sphere's), reached through `item`, which gives the
+// material or sphere of a scene.
+template <class Target, class Item>
+std::optional<SceneParam> itemKey(const std::vector<FieldSpec<Target>>& table, std::string_view field,
+                                  std::string_view key, Item item) {
+    for (const FieldSpec<Target>& s : table) {
+        if (s.key != field) continue;
+        return SceneParam{std::string(key), &s, [&s, item](const Scene& sc) { return s.get(item(sc)); },
+                          [&s, item](Scene& sc, const ParamValue& v) { s.set(item(sc), v); }, nullptr, s.trigger};
+    }
+    return std::nullopt;
+}
+
+SceneParam materialKey(const Scene& scene, std::string_view key, std::string_view item, std::string_view field) {
+    std::optional<std::size_t> index = parseIndex(item);
+    if (!index) {
+        for (std::size_t i = 0; i < scene.materials.size(); ++i)
+            if (scene.materials[i].name == item) index = i;
+    }
+    if (!index || *index >= scene.materials.size())
+        throw EditError(std::string(key) + ": no material '" + std::string(item) + "'");
+    const std::size_t i = *index;
+    if (auto k = itemKey(materialParameters(), field, key, [i](auto& sc) -> auto& { return sc.materials.at(i); }))
+        return *k;
+    for (const TextureSlot& slot : textureSlots()) {
+        if (slot.key != field) continue;
+        SceneParam k;
+        k.key = std::string(key);
+        k.setText = [&slot, i](Scene& sc, std::string_view text) {
+            Material m = sc.materials.at(i);
+            const JsonPath at = JsonPath{}.key("materials").key(m.name).key(slot.key);
+            asLoaderChecks([&] {
+                scenefmt::readTextureSlot(slot, textValue(text), at, sc.sourcePath.parent_path(), sc.textures, m);
+            });
+            sc.materials.at(i) = std::move(m);
+        };
+        return k;
+    }
+    std::string keys = keysOf(materialParameters());
+    for (std::string_view f : materialFileKeys()) keys += ", " + std::string(f);
+    throw EditError(std::string(key) + ": materials have no key '" + std::string(field) + "' (keys: " + keys + ")");
+}
+
+// An object's `material`: a defined material's name, or "default" (built in when the file has none).
+SceneParam objectMaterialKey(std::string_view key, bool mesh, std::size_t i, const JsonPath& at) {
+    SceneParam k;
+    k.key = std::string(key);
+    k.setText = [mesh, i, at](Scene& sc, std::string_view text) {
+        const Json v = textValue(text);
+        std::vector<std::string_view> names;
+        for (const Material& m : sc.materials)
+            if (!m.fromGltf) names.push_back(m.name);
+        asLoaderChecks([&] {
+            if (!v.is_string())
+                scenefmt::fail(at, "expected a material name (a string), got " + scenefmt::typeOf(v));
+            const std::string& name = v.get_ref<const std::string&>();
+            if (std::find(names.begin(), names.end(), name) == names.end() && name != "default")
+                scenefmt::fail(at, "unknown material " + scenefmt::inQuotes(name) +
+                                       scenefmt::suggestion(name, names, "defined materials"));
+        });
+        const std::string& name = v.get_ref<const std::string&>();
+        auto found = std::find_if(sc.materials.begin(), sc.materials.end(),
+                                  [&name](const Material& m) { return !m.fromGltf && m.name == name; });
+        if (found == sc.materials.end()) {
+            Material d;
+            d.name = name;
+            sc.materials.push_back(d);
+            found = sc.materials.end() - 1;
+        }
+        const int index = int(found - sc.materials.begin());
+        if (mesh) {
+            sc.meshes.at(i).material = index;
+            sc.meshes.at(i).triangleMaterials.clear();   // an object's material covers the whole mesh
+        } else {
+            sc.spheres.at(i).material = index;
+        }
+    };
+    return k;
+}
+
+SceneParam objectKey(const Scene& scene, std::string_view key, std::string_view item, std::string_view field) {
+    const std::optional<std::size_t> index = parseIndex(item);
+    const std::size_t count = scene.spheres.size() + scene.meshes.size();
+    if (!index || *index >= count)
+        throw EditError(std::string(key) + ": no object " + std::string(item) + " (the scene has " +
+                       std::to_string(count) + ": spheres, then meshes)");
+    const bool mesh = *index >= scene.spheres.size();
+    const std::size_t i = mesh ? *index - scene.spheres.size() : *index;
+    if (!mesh) {
+        if (auto k = itemKey(sphereParameters(), field, key, [i](auto& sc) -> auto& { return sc.spheres.at(i); }))
+            return *k;
+    }
+    for (const TransformParamSpec& s : transformParameters()) {
+        if (s.key != field) continue;
+        auto transformOf = [mesh, i](auto& sc) -> auto& { return mesh ? sc.meshes.at(i).transform : sc.spheres.at(i).transform; };
+        return SceneParam{std::string(key), &s, [&s, transformOf](const Scene& sc) { return s.get(transformOf(sc)); },
+                        [&s, transformOf, mesh, key = std::string(key)](Scene& sc, const ParamValue& v) {
+                            Transform t = transformOf(sc);
+                            s.set(t, v);
+                            // A sphere stays a sphere (the loader checks the same).
+                            if (!mesh && (t.scale.x != t.scale.y || t.scale.x != t.scale.z))
+                                throw EditError(key + ": a sphere's scale must be the same on all three axes");
+                            transformOf(sc) = t;
+                        },
+                        nullptr, s.trigger};
+    }
+    if (field == "material")
+        return objectMaterialKey(key, mesh, i, JsonPath{}.key("objects").index(*index).key("material"));
+    std::string keys = mesh ? "" : keysOf(sphereParameters()) + ", ";
+    throw EditError(std::string(key) + ": " + (mesh ? "meshes" : "spheres") + " have no key '" + std::string(field) +
+                   "' (keys: " + keys + keysOf(transformParameters()) + ", material)");
+}
+
+} // namespace
+
+std::vector<std::string> splitKey(std::string_view key) {
+    std::vector<std::string> segments;
+    for (std::size_t start = 0;;) {
+        const auto dot = key.find('.', start);
+        segments.emplace_back(key.substr(start, dot == std::string_view::npos ? std::string_view::npos : dot - start));
+        if (dot == std::string_view::npos) break;
+        start = dot + 1;
+    }
+    for (const std::string& s : segments)
+        if (s.empty())
+            throw EditError("the key '" + std::string(key) + "' has an empty part; write it like render.spp");
+    return segments;
+}
+
+SceneParam resolveParam(const Scene& scene, std::string_view key) {
+    const std::vector<std::string> parts = splitKey(key);
+    if (const ParamSpec* p = findParameter(key)) return sceneTableKey(*p, key);
+    if (key == "sky.map") return skyMapKey(key);
+    if ((parts[0] == "materials" || parts[0] == "objects") && parts.size() >= 3) {
+        const std::string_view field = key.substr(parts[0].size() + parts[1].size() + 2);
+        if (parts[0] == "materials") return materialKey(scene, key, parts[1], field);
+        return objectKey(scene, key, parts[1], field);
+    }
+    std::vector<std::string_view> candidates;
+    for (const ParamSpec& p : sceneParameters()) candidates.push_back(p.key);
+    candidates.push_back("sky.map");
+    std::string msg = "unknown key '" + std::string(key) + "'";
+    const std::string_view near = closestMatch(key, candidates);
+    if (!near.empty()) msg += "; did you mean '" + std::string(near) + "'?";
+    throw EditError(msg);
+}
+
+std::vector<std::string> sceneKeys(const Scene& scene) {
+    std::vector<std::string> keys;
+    for (const ParamSpec& p : sceneParameters()) keys.emplace_back(p.key);
+    keys.emplace_back("sky.map");
+    for (const Material& m : scene.materials) {
+        if (m.fromGltf) continue;   // the mesh's file holds them
+        for (const MaterialParamSpec& p : materialParameters()) keys.push_back("materials." + m.name + "." + std::string(p.key));
+        for (std::string_view f : materialFileKeys()) keys.push_back("materials." + m.name + "." + std::string(f));
+    }
+    const std::size_t count = scene.spheres.size() + scene.meshes.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::string prefix = "objects." + std::to_string(i) + ".";
+        if (i < scene.spheres.size())
+            for (const SphereParamSpec& p : sphereParameters()) keys.push_back(prefix + std::string(p.key));
+        for (const TransformParamSpec& p : transformParameters()) keys.push_back(prefix + std::string(p.key));
+        keys.push_back(prefix + "material");
+    }
+    return keys;
+}
+
+ParamValue parseParamValue(const ValueSpec& spec, std::string_view text) {
+    nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+    if (j.is_discarded()) j = std::string(text);   // a bare word: an enum name
+    const std::string key(spec.key);
+    ParamValue value;
+    switch (spec.type) {
+    case ParamType::Bool:
+        if (j.is_string()) j = j.get<std::string>() == "true" ? nlohmann::json(true) : j.get<std::string>() == "false" ? nlohmann::json(false) : j;
+        if (j.is_number_integer() && (j.get<long long>() == 0 || j.get<long long>() == 1)) j = j.get<long long>() == 1;
+        if (!j.is_boolean()) throw EditError(key + ": expected true or false, got " + j.dump());
+        return std::int64_t(j.get<bool>() ? 1 : 0);
+    case ParamType::Int:
+    case ParamType::UInt: {
+        const double d = number(j, key);
+        if (auto why = checkScalar(spec, d)) throw EditError(key + ": " + *why);
+        value = std::int64_t(d);
+        break;
+    }
+    case ParamType::Float:
+        value = number(j, key);
+        break;
+    case ParamType::Vec3:
+    case ParamType::Rgb: {
+        // A colour, or a transform's scale, may be one number for all three components (as in the file).
+        if ((spec.type == ParamType::Rgb || spec.key == "transform.scale") && j.is_number()) {
+            value = glm::vec3(float(j.get<double>()));
+            break;
+        }
+        if (!j.is_array() || j.size() != 3)
+            throw EditError(key + ": expected [x, y, z]" +
+                           std::string(spec.type == ParamType::Rgb ? " or one number" : "") + ", got " + j.dump());
+        value = glm::vec3(float(number(j[0], key)), float(number(j[1], key)), float(number(j[2], key)));
+        break;
+    }
+    case ParamType::Enum: {
+        if (!j.is_string()) throw EditError(key + ": expected a name, got " + j.dump());
+        const EnumName* e = spec.findEnum(j.get<std::string>());
+        if (!e) {
+            std::string names;
+            for (const EnumName& n : spec.enumNames)
+                if (!n.alias) names += (names.empty() ? "" : ", ") + std::string(n.name);
+            throw EditError(key + ": unknown value '" + j.get<std::string>() + "' (expected " + names + ")");
+        }
+        value = std::int64_t(e->value);
+        break;
+    }
+    }
+    if (auto why = checkValue(spec, value)) throw EditError(key + ": " + *why);
+    return value;
+}
+
+Trigger setParam(Scene& scene, const SceneParam& param, const ParamValue& value) {
+    if (!param.spec) throw EditError(param.key + ": names a file or a material; set it as text");
+    if (auto why = checkValue(*param.spec, value)) throw EditError(param.key + ": " + *why);
+    param.set(scene, value);
+    return param.trigger;
+}
+
+Trigger setParam(Scene& scene, std::string_view key, std::string_view valueText) {
+    const SceneParam param = resolveParam(scene, key);
+    if (!param.spec) {
+        param.setText(scene, valueText);
+        return param.trigger;
+    }
+    return setParam(scene, param, parseParamValue(*param.spec, valueText));
+}
+
+} // namespace raylab

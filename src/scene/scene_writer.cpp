@@ -1,0 +1,125 @@
+#include "scene/scene_writer.h"
+
+#include "scene/parameters.h"
+#include "scene/scene_error.h"
+
+#include <charconv>
+#include <string>
+#include <variant>
+
+namespace raylab {
+namespace {
+
+// JSON number for a value as it will be read back: the shortest text that gives back the same field.
+double shortestText(double value) {
+    const std::string text = formatNumber(value);
+    double d = value;
+    std::from_chars(text.data(), text.data() + text.size(), d);
+    return d;
+}
+
+// For a float field 0.8f is written as 0.8; a double field keeps its exact value when 0.8 would differ.
+template <class Target>
+double numberForField(const FieldSpec<Target>& spec, const Target& source, double value) {
+    const double shortest = shortestText(value);
+    Target scratch = source;
+    spec.set(scratch, shortest);
+    return spec.get(scratch) == spec.get(source) ? shortest : value;
+}
+
+template <class Target>
+nlohmann::json valueJson(const FieldSpec<Target>& spec, const Target& source) {
+    const ParamValue v = spec.get(source);
+    if (const auto* vec = std::get_if<glm::vec3>(&v)) {
+        nlohmann::json arr = nlohmann::json::array();
+        // Components are floats: their shortest float text reads back to the same float.
+        for (int i = 0; i < 3; ++i) arr.push_back(shortestText(static_cast<double>((*vec)[i])));
+        return arr;
+    }
+    if (const auto* d = std::get_if<double>(&v)) return numberForField(spec, source, *d);
+    const std::int64_t i = std::get<std::int64_t>(v);
+    if (spec.type == ParamType::Enum) return std::string(spec.enumName(i));
+    if (spec.type == ParamType::Bool) return i != 0;
+    return i;
+}
+
+nlohmann::json transformJson(const Transform& t) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const TransformParamSpec& spec : transformParameters()) j[std::string(spec.name())] = valueJson(spec, t);
+    return j;
+}
+
+nlohmann::json materialJson(const Material& m) {
+    nlohmann::json mj = nlohmann::json::object();
+    for (const MaterialParamSpec& spec : materialParameters()) mj[std::string(spec.key)] = valueJson(spec, m);
+    for (const TextureSlot& slot : textureSlots())
+        if (!(m.*slot.file).empty()) mj[std::string(slot.key)] = m.*slot.file;
+    return mj;
+}
+
+nlohmann::json meshJson(const Mesh& m, const std::string& material) {
+    nlohmann::json o = nlohmann::json::object();
+    o["type"] = "mesh";
+    if (!m.file.empty()) {
+        o["file"] = m.file;
+    } else {
+        auto flat = [](const auto& items, int n) {
+            nlohmann::json a = nlohmann::json::array();
+            for (const auto& v : items)
+                for (int k = 0; k < n; ++k) a.push_back(v[k]);
+            return a;
+        };
+        o["positions"] = flat(m.positions, 3);
+        o["indices"] = flat(m.triangles, 3);
+        if (!m.normals.empty()) o["normals"] = flat(m.normals, 3);
+        if (!m.uvs.empty()) o["uvs"] = flat(m.uvs, 2);
+    }
+    o["transform"] = transformJson(m.transform);
+    if (m.triangleMaterials.empty()) o["material"] = material;   // else the glTF file's materials
+    return o;
+}
+
+} // namespace
+
+nlohmann::json sceneToJson(const Scene& scene) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const ParamSpec& spec : sceneParameters())
+        j[std::string(spec.section())][std::string(spec.name())] = valueJson(spec, scene);
+
+    nlohmann::json materials = nlohmann::json::object();
+    for (const Material& m : scene.materials) {
+        if (m.fromGltf) continue;   // read again from the mesh's file
+        materials[m.name] = materialJson(m);
+    }
+    j["materials"] = materials;
+    if (!scene.sky.map.empty()) j["sky"]["map"] = scene.sky.map.string();
+
+    nlohmann::json objects = nlohmann::json::array();
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        if (s.material < 0 || static_cast<std::size_t>(s.material) >= scene.materials.size()) {
+            throw SceneError("sceneToJson: error: objects[" + std::to_string(i) + "].material: index " +
+                             std::to_string(s.material) + " is out of range (" +
+                             std::to_string(scene.materials.size()) + " materials)");
+        }
+        nlohmann::json o = nlohmann::json::object();
+        o["type"] = "sphere";
+        for (const SphereParamSpec& spec : sphereParameters()) o[std::string(spec.key)] = valueJson(spec, s);
+        o["transform"] = transformJson(s.transform);
+        o["material"] = scene.materials[static_cast<std::size_t>(s.material)].name;
+        objects.push_back(o);
+    }
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh& m = scene.meshes[i];
+        if (m.material < 0 || static_cast<std::size_t>(m.material) >= scene.materials.size()) {
+            throw SceneError("sceneToJson: error: objects[" + std::to_string(scene.spheres.size() + i) +
+                             "].material: index " + std::to_string(m.material) + " is out of range (" +
+                             std::to_string(scene.materials.size()) + " materials)");
+        }
+        objects.push_back(meshJson(m, scene.materials[static_cast<std::size_t>(m.material)].name));
+    }
+    j["objects"] = objects;
+    return j;
+}
+
+} // namespace raylab
