@@ -55,7 +55,7 @@ vec3 debugIdColor(uint id) {
 #ifdef RAYLAB_COUNT_TRAVERSAL
 // Binding 17: the largest box (x) and triangle (y) count of one camera ray since the host last
 // cleared it: the heat maps' automatic scale.
-layout(std430, binding = 17) buffer DebugHeatMaxBuffer { uint debugHeatMax[2]; };
+layout(std430, binding = BINDING_DEBUG_HEAT_MAX) buffer DebugHeatMaxBuffer { uint debugHeatMax[2]; };
 #endif
 
 // One sample of the selected view for a camera ray. Depth is the distance along the ray (0 for a
@@ -97,7 +97,7 @@ vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
 #ifdef RAYLAB_DEBUG_MOMENTS
 // Per pixel (row-major from the bottom row): x = running mean of luminance², y = non-finite
 // samples so far. Cleared by the host whenever accumulation restarts.
-layout(std430, binding = 16) buffer DebugMomentsBuffer { vec4 debugMoments[]; };
+layout(std430, binding = BINDING_DEBUG_MOMENTS) buffer DebugMomentsBuffer { vec4 debugMoments[]; };
 
 struct DebugMoments {
     float sumSq;      // sum of luminance² over this pass's samples

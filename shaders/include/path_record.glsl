@@ -1,6 +1,6 @@
 // The pixel path inspector's recorder (src/inspect/path_inspector.h): with RAYLAB_INSPECT_PATHS
-// the tracer writes every term of the estimator of one chosen pixel's samples to buffers 20 and
-// 21, bounce by bounce. Without it this file adds nothing and the integrator's RAYLAB_RECORD hooks
+// the tracer writes every term of the estimator of one chosen pixel's samples to its two buffers,
+// bounce by bounce. Without it this file adds nothing and the integrator's RAYLAB_RECORD hooks
 // are empty, so normal renders pay nothing. Recording only writes: radiance, random numbers and
 // control flow are those of the normal tracer. The slot layout must match
 // src/inspect/path_record_layout.h. GLSL only.
@@ -38,8 +38,8 @@ const int PR_STAGE_ALBEDO = 18;   // render.stage primary: the first hit's flat 
 const int PR_PATH_VEC4S = 4;      // per path: final value rgb + bounce records; sample index,
                                   // the pixel, truncated; camera ray origin; camera ray direction
 
-layout(std430, binding = 20) buffer InspectBounceBuffer { vec4 inspectBounces[]; };
-layout(std430, binding = 21) writeonly buffer InspectPathBuffer { vec4 inspectPaths[]; };
+layout(std430, binding = BINDING_INSPECT_BOUNCES) buffer InspectBounceBuffer { vec4 inspectBounces[]; };
+layout(std430, binding = BINDING_INSPECT_PATHS) writeonly buffer InspectPathBuffer { vec4 inspectPaths[]; };
 uniform ivec2 uInspectPixel;       // GL pixel (bottom row 0) whose samples are recorded
 uniform int uInspectMaxRecords;    // bounce records per path that fit the buffer
 

@@ -1,14 +1,15 @@
-// The host contract for textures (bindings 14–15, render/gpu_scene.cpp) and the lookup of a
+// The host contract for textures (render/gpu_scene.cpp) and the lookup of a
 // material's textures. GLSL only; the sampling itself is shared (texture.glsl).
 #ifndef RAYLAB_SCENE_TEXTURES_GLSL
 #define RAYLAB_SCENE_TEXTURES_GLSL
+#include "bindings.glsl"
 
-layout(std430, binding = 14) readonly buffer TextureTexelBuffer { vec4 textureTexels[]; };
+layout(std430, binding = BINDING_TEXTURE_TEXELS) readonly buffer TextureTexelBuffer { vec4 textureTexels[]; };
 // [0].x = number of materials M; two records per material m:
 //   [1 + 2m]  = albedo, normal, roughness, metallic texture, each its index + 1 (0 = none);
 //   [2 + 2m]  = x emission texture + 1, y metallic factor, z normal scale (float bits);
 // [1 + 2M + k] = texture k (GpuTexture.info: offset, width, height, levels and wrap modes).
-layout(std430, binding = 15) readonly buffer TextureInfoBuffer { uvec4 textureInfo[]; };
+layout(std430, binding = BINDING_TEXTURE_INFO) readonly buffer TextureInfoBuffer { uvec4 textureInfo[]; };
 
 vec4 texelAt(uint i) { return textureTexels[i]; }
 

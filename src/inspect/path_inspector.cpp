@@ -1,6 +1,7 @@
 #include "inspect/path_inspector.h"
 
 #include "inspect/path_record_layout.h"
+#include "shaders/include/bindings.glsl"
 
 #include <glad/gl.h>
 
@@ -114,8 +115,8 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
     p.set("uInspectMaxRecords", maxRecords_);
     p.set("uDebugView", int(filter_));
     p.set("uDebugBounce", filterBounce_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, buffers_[0]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, buffers_[1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_BOUNCES, buffers_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_PATHS, buffers_[1]);
     tracer_->reset();
     tracer_->traceBand(glY, 1, int(firstSample), count);   // waits for the pass (counter read-back)
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -3,6 +3,7 @@
 #include "io/image_io.h"
 #include "render/environment_distribution.h"
 #include "render/light_list.h"
+#include "shaders/include/bindings.glsl"
 #include "shaders/include/scene_types.glsl"
 
 #include <glad/gl.h>
@@ -14,17 +15,9 @@
 namespace raylab {
 namespace {
 
-// Binding points; keep in step with shaders/include/scene_data.glsl.
-constexpr GLuint kSphereBinding = 1;
-constexpr GLuint kMaterialBinding = 2;
-constexpr GLuint kLightBinding = 4;
-constexpr GLuint kSkyMapUnit = 4;   // texture unit of uSkyMap
-constexpr GLuint kEnvMarginalBinding = 5;
-constexpr GLuint kEnvConditionalBinding = 6;
-constexpr GLuint kFirstGeometryBinding = 8;   // 8–12, see shaders/include/scene_geometry.glsl
-constexpr GLuint kTriangleLightBinding = 24;
-constexpr GLuint kLightAliasBinding = 25;
-constexpr GLuint kTriangleLightIndexBinding = 26;
+// geometryBuffers_ in order: top nodes, mesh nodes, instances, triangles, vertices.
+constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, BINDING_INSTANCES,
+                                         BINDING_TRIANGLES, BINDING_VERTICES};
 
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
@@ -173,19 +166,18 @@ void GpuScene::uploadSkyMap(const Sky& sky) {
 }
 
 void GpuScene::bind() const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSphereBinding, sphereBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, materialBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer_);
-    glBindTextureUnit(kSkyMapUnit, skyMapTexture_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvMarginalBinding, envMarginalBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvConditionalBinding, envConditionalBuffer_);
-    for (GLuint i = 0; i < 5; ++i)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFirstGeometryBinding + i, geometryBuffers_[i]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, textureBuffers_[0]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, textureBuffers_[1]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTriangleLightBinding, triangleLightBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightAliasBinding, lightAliasBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTriangleLightIndexBinding, triangleLightIndexBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SPHERES, sphereBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS, materialBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SPHERE_LIGHTS, lightBuffer_);
+    glBindTextureUnit(BINDING_SKY_MAP_TEXTURE, skyMapTexture_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_ENV_MARGINAL, envMarginalBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_ENV_CONDITIONAL, envConditionalBuffer_);
+    for (int i = 0; i < 5; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGeometryBindings[i], geometryBuffers_[i]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_TEXELS, textureBuffers_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_INFO, textureBuffers_[1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHTS, triangleLightBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_LIGHT_ALIAS, lightAliasBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHT_INDEX, triangleLightIndexBuffer_);
 }
 
 } // namespace raylab

@@ -3,6 +3,7 @@
 // Needs a current GL context.
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
+#include "shaders/include/bindings.glsl"
 
 #include <glad/gl.h>
 
@@ -33,8 +34,8 @@ inline std::vector<GpuTraceResult> gpuTrace(const GpuScene& scene, const std::ve
     glNamedBufferData(buffers[0], GLsizeiptr(rays.size() * sizeof(TestRay)), rays.data(), GL_STATIC_DRAW);
     glNamedBufferData(buffers[1], GLsizeiptr(rays.size() * sizeof(glm::vec4)), nullptr, GL_DYNAMIC_READ);
     scene.bind();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, buffers[0]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, buffers[1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEST_INPUT, buffers[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEST_OUTPUT, buffers[1]);
     glUseProgram(program.id());
     program.set("uRayCount", unsigned(rays.size()));
     glDispatchCompute(GLuint((rays.size() + 63) / 64), 1, 1);
