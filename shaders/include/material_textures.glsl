@@ -22,7 +22,7 @@ vec4 sampleHitTexture(uint k1, Hit hit, vec3 rayDir, float coneWidth) {
 
 // The factor the emission texture puts on the material's emitted radiance (1 without one).
 vec3 materialEmissionScale(Hit hit, vec3 rayDir, float coneWidth) {
-#ifdef RAYLAB_TEXTURE_EMISSION
+#if RAYLAB_TEXTURE_EMISSION
     uint k1 = materialEmissionTexture(hit.material);
     if (k1 > 0u) return sampleHitTexture(k1, hit, rayDir, coneWidth).rgb;
 #endif
@@ -36,14 +36,14 @@ void applyMaterialTextures(inout Hit hit, vec3 rayDir, float coneWidth, inout Bs
         GpuTexture tex = textureRecord(albedoTexture - 1u);
         float cosine = dot(hit.normal, rayDir) / length(rayDir);
         float lod = rayConeLod(tex, hit.lodBase, coneWidth, cosine);
-#ifdef RAYLAB_SHOW_MIP_LEVEL
+#if RAYLAB_SHOW_MIP_LEVEL
         // Debug view: the level as a colour ramp (0 blue, 4 green, 8+ red).
         bsdf.albedo = clamp(vec3(lod / 4.0f - 1.0f, 1.0f - abs(lod / 4.0f - 1.0f), 1.0f - lod / 4.0f), 0.0f, 1.0f);
 #else
         bsdf.albedo *= sampleTexture(tex, hit.uv, lod).rgb;
 #endif
     }
-#ifdef RAYLAB_TEXTURE_METALLIC
+#if RAYLAB_TEXTURE_METALLIC
     // The metallic workflow of other tools on raylab's f0 model (scenes/FORMAT.md): the textured
     // albedo is the base colour; f0 = mix(f0, base, m), albedo = base·(1 − m).
     float metallic = materialMetallic(hit.material);
@@ -54,7 +54,7 @@ void applyMaterialTextures(inout Hit hit, vec3 rayDir, float coneWidth, inout Bs
         bsdf.albedo *= 1.0f - metallic;
     }
 #endif
-#ifdef RAYLAB_TEXTURE_ROUGHNESS
+#if RAYLAB_TEXTURE_ROUGHNESS
     uint roughnessTexture = materialRoughnessTexture(hit.material);
     if (roughnessTexture > 0u) {
         float r = materials[hit.material].albedo.a * sampleHitTexture(roughnessTexture, hit, rayDir, coneWidth).g;

@@ -12,7 +12,7 @@
 #include "scene_intersect.glsl"
 #include "light_sampling.glsl"   // powerHeuristic
 
-#ifdef RAYLAB_INSPECT_PATHS
+#if RAYLAB_INSPECT_PATHS
 const int PR_VEC4S = 19;          // vec4s per bounce record
 const int PR_ORIGIN = 0;          // ray origin xyz, w: 1 hit, 0 miss (the sky)
 const int PR_DIRECTION = 1;       // unit ray direction xyz, w: hit distance (0 for a miss)

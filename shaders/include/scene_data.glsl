@@ -18,19 +18,19 @@ layout(std430, binding = BINDING_SPHERE_LIGHTS) readonly buffer LightBuffer { Gp
 layout(binding = BINDING_SKY_MAP_TEXTURE) uniform sampler2D uSkyMap;   // sky.map (1×1 black without)
 // Buffers of optional features are declared only with their feature: llvmpipe allows 16 storage
 // blocks per stage, and the debug variants (heat maps) add their own.
-#ifdef RAYLAB_SKY_MAP
+#if RAYLAB_SKY_MAP
 // Sky map importance sampling (render/environment_distribution.h): marginal CDF over rows
 // (height + 1 floats), conditional CDFs over columns (height × (width + 1) floats).
 layout(std430, binding = BINDING_ENV_MARGINAL) readonly buffer EnvMarginalBuffer { float envMarginalCdf[]; };
 layout(std430, binding = BINDING_ENV_CONDITIONAL) readonly buffer EnvConditionalBuffer { float envConditionalCdf[]; };
 #endif
-#ifdef RAYLAB_EMISSIVE_TRIANGLES
+#if RAYLAB_EMISSIVE_TRIANGLES
 // Emissive triangles in world space (render/light_list.h).
 layout(std430, binding = BINDING_TRIANGLE_LIGHTS) readonly buffer TriangleLightBuffer { GpuTriangleLight triangleLights[]; };
 // Per triangle (global index): 1 + its index in triangleLights[], 0 when it is no light.
 layout(std430, binding = BINDING_TRIANGLE_LIGHT_INDEX) readonly buffer TriangleLightIndexBuffer { uint triangleLightIndex[]; };
 #endif
-#ifdef RAYLAB_LIGHT_POWER_SELECTION
+#if RAYLAB_LIGHT_POWER_SELECTION
 // The alias table that picks any light (spheres first, then triangles) by power: (q, alias, pmf,
 // pmf of alias) per light (render/light_list.h).
 layout(std430, binding = BINDING_LIGHT_ALIAS) readonly buffer LightAliasBuffer { vec4 lightAlias[]; };

@@ -24,7 +24,7 @@ uint instanceCount() { return uint(instances.length()); }
 uvec4 instanceInfo(uint i) { return instances[i].info; }
 uint sphereCount() { return uint(spheres.length()); }
 
-#ifdef RAYLAB_COUNT_TRAVERSAL
+#if RAYLAB_COUNT_TRAVERSAL
 layout(std430, binding = BINDING_TRAVERSAL_COUNTERS) buffer TraversalCounters {
     uint boxTestsTotal;
     uint triangleTestsTotal;

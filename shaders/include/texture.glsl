@@ -21,7 +21,7 @@ const uint TEXTURE_WRAP_MIRROR = 2u;
 
 RL_FN int textureLevels(GpuTexture t) { return int(t.info.w & 0xffffu); }
 
-#if !defined(RAYLAB_FEATURES_SPECIALISED) || defined(RAYLAB_TEXTURE_WRAP_MODES)
+#if !defined(RAYLAB_FEATURES_SPECIALISED) || RAYLAB_TEXTURE_WRAP_MODES
 #define RAYLAB_TEXTURE_WRAPS 1
 RL_FN uint textureWrapU(GpuTexture t) { return (t.info.w >> 16u) & 0xffu; }
 RL_FN uint textureWrapV(GpuTexture t) { return (t.info.w >> 24u) & 0xffu; }
@@ -57,7 +57,7 @@ RL_FN vec4 sampleTextureLevel(GpuTexture t, int level, vec2 uv) {
         w = max(1, w / 2);
         h = max(1, h / 2);
     }
-#ifdef RAYLAB_TEXTURE_WRAPS
+#if RAYLAB_TEXTURE_WRAPS
     uint wrapU = textureWrapU(t);
     uint wrapV = textureWrapV(t);
     if (wrapU != TEXTURE_WRAP_REPEAT || wrapV != TEXTURE_WRAP_REPEAT) {
