@@ -3,7 +3,7 @@
 // the CPU: the test suite's (tests/shaders/gpu_sampling_test.cpp), the viewer's self-test and its BRDF explorer
 // (host: src/selftest/gpu_sampler.cpp).
 // One invocation per sample.
-// Defines set by the host: none. Uniforms below; the output buffer has a binding point of its own so
+// Defines set by the host: every feature on (render/shader_variant.h allFeatures). Uniforms below; the output buffer has a binding point of its own so
 // that the scene's buffers (the sky map tables) can stay bound.
 #include "bindings.glsl"
 #include "random.glsl"

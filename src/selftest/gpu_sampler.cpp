@@ -1,12 +1,13 @@
 #include "selftest/gpu_sampler.h"
 
+#include "render/shader_variant.h"
 #include "shaders/include/bindings.glsl"
 
 #include <glad/gl.h>
 
 namespace raylab {
 
-GpuSampler::GpuSampler() : program_(ShaderProgram::compute("entry/bsdf_samples.comp")) {}
+GpuSampler::GpuSampler() : program_(ShaderProgram::compute("entry/bsdf_samples.comp", featureDefines(allFeatures()))) {}
 
 std::vector<GpuSample> GpuSampler::cosineHemisphere(unsigned count, unsigned seed) const { return run(0, count, seed, {}, {}); }
 

@@ -3,6 +3,7 @@
 // Needs a current GL context.
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
+#include "render/shader_variant.h"
 #include "shaders/include/bindings.glsl"
 
 #include <glad/gl.h>
@@ -24,9 +25,9 @@ struct TestRay {
     glm::vec4 dir;   // w = tMax for the occlusion query
 };
 
-// defines: none = every feature and the top-level BVH; or a specialisation (features.glsl).
+// defines: the scene features (render/shader_variant.h featureDefines); every feature by default.
 inline std::vector<GpuTraceResult> gpuTrace(const GpuScene& scene, const std::vector<TestRay>& rays,
-                                            const ShaderDefines& defines = {}) {
+                                            const ShaderDefines& defines = featureDefines(allFeatures())) {
     const ShaderProgram program = ShaderProgram::computeFromFile(
         std::filesystem::path(RAYLAB_SOURCE_DIR) / "tests/support/trace_rays.comp", defines);
     GLuint buffers[2];

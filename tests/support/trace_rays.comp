@@ -1,8 +1,7 @@
 #version 450 core
 // Test entry point: traces a buffer of rays through the scene's BVH (the tracer's own code) and
-// writes what it found. Defines set by the host: none (every feature, top-level BVH), or a
-// specialisation as in features.glsl (RAYLAB_FEATURES_SPECIALISED, RAYLAB_FEATURE_*,
-// RAYLAB_TOP_LEVEL_LINEAR).
+// writes what it found. Defines set by the host: the scene features (features.glsl), every one on
+// by default (tests/support/gpu_trace.h).
 #include "../../shaders/include/bindings.glsl"
 #include "../../shaders/include/scene_intersect.glsl"
 
