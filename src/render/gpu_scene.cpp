@@ -10,10 +10,16 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace raylab {
 namespace {
+
+// std430 offsets of GpuMaterial (shaders/include/scene_types.glsl): vec4s, then scalars.
+static_assert(sizeof(glsl::GpuMaterial) == 80);
+static_assert(offsetof(glsl::GpuMaterial, f0Ior) == 32 && offsetof(glsl::GpuMaterial, albedoTexture) == 48);
+static_assert(offsetof(glsl::GpuMaterial, emissionTexture) == 64 && offsetof(glsl::GpuMaterial, normalScale) == 72);
 
 // geometryBuffers_ in order: top nodes, mesh nodes, instances, triangles, vertices.
 constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, BINDING_INSTANCES,
@@ -89,7 +95,10 @@ void GpuScene::uploadMaterials(const Scene& scene) {
         const glm::vec3 albedo = bake ? m.albedo * (1.0f - m.metallic) : m.albedo;
         const glm::vec3 f0 = bake ? glm::mix(m.f0, m.albedo, m.metallic) : m.f0;
         materials.push_back({glm::vec4(albedo, m.roughness), glm::vec4(m.radiance(), m.transmission),
-                             glm::vec4(f0, m.ior)});
+                             glm::vec4(f0, m.ior), unsigned(m.albedoTextureIndex + 1),
+                             unsigned(m.normalTextureIndex + 1), unsigned(m.roughnessTextureIndex + 1),
+                             unsigned(m.metallicTextureIndex + 1), unsigned(m.emissionTextureIndex + 1),
+                             metallicOnGpu(m) ? m.metallic : 0.0f, m.normalScale, 0u});
     }
     materialRadiance_.clear();
     // Emission varying over a texture is not a light for next-event estimation (the light list
@@ -98,16 +107,9 @@ void GpuScene::uploadMaterials(const Scene& scene) {
         materialRadiance_.push_back(lightRadiance(m));
     uploadBuffer(materialBuffer_, std::move(materials));
 
-    // Per material its textures and scalars read beside them, then per texture where its levels
-    // start in the texel array (upload() puts the levels there in this order).
+    // Per texture where its levels start in the texel array (upload() puts the levels there in
+    // this order).
     std::vector<glm::uvec4> info;
-    info.emplace_back(unsigned(scene.materials.size()), 0u, 0u, 0u);
-    for (const Material& m : scene.materials) {
-        info.emplace_back(unsigned(m.albedoTextureIndex + 1), unsigned(m.normalTextureIndex + 1),
-                          unsigned(m.roughnessTextureIndex + 1), unsigned(m.metallicTextureIndex + 1));
-        info.emplace_back(unsigned(m.emissionTextureIndex + 1), glm::floatBitsToUint(metallicOnGpu(m) ? m.metallic : 0.0f),
-                          glm::floatBitsToUint(m.normalScale), 0u);
-    }
     std::size_t firstTexel = 0;
     for (const Texture& t : scene.textures) {
         const unsigned wrap = (unsigned(t.wrapU) << 16u) | (unsigned(t.wrapV) << 24u);
