@@ -128,8 +128,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
     // Few objects: plain loops beat the top-level traversal's stack and box tests (measured in
     // bench/geometry.md); loop bounds are buffer lengths, the same in every lane. Spheres are read
     // by the loop counter, an index llvmpipe knows is uniform: one load per sphere instead of a
-    // per-lane gather through the instance record (default scene: 2926 → 1811 instructions per
-    // path, bench/throughput.md).
+    // per-lane gather through the instance record (bench/throughput.md).
 #if RAYLAB_FEATURE_SPHERES
     uint sphereTotal = sphereCount();
     for (uint k = 0u; k < sphereTotal; ++k) {

@@ -6,7 +6,7 @@
 #include "environment_map.glsl"
 #include "scene_data.glsl"
 
-#if RAYLAB_SKY_MAP   // the tables (bindings 5, 6) exist only with a sky map
+#if RAYLAB_SKY_MAP   // the tables exist only with a sky map
 // The last index i in [0, n) with cdf[offset + i] <= u (cdf[offset + n] is 1).
 int envFindMarginal(int n, float u) {
     int lo = 0;
