@@ -50,14 +50,14 @@
 #endif
 
 // The teaching stages of render.stage (scene.h RenderStage): each adds to the one before. The host
-// sets RAYLAB_STAGE to one of them.
+// sets RAYLAB_STAGE to one of them; test shaders of the geometry alone may leave it out.
 #define RAYLAB_STAGE_PRIMARY 0    // flat albedo of the first hit
 #define RAYLAB_STAGE_EMISSION 1   // + emitters and sky seen directly
 #define RAYLAB_STAGE_LAMBERT 2    // + path tracing, every material Lambertian
 #define RAYLAB_STAGE_GGX 3        // + the general BSDF (the host also sets RAYLAB_GENERAL_BSDF)
 #define RAYLAB_STAGE_TEXTURES 4   // + textures (RAYLAB_FEATURE_TEXTURES)
 #define RAYLAB_STAGE_FULL 5       // + depth of field (RAYLAB_FEATURE_DOF)
-#ifdef __cplusplus
+#ifndef RAYLAB_STAGE
 #define RAYLAB_STAGE RAYLAB_STAGE_FULL
 #endif
 
