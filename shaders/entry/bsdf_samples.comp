@@ -3,8 +3,9 @@
 // the CPU: the test suite's (tests/shaders/gpu_sampling_test.cpp), the viewer's self-test and its BRDF explorer
 // (host: src/selftest/gpu_sampler.cpp).
 // One invocation per sample.
-// Defines set by the host: none. Uniforms below; the output buffer is at binding 7 so that the
-// scene's bindings (sky map tables at 5 and 6) can stay bound.
+// Defines set by the host: every feature on (render/shader_variant.h allFeatures). Uniforms below; the output buffer has a binding point of its own so
+// that the scene's buffers (the sky map tables) can stay bound.
+#include "bindings.glsl"
 #include "random.glsl"
 #include "sampling.glsl"
 #include "bsdf.glsl"
@@ -19,7 +20,7 @@ struct SampleRecord {
     vec4 wiPdf;         // xyz direction (local frame), w pdf
     vec4 weightLobe;    // xyz weight, w lobe (+ 8 when delta)
 };
-layout(std430, binding = 7) writeonly buffer Samples { SampleRecord samples[]; };
+layout(std430, binding = BINDING_BSDF_SAMPLES) writeonly buffer Samples { SampleRecord samples[]; };
 
 uniform uint uCount;        // (uSeed comes from scene_data.glsl)
 uniform int uMode;          // 0: cosine hemisphere, 1: bsdfSample, 2: sphere cone, 3: sky map,

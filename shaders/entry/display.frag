@@ -3,10 +3,11 @@
 // values, one fragment per traced pixel, drawn into an RGBA8 texture that ImGui shows.
 // Defines set by the host: none.
 #include "../include/compat.glsl"
+#include "../include/bindings.glsl"
 #include "../include/tone_map.glsl"
 
-layout(binding = 0) uniform sampler2D uAccumTex;   // running mean (RGBA32F)
-layout(std430, binding = 16) readonly buffer DebugMomentsBuffer { vec4 debugMoments[]; };
+layout(binding = BINDING_ACCUM_TEXTURE) uniform sampler2D uAccumTex;   // running mean (RGBA32F)
+layout(std430, binding = BINDING_DEBUG_MOMENTS) readonly buffer DebugMomentsBuffer { vec4 debugMoments[]; };
 
 uniform ivec2 uImageSize;
 uniform int uView;          // ui/app/debug_view.h

@@ -2,24 +2,8 @@
 // Fragment entry of the path tracer: a full-screen triangle, one fragment per pixel, drawn into
 // a framebuffer with no attachments; results go to uAccum by imageStore. The scene's data arrives
 // in buffers and uniforms.
-// Defines set by the host (render/path_tracer.cpp):
-// From the scene (render/shader_variant.cpp featureDefines; include/features.glsl lists them):
-// RAYLAB_FEATURES_SPECIALISED and RAYLAB_FEATURE_SPHERES, RAYLAB_FEATURE_MESHES,
-// RAYLAB_FEATURE_SMOOTH_NORMALS, RAYLAB_FEATURE_DOF, RAYLAB_FEATURE_TEXTURES; RAYLAB_TOP_LEVEL_LINEAR
-// (few objects: no top-level BVH); RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (a material has
-// f0 > 0 or transmission > 0), RAYLAB_SKY_MAP (sky.type map), RAYLAB_EMISSIVE_TRIANGLES and
-// RAYLAB_LIGHT_POWER_SELECTION (with NEE: emissive meshes, lights of unequal power; see
-// integrator.glsl); RAYLAB_STAGE=N (render.stage below full, the teaching stages).
-// With textures: RAYLAB_SHOW_MIP_LEVEL (render.show_mip_level) and, per kind some material uses,
-// RAYLAB_TEXTURE_ROUGHNESS, RAYLAB_TEXTURE_METALLIC, RAYLAB_TEXTURE_EMISSION,
-// RAYLAB_TEXTURE_WRAP_MODES (include/material_textures.glsl).
-// Optional, the viewer's and raylab-render's debug variants: RAYLAB_DEBUG_VIEWS (debug views),
-// RAYLAB_DEBUG_MOMENTS (per-pixel moments for the noise and NaN views), RAYLAB_COUNT_TRAVERSAL
-// (boxes and triangles tested, include/scene_geometry.glsl).
-// Optional, the pixel path inspector only: RAYLAB_INSPECT_PATHS (records the estimator of one
-// pixel into buffers 20 and 21, include/path_record.glsl; src/inspect/path_inspector.h).
-// Optional, tests only: RAYLAB_INJECT_NONFINITE=N (every N-th sample becomes NaN or Inf).
-// The one list of these names: src/render/tracer_defines.h.
+// Defines set by the host: the scene's features, every one 0 or 1 (include/features.glsl), and
+// the optional debug and test defines; the one list is src/render/tracer_defines.h.
 #include "../include/path_tracer.glsl"
 
 void main() {

@@ -41,7 +41,7 @@ struct TraceRecord {
 RL_FN vec3 nodeMin(GpuBvhNode n) { return vec3(n.boundsMin.x, n.boundsMin.y, n.boundsMin.z); }
 RL_FN vec3 nodeMax(GpuBvhNode n) { return vec3(n.boundsMax.x, n.boundsMax.y, n.boundsMax.z); }
 
-#ifdef RAYLAB_FEATURE_MESHES
+#if RAYLAB_FEATURE_MESHES
 // Nearest triangle of one mesh in (0, rec.t), in the mesh's object space; updates rec. The
 // object-space ray starts tOffset further along than the world ray (see intersectInstance).
 RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool anyHit, RL_INOUT(TraceRecord) rec) {
@@ -93,7 +93,7 @@ RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool a
 RL_FN bool intersectInstance(Ray ray, uint i, bool anyHit, RL_INOUT(TraceRecord) rec) {
     bool found = false;
     GpuInstance inst = instanceAt(i);
-#ifdef RAYLAB_FEATURE_SPHERES
+#if RAYLAB_FEATURE_SPHERES
     if (inst.info.x == INSTANCE_SPHERE) {
         GpuSphere s = sphereAt(inst.info.y);
         float t = intersectSphere(ray, xyzOf(s.centerRadius), s.centerRadius.w, 0.0f, rec.t);
@@ -103,7 +103,7 @@ RL_FN bool intersectInstance(Ray ray, uint i, bool anyHit, RL_INOUT(TraceRecord)
         }
     }
 #endif
-#ifdef RAYLAB_FEATURE_MESHES
+#if RAYLAB_FEATURE_MESHES
     if (inst.info.x == INSTANCE_MESH) {
         // Into object space; the direction is not renormalised, so t carries over. The transformed
         // origin is only known within its rounding error: move it forward along the ray to the
@@ -124,13 +124,12 @@ RL_FN bool intersectInstance(Ray ray, uint i, bool anyHit, RL_INOUT(TraceRecord)
 RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec) {
     rec = TraceRecord(tMax, 0u, 0u, 0.0f, 0.0f);
     bool found = false;
-#ifdef RAYLAB_TOP_LEVEL_LINEAR
+#if RAYLAB_TOP_LEVEL_LINEAR
     // Few objects: plain loops beat the top-level traversal's stack and box tests (measured in
     // bench/geometry.md); loop bounds are buffer lengths, the same in every lane. Spheres are read
     // by the loop counter, an index llvmpipe knows is uniform: one load per sphere instead of a
-    // per-lane gather through the instance record (default scene: 2926 → 1811 instructions per
-    // path, bench/throughput.md).
-#ifdef RAYLAB_FEATURE_SPHERES
+    // per-lane gather through the instance record (bench/throughput.md).
+#if RAYLAB_FEATURE_SPHERES
     uint sphereTotal = sphereCount();
     for (uint k = 0u; k < sphereTotal; ++k) {
         GpuSphere s = sphereAt(k);
@@ -142,7 +141,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
         }
     }
 #endif
-#ifdef RAYLAB_FEATURE_MESHES
+#if RAYLAB_FEATURE_MESHES
     uint count = instanceCount();
     for (uint i = 0u; i < count; ++i) {
         if (instanceInfo(i).x != INSTANCE_MESH) continue;
@@ -211,11 +210,11 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     SurfaceHit s;
     s.lodBase = 0.0f;
     s.tangent = vec3(0.0f);
-#ifdef RAYLAB_FEATURE_SPHERES
+#if RAYLAB_FEATURE_SPHERES
     // A sphere's material is in its own record: without meshes the instance record is not read at
     // all (that per-lane read cost 2892 → 1811 instructions per path on the default scene,
     // bench/throughput.md).
-#ifdef RAYLAB_FEATURE_MESHES
+#if RAYLAB_FEATURE_MESHES
     if (instanceInfo(rec.instance).x == INSTANCE_SPHERE) {
 #else
     {
@@ -230,7 +229,7 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
         s.error = sphereHitError(c, r);
         // Equirectangular uv: u around +y from +x, v from the bottom pole.
         s.uv = vec2(0.0f);
-#ifdef RAYLAB_FEATURE_TEXTURES   // uv and its footprint only where something reads them
+#if RAYLAB_FEATURE_TEXTURES   // uv and its footprint only where something reads them
         s.uv = vec2(0.5f + atan(s.normal.z, s.normal.x) * (0.5f * INV_PI),
                     acos(clamp(-s.normal.y, -1.0f, 1.0f)) * INV_PI);
         // du·dv = dθ·dφ / (2π²) against dA = r²·sinθ·dθ·dφ.
@@ -241,7 +240,7 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
         return s;
     }
 #endif
-#ifdef RAYLAB_FEATURE_MESHES
+#if RAYLAB_FEATURE_MESHES
     GpuInstance inst = instanceAt(rec.instance);
     s.material = inst.info.z;
     GpuTriangle tri = triangleAt(rec.primitive);
@@ -264,7 +263,7 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     s.normal = normalize(transformNormal(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2,
                                          cross(p1 - p0, p2 - p0)));
     s.shadingNormal = s.normal;
-#ifdef RAYLAB_FEATURE_SMOOTH_NORMALS
+#if RAYLAB_FEATURE_SMOOTH_NORMALS
     if ((inst.info.w & 1u) != 0u) {
         vec3 n = h.b0 * xyzOf(v0.normalV) + h.b1 * xyzOf(v1.normalV) + h.b2 * xyzOf(v2.normalV);
         vec3 nw = transformNormal(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, n);
@@ -275,7 +274,7 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     vec2 t1 = vec2(v1.positionU.w, v1.normalV.w);
     vec2 t2 = vec2(v2.positionU.w, v2.normalV.w);
     s.uv = h.b0 * t0 + h.b1 * t1 + h.b2 * t2;
-#ifdef RAYLAB_FEATURE_TEXTURES
+#if RAYLAB_FEATURE_TEXTURES
     // Ray Tracing Gems ch. 20, eq. 34: texel-to-world area ratio of the triangle (world edges).
     vec3 w1 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p1 - p0);
     vec3 w2 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p2 - p0);

@@ -30,7 +30,7 @@ const int DEBUG_TRIANGLES = 11;
 const int DEBUG_UV = 12;
 const int DEBUG_OBJECT_ID = 13;           // a colour per object: spheres, then meshes (instanceObjectId)
 
-#ifdef RAYLAB_DEBUG_VIEWS
+#if RAYLAB_DEBUG_VIEWS
 uniform int uDebugView;
 uniform int uDebugBounce;
 
@@ -52,10 +52,10 @@ vec3 debugIdColor(uint id) {
     return 0.25f + 0.75f * k;
 }
 
-#ifdef RAYLAB_COUNT_TRAVERSAL
+#if RAYLAB_COUNT_TRAVERSAL
 // Binding 17: the largest box (x) and triangle (y) count of one camera ray since the host last
 // cleared it: the heat maps' automatic scale.
-layout(std430, binding = 17) buffer DebugHeatMaxBuffer { uint debugHeatMax[2]; };
+layout(std430, binding = BINDING_DEBUG_HEAT_MAX) buffer DebugHeatMaxBuffer { uint debugHeatMax[2]; };
 #endif
 
 // One sample of the selected view for a camera ray. Depth is the distance along the ray (0 for a
@@ -67,13 +67,13 @@ vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
         return traceRadiance(ray, rng, rays);   // views 7-9: filtered by the hook above
     Hit hit;
     ++rays;
-#ifdef RAYLAB_COUNT_TRAVERSAL
+#if RAYLAB_COUNT_TRAVERSAL
     uint boxesBefore = gBoxTests;
     uint trianglesBefore = gTriangleTests;
 #endif
     bool found = intersectScene(ray, hit);
     if (uDebugView == DEBUG_BOXES || uDebugView == DEBUG_TRIANGLES) {
-#ifdef RAYLAB_COUNT_TRAVERSAL
+#if RAYLAB_COUNT_TRAVERSAL
         uint boxes = gBoxTests - boxesBefore;
         uint tris = gTriangleTests - trianglesBefore;
         atomicMax(debugHeatMax[0], boxes);
@@ -94,10 +94,10 @@ vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
 
 #endif
 
-#ifdef RAYLAB_DEBUG_MOMENTS
+#if RAYLAB_DEBUG_MOMENTS
 // Per pixel (row-major from the bottom row): x = running mean of luminance², y = non-finite
 // samples so far. Cleared by the host whenever accumulation restarts.
-layout(std430, binding = 16) buffer DebugMomentsBuffer { vec4 debugMoments[]; };
+layout(std430, binding = BINDING_DEBUG_MOMENTS) buffer DebugMomentsBuffer { vec4 debugMoments[]; };
 
 struct DebugMoments {
     float sumSq;      // sum of luminance² over this pass's samples

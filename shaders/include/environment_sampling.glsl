@@ -6,7 +6,7 @@
 #include "environment_map.glsl"
 #include "scene_data.glsl"
 
-#ifdef RAYLAB_SKY_MAP   // the tables (bindings 5, 6) exist only with a sky map
+#if RAYLAB_SKY_MAP   // the tables exist only with a sky map
 // The last index i in [0, n) with cdf[offset + i] <= u (cdf[offset + n] is 1).
 int envFindMarginal(int n, float u) {
     int lo = 0;
@@ -52,7 +52,7 @@ float environmentPdf(vec3 dir) {
 // A direction from the map's distribution, with the solid-angle density of the texel it was
 // drawn in (exact, whereas re-mapping the direction may land in a neighbour at a texel edge),
 // and the image coordinates it came from.
-#ifdef RAYLAB_SKY_MAP
+#if RAYLAB_SKY_MAP
 vec3 sampleEnvironment(vec2 u, out float pdf, out vec2 uvOut) {
     ivec2 size = textureSize(uSkyMap, 0);
     int y = envFindMarginal(size.y, u.y);

@@ -1,51 +1,64 @@
-// Scene features the tracer can be specialised for (performance.md: skip what a scene does not
-// need). The host (render/shader_variant.cpp) defines RAYLAB_FEATURES_SPECIALISED and exactly the
-// features the scene uses, right after #version; absent features compile to nothing. Without
-// RAYLAB_FEATURES_SPECIALISED (C++ mirrors, test shaders) every feature is on. Shared by C++ and
-// GLSL (preprocessor only).
-//   RAYLAB_FEATURE_SPHERES         the scene has spheres
-//   RAYLAB_FEATURE_MESHES          the scene has triangle meshes
-//   RAYLAB_FEATURE_SMOOTH_NORMALS  some mesh has per-vertex normals
-//   RAYLAB_FEATURE_DOF             the camera has a lens (camera.aperture > 0)
-//   RAYLAB_FEATURE_TEXTURES        some material has an image texture
-//   RAYLAB_TOP_LEVEL_LINEAR        few objects: loop over them instead of the top-level BVH
-//   RAYLAB_NEE                     next-event estimation (render.nee)
-//   RAYLAB_GENERAL_BSDF            GGX specular and glass (some material has f0 or transmission)
-//   RAYLAB_SKY_MAP                 an HDR environment image (sky.type map)
-//   RAYLAB_TEXTURE_ROUGHNESS       some material has a roughness texture (with TEXTURES)
-//   RAYLAB_TEXTURE_METALLIC        metallic mixed per hit: a metallic texture, or metallic with an
-//                                  albedo texture (with TEXTURES)
-//   RAYLAB_TEXTURE_EMISSION        some material has an emission texture (with TEXTURES)
-//   RAYLAB_TEXTURE_WRAP_MODES      some texture clamps or mirrors instead of repeating (glTF)
-//   RAYLAB_STAGE                   render.stage below full (teaching): RAYLAB_STAGE_* below; absent = full
-//   RAYLAB_EMISSIVE_TRIANGLES      with RAYLAB_NEE: some mesh emits, its triangles are lights
-//   RAYLAB_LIGHT_POWER_SELECTION   with RAYLAB_NEE: lights differ in power, picked by power
+// Scene features the tracer is specialised for, so that a scene pays nothing for code it does not
+// need (bench/geometry.md, "Specialised against all-features shader"). RAYLAB_FEATURE_LIST is the
+// one list: the host's SceneFeatures, its defines and names (render/shader_variant.cpp) and
+// kTracerDefines (render/tracer_defines.h) are generated from it. The host emits every feature as 0 or 1 right after #version and shaders test
+// them with #if; a shader compiled without them stops. C++ (the shared maths of compat.glsl) sees
+// the defaults below, which are also SceneFeatures' defaults: the unspecialised tracer.
 #ifndef RAYLAB_FEATURES_GLSL
 #define RAYLAB_FEATURES_GLSL
-#ifndef RAYLAB_FEATURES_SPECIALISED
-#define RAYLAB_FEATURE_SPHERES 1
-#define RAYLAB_FEATURE_MESHES 1
-#define RAYLAB_FEATURE_SMOOTH_NORMALS 1
-#define RAYLAB_FEATURE_DOF 1
-#define RAYLAB_FEATURE_TEXTURES 1
-#define RAYLAB_NEE 1
-#define RAYLAB_GENERAL_BSDF 1
-#define RAYLAB_SKY_MAP 1
-#define RAYLAB_TEXTURE_ROUGHNESS 1
-#define RAYLAB_TEXTURE_METALLIC 1
-#define RAYLAB_TEXTURE_EMISSION 1
-#define RAYLAB_TEXTURE_WRAP_MODES 1
-#define RAYLAB_EMISSIVE_TRIANGLES 1
-#define RAYLAB_LIGHT_POWER_SELECTION 1
+
+#ifdef __cplusplus
+// RL_FEATURE(define, SceneFeatures field, needs, name in variant names): the define is 1 when the
+// field and the field `needs` names are both true (`always`: no prerequisite).
+#define RAYLAB_FEATURE_LIST(RL_FEATURE)                                                          \
+    RL_FEATURE(RAYLAB_FEATURE_SPHERES, spheres, always, "spheres")                               \
+    RL_FEATURE(RAYLAB_FEATURE_MESHES, meshes, always, "meshes")                                  \
+    RL_FEATURE(RAYLAB_FEATURE_SMOOTH_NORMALS, smoothNormals, always, "smooth")                   \
+    RL_FEATURE(RAYLAB_FEATURE_DOF, depthOfField, always, "dof")                                  \
+    RL_FEATURE(RAYLAB_FEATURE_TEXTURES, textures, always, "textures")                            \
+    RL_FEATURE(RAYLAB_TOP_LEVEL_LINEAR, linearTopLevel, always, "few-objects")                   \
+    RL_FEATURE(RAYLAB_SHOW_MIP_LEVEL, showMipLevel, always, "mip-view")                          \
+    RL_FEATURE(RAYLAB_NEE, nee, always, "nee")                                                   \
+    RL_FEATURE(RAYLAB_GENERAL_BSDF, generalBsdf, always, "ggx+glass")                            \
+    RL_FEATURE(RAYLAB_SKY_MAP, skyMap, always, "sky-map")                                        \
+    RL_FEATURE(RAYLAB_TEXTURE_ROUGHNESS, roughnessTextures, textures, "roughness-tex")           \
+    RL_FEATURE(RAYLAB_TEXTURE_METALLIC, metallicTextures, textures, "metallic-tex")              \
+    RL_FEATURE(RAYLAB_TEXTURE_EMISSION, emissionTextures, textures, "emission-tex")              \
+    RL_FEATURE(RAYLAB_TEXTURE_WRAP_MODES, textureWrapModes, textures, "wrap-modes")              \
+    RL_FEATURE(RAYLAB_EMISSIVE_TRIANGLES, emissiveTriangles, always, "triangle-lights")          \
+    RL_FEATURE(RAYLAB_LIGHT_POWER_SELECTION, lightPowerSelection, always, "light-power")
+
+#define RAYLAB_FEATURES_SPECIALISED 1
+#define RAYLAB_FEATURE_SPHERES 1          // the scene has spheres
+#define RAYLAB_FEATURE_MESHES 1           // the scene has triangle meshes
+#define RAYLAB_FEATURE_SMOOTH_NORMALS 1   // some mesh has per-vertex normals
+#define RAYLAB_FEATURE_DOF 1              // the camera has a lens (camera.aperture > 0)
+#define RAYLAB_FEATURE_TEXTURES 1         // some material has an image texture
+#define RAYLAB_TOP_LEVEL_LINEAR 0         // few objects: a loop over them instead of the top-level BVH
+#define RAYLAB_SHOW_MIP_LEVEL 0           // debug view render.show_mip_level (with textures)
+#define RAYLAB_NEE 1                      // next-event estimation (render.nee)
+#define RAYLAB_GENERAL_BSDF 1             // GGX specular and glass (some material has f0 or transmission)
+#define RAYLAB_SKY_MAP 1                  // an HDR environment image (sky.type map)
+#define RAYLAB_TEXTURE_ROUGHNESS 1        // some material has a roughness texture
+#define RAYLAB_TEXTURE_METALLIC 1         // metallic mixed per hit (render/gpu_scene.h metallicOnGpu)
+#define RAYLAB_TEXTURE_EMISSION 1         // some material has an emission texture
+#define RAYLAB_TEXTURE_WRAP_MODES 1       // some texture clamps or mirrors instead of repeating (glTF)
+#define RAYLAB_EMISSIVE_TRIANGLES 1       // with NEE: some mesh emits, its triangles are lights
+#define RAYLAB_LIGHT_POWER_SELECTION 1    // with NEE: lights differ in power, picked by power
+#elif !defined(RAYLAB_FEATURES_SPECIALISED)
+#error "compiled without the scene's feature defines: pass featureDefines() (render/shader_variant.h)"
 #endif
-// The teaching stages of render.stage (scene.h RenderStage): each adds to the one before.
+
+// The teaching stages of render.stage (scene.h RenderStage): each adds to the one before. The host
+// sets RAYLAB_STAGE to one of them; test shaders of the geometry alone may leave it out.
 #define RAYLAB_STAGE_PRIMARY 0    // flat albedo of the first hit
 #define RAYLAB_STAGE_EMISSION 1   // + emitters and sky seen directly
 #define RAYLAB_STAGE_LAMBERT 2    // + path tracing, every material Lambertian
-#define RAYLAB_STAGE_GGX 3        // + the general BSDF (the host also defines RAYLAB_GENERAL_BSDF)
+#define RAYLAB_STAGE_GGX 3        // + the general BSDF (the host also sets RAYLAB_GENERAL_BSDF)
 #define RAYLAB_STAGE_TEXTURES 4   // + textures (RAYLAB_FEATURE_TEXTURES)
 #define RAYLAB_STAGE_FULL 5       // + depth of field (RAYLAB_FEATURE_DOF)
 #ifndef RAYLAB_STAGE
 #define RAYLAB_STAGE RAYLAB_STAGE_FULL
 #endif
+
 #endif

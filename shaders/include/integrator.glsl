@@ -19,7 +19,7 @@
 // The path inspector's RAYLAB_RECORD hooks: empty unless its variant defines RAYLAB_INSPECT_PATHS.
 #include "path_record.glsl"
 #include "light_selection.glsl"
-#ifdef RAYLAB_FEATURE_TEXTURES
+#if RAYLAB_FEATURE_TEXTURES
 #include "material_textures.glsl"
 #include "ray_cone.glsl"
 #endif
@@ -27,7 +27,7 @@
 // Radiance from the sky along a unit direction: the image texel it falls in (nearest, so the
 // radiance is piecewise constant over texels), or the analytic skies.
 vec3 skyLookup(SkyParams sky, vec3 dir) {
-#ifndef RAYLAB_SKY_MAP
+#if !RAYLAB_SKY_MAP
     return skyRadiance(sky, dir);
 #else
     if (sky.type != SKY_MAP) return skyRadiance(sky, dir);
@@ -39,7 +39,7 @@ vec3 skyLookup(SkyParams sky, vec3 dir) {
 }
 
 // Next-event estimation of the sky: the map by its own distribution, analytic skies uniformly.
-#ifdef RAYLAB_SKY_MAP
+#if RAYLAB_SKY_MAP
 bool skyByMap() { return uSkyType == SKY_MAP && uEnvMeanWeight > 0.0f; }
 #else
 bool skyByMap() { return false; }
@@ -68,7 +68,7 @@ BsdfParams materialBsdf(GpuMaterial m) {
 // presence of the light-sampling block, even never taken, cost about 2.5× in throughput):
 // RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (some material has f0 > 0 or transmission > 0),
 // RAYLAB_SKY_MAP (sky.type map), RAYLAB_EMISSIVE_TRIANGLES (some mesh emits).
-#ifdef RAYLAB_NEE
+#if RAYLAB_NEE
 int neeLightCount() { return uNee ? boundedLightCount() + (uSkyIsLight ? 1 : 0) : 0; }
 #else
 int neeLightCount() { return 0; }
@@ -95,7 +95,7 @@ float emitterLightPdf(vec3 p, vec3 q) {
 // The same for a ray from p (direction d, not unit) that hit a triangle: the light that triangle is
 // (triangleLightIndex[], 1 + index; 0 for none) sampled by area, as a solid-angle density.
 float triangleEmitterLightPdf(vec3 d, Hit hit) {
-#ifdef RAYLAB_EMISSIVE_TRIANGLES
+#if RAYLAB_EMISSIVE_TRIANGLES
     uint light = triangleLightIndex[hit.primitive];
     if (light == 0u) return 0.0f;
     int j = int(light) - 1;
@@ -119,7 +119,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
     float prevPdf = 0.0f;      // BSDF density of the direction just followed
     bool prevDelta = true;     // camera rays and delta bounces: light sampling could not help
     vec3 prevPos = vec3(0.0f);
-#ifdef RAYLAB_FEATURE_TEXTURES
+#if RAYLAB_FEATURE_TEXTURES
     // Ray cone (Ray Tracing Gems ch. 20, §20.3.4): the width grows by the spread angle per unit
     // distance; the spread starts at the pixel's and widens at rough bounces (ray_cone.glsl).
     float coneWidth = 0.0f;
@@ -137,7 +137,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
 #endif
             vec3 dir = normalize(ray.dir);
             float w = 1.0f;
-#ifdef RAYLAB_NEE
+#if RAYLAB_NEE
             if (uSkyIsLight && lightCount > 0 && !prevDelta) {
                 float lightPdf = skyLightPdf(dir) * skySelectionPmf();
                 w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
@@ -155,15 +155,15 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         break;
 #endif
         vec3 Le = m.emission.rgb;
-#ifdef RAYLAB_FEATURE_TEXTURES
+#if RAYLAB_FEATURE_TEXTURES
         coneWidth += coneSpread * hit.t * length(ray.dir);
         Le *= materialEmissionScale(hit, ray.dir, coneWidth);
 #endif
         if (max(Le.r, max(Le.g, Le.b)) > 0.0f) {
             float w = 1.0f;
-#ifdef RAYLAB_NEE
+#if RAYLAB_NEE
             if (lightCount > 0 && !prevDelta) {
-#ifdef RAYLAB_EMISSIVE_TRIANGLES
+#if RAYLAB_EMISSIVE_TRIANGLES
                 float lightPdf = instances[hit.instance].info.x == INSTANCE_SPHERE
                                      ? emitterLightPdf(prevPos, hit.position)
                                      : triangleEmitterLightPdf(ray.dir, hit);
@@ -178,7 +178,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         }
         if (bounce >= uMaxBounces || RAYLAB_STAGE == RAYLAB_STAGE_EMISSION) break;
         BsdfParams bsdf = materialBsdf(m);
-#ifdef RAYLAB_FEATURE_TEXTURES
+#if RAYLAB_FEATURE_TEXTURES
         applyMaterialTextures(hit, ray.dir, coneWidth, bsdf);
 #endif
         // The BSDF works in the shading frame (smooth or normal-mapped normals), turned to the
@@ -190,7 +190,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         float arrivalSide = dot(-ray.dir, hit.normal);
         RAYLAB_RECORD(recordShadingFrame(bounce, ns));
 
-#ifdef RAYLAB_NEE
+#if RAYLAB_NEE
         // Next-event estimation: one light, picked by power (the sky: see light_selection.glsl),
         // sampled by solid angle (spheres, sky) or by area (triangles).
         if (lightCount > 0) {
@@ -204,7 +204,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             float tMax = FLOAT_MAX;
             vec3 lightPoint = vec3(0.0f);   // triangle lights: the point sampled
             if (k >= uLightCount) {
-#ifdef RAYLAB_EMISSIVE_TRIANGLES
+#if RAYLAB_EMISSIVE_TRIANGLES
                 GpuTriangleLight tl = triangleLights[k - uLightCount];
                 vec3 p0 = tl.p0Area.xyz;
                 lightPoint = sampleTrianglePoint(p0, tl.p1.xyz, tl.p2.xyz, ul);
@@ -275,7 +275,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         // same random numbers and f·cos/pdf = ρ exactly, without the general code's cost.
         vec2 u = rngNext2(rng);
         BsdfSample bs;
-#ifdef RAYLAB_GENERAL_BSDF
+#if RAYLAB_GENERAL_BSDF
         if (!bsdfNeedsLobeChoice(bsdf)) {
 #else
         {   // every material of the scene is Lambertian
@@ -284,7 +284,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             bs = BsdfSample(wo.z < 0.0f ? vec3(wi.x, wi.y, -wi.z) : wi, bsdf.albedo, pdfCosineHemisphere(wi.z),
                             LOBE_DIFFUSE, false);
         }
-#ifdef RAYLAB_GENERAL_BSDF
+#if RAYLAB_GENERAL_BSDF
         else {
             bs = bsdfSample(bsdf, wo, vec3(u.x, u.y, rngNextFloat(rng)));
         }
@@ -299,7 +299,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         // As for light samples: the geometric surface must agree with the lobe's side.
         if ((bs.wi.z * wo.z > 0.0f) != (dot(dir, hit.normal) * arrivalSide > 0.0f)) break;
         beta *= bs.weight;
-#ifdef RAYLAB_FEATURE_TEXTURES
+#if RAYLAB_FEATURE_TEXTURES
         coneSpread += rayConeBounceSpread(bs.lobe, bs.delta, bsdf.alpha);
 #endif
         prevPdf = bs.pdf;

@@ -16,7 +16,7 @@
 #include "features.glsl"
 
 int triangleLightCount() {
-#ifdef RAYLAB_EMISSIVE_TRIANGLES
+#if RAYLAB_EMISSIVE_TRIANGLES
     return uTriangleLightCount;
 #else
     return 0;
@@ -25,7 +25,7 @@ int triangleLightCount() {
 
 int boundedLightCount() { return uLightCount + triangleLightCount(); }
 
-#ifdef RAYLAB_LIGHT_POWER_SELECTION
+#if RAYLAB_LIGHT_POWER_SELECTION
 float skySelectionPmf() {
     if (!uSkyIsLight) return 0.0f;
     return boundedLightCount() > 0 ? 0.5f : 1.0f;

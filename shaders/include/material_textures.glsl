@@ -22,8 +22,8 @@ vec4 sampleHitTexture(uint k1, Hit hit, vec3 rayDir, float coneWidth) {
 
 // The factor the emission texture puts on the material's emitted radiance (1 without one).
 vec3 materialEmissionScale(Hit hit, vec3 rayDir, float coneWidth) {
-#ifdef RAYLAB_TEXTURE_EMISSION
-    uint k1 = materialEmissionTexture(hit.material);
+#if RAYLAB_TEXTURE_EMISSION
+    uint k1 = materials[hit.material].emissionTexture;
     if (k1 > 0u) return sampleHitTexture(k1, hit, rayDir, coneWidth).rgb;
 #endif
     return vec3(1.0f);
@@ -31,43 +31,43 @@ vec3 materialEmissionScale(Hit hit, vec3 rayDir, float coneWidth) {
 
 // Applies the textures to the BSDF parameters; a normal map bends hit.shadingNormal.
 void applyMaterialTextures(inout Hit hit, vec3 rayDir, float coneWidth, inout BsdfParams bsdf) {
-    uint albedoTexture = materialAlbedoTexture(hit.material);
+    uint albedoTexture = materials[hit.material].albedoTexture;
     if (albedoTexture > 0u) {
         GpuTexture tex = textureRecord(albedoTexture - 1u);
         float cosine = dot(hit.normal, rayDir) / length(rayDir);
         float lod = rayConeLod(tex, hit.lodBase, coneWidth, cosine);
-#ifdef RAYLAB_SHOW_MIP_LEVEL
+#if RAYLAB_SHOW_MIP_LEVEL
         // Debug view: the level as a colour ramp (0 blue, 4 green, 8+ red).
         bsdf.albedo = clamp(vec3(lod / 4.0f - 1.0f, 1.0f - abs(lod / 4.0f - 1.0f), 1.0f - lod / 4.0f), 0.0f, 1.0f);
 #else
         bsdf.albedo *= sampleTexture(tex, hit.uv, lod).rgb;
 #endif
     }
-#ifdef RAYLAB_TEXTURE_METALLIC
+#if RAYLAB_TEXTURE_METALLIC
     // The metallic workflow of other tools on raylab's f0 model (scenes/FORMAT.md): the textured
     // albedo is the base colour; f0 = mix(f0, base, m), albedo = base·(1 − m).
-    float metallic = materialMetallic(hit.material);
-    uint metallicTexture = materialMetallicTexture(hit.material);
+    float metallic = materials[hit.material].metallic;
+    uint metallicTexture = materials[hit.material].metallicTexture;
     if (metallicTexture > 0u) metallic *= sampleHitTexture(metallicTexture, hit, rayDir, coneWidth).b;
     if (metallic > 0.0f) {
         bsdf.f0 = mix(bsdf.f0, bsdf.albedo, metallic);
         bsdf.albedo *= 1.0f - metallic;
     }
 #endif
-#ifdef RAYLAB_TEXTURE_ROUGHNESS
-    uint roughnessTexture = materialRoughnessTexture(hit.material);
+#if RAYLAB_TEXTURE_ROUGHNESS
+    uint roughnessTexture = materials[hit.material].roughnessTexture;
     if (roughnessTexture > 0u) {
         float r = materials[hit.material].albedo.a * sampleHitTexture(roughnessTexture, hit, rayDir, coneWidth).g;
         bsdf.alpha = ggxAlpha(r);
     }
 #endif
-    uint normalTexture = materialNormalTexture(hit.material);
+    uint normalTexture = materials[hit.material].normalTexture;
     if (normalTexture > 0u) {
         // Tangent-space normal map: rgb in [0, 1] encodes (x, y, z) in [-1, 1] in the frame
         // (∂p/∂u, bitangent, shading normal), ∂p/∂u made orthogonal to the normal first; x and y
         // scaled by the material's normal scale (glTF normalTexture.scale).
         vec3 m = 2.0f * sampleHitTexture(normalTexture, hit, rayDir, coneWidth).rgb - 1.0f;
-        float s = materialNormalScale(hit.material);
+        float s = materials[hit.material].normalScale;
         m = vec3(m.x * s, m.y * s, m.z);
         vec3 t = hit.tangent - dot(hit.tangent, hit.shadingNormal) * hit.shadingNormal;
         if (dot(t, t) > 0.0f && dot(m, m) > 0.0f) {

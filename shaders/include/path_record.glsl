@@ -1,45 +1,21 @@
 // The pixel path inspector's recorder (src/inspect/path_inspector.h): with RAYLAB_INSPECT_PATHS
-// the tracer writes every term of the estimator of one chosen pixel's samples to buffers 20 and
-// 21, bounce by bounce. Without it this file adds nothing and the integrator's RAYLAB_RECORD hooks
+// the tracer writes every term of the estimator of one chosen pixel's samples to its two buffers,
+// bounce by bounce. Without it this file adds nothing and the integrator's RAYLAB_RECORD hooks
 // are empty, so normal renders pay nothing. Recording only writes: radiance, random numbers and
-// control flow are those of the normal tracer. The slot layout must match
-// src/inspect/path_record_layout.h. GLSL only.
+// control flow are those of the normal tracer. The slot layout is
+// path_record_layout.glsl, shared with the decoder (src/inspect/path_inspector.cpp). GLSL only.
 #ifndef RAYLAB_PATH_RECORD_GLSL
 #define RAYLAB_PATH_RECORD_GLSL
 #include "compat.glsl"
+#include "path_record_layout.glsl"
 #include "ray.glsl"
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
 #include "light_sampling.glsl"   // powerHeuristic
 
-#ifdef RAYLAB_INSPECT_PATHS
-const int PR_VEC4S = 19;          // vec4s per bounce record
-const int PR_ORIGIN = 0;          // ray origin xyz, w: 1 hit, 0 miss (the sky)
-const int PR_DIRECTION = 1;       // unit ray direction xyz, w: hit distance (0 for a miss)
-const int PR_POSITION = 2;        // hit point xyz, w: sphere index or triangle index
-const int PR_NORMAL = 3;          // geometric normal xyz, w: material id
-const int PR_SHADING = 4;         // shading normal (the BSDF frame's z) xyz, w: top-level instance
-const int PR_EMISSION = 5;        // emitted radiance Le (or the sky's) rgb, w: its MIS weight
-const int PR_BETA_BEFORE = 6;     // throughput arriving here rgb, w: probability of the chosen lobe
-const int PR_SAMPLED = 7;         // sampled direction (world) xyz, w: lobe (LOBE_*), -1 none
-const int PR_F = 8;               // f rgb, w: |cosθ| of the sampled direction
-const int PR_WEIGHT = 9;          // f·|cosθ|/pdf rgb, w: pdf (discrete probability for delta lobes)
-const int PR_BETA_AFTER = 10;     // throughput leaving (after roulette) rgb, w: 1 delta lobe
-const int PR_RR = 11;             // x: survival probability q, y: outcome (-1 not played, 0 killed, 1 survived)
-const int PR_LIGHT = 12;          // light sample f·Le·w/pdf (no throughput) rgb, w: -1 none, 0 occluded, 1 visible, 2 f = 0
-const int PR_LIGHT_DIR = 13;      // shadow ray direction xyz, w: distance to the light's surface (-1: the sky)
-const int PR_LIGHT_TERMS = 14;    // x: light pdf, y: BSDF pdf of that direction, z: MIS weight, w: light index
-const int PR_LIGHT_F = 15;        // f·|cosθ| towards the light rgb, w: |cosθ|
-const int PR_LIGHT_LE = 16;       // the light's radiance rgb
-const int PR_COUNTED = 17;        // 1 when the term counts toward the value, else 0 (the viewer's bounce
-                                  // views keep some bounces only): x emission (or stage albedo), y light sample
-const int PR_STAGE_ALBEDO = 18;   // render.stage primary: the first hit's flat albedo rgb (that stage's whole
-                                  // estimate), w: 1 when recorded
-const int PR_PATH_VEC4S = 4;      // per path: final value rgb + bounce records; sample index,
-                                  // the pixel, truncated; camera ray origin; camera ray direction
-
-layout(std430, binding = 20) buffer InspectBounceBuffer { vec4 inspectBounces[]; };
-layout(std430, binding = 21) writeonly buffer InspectPathBuffer { vec4 inspectPaths[]; };
+#if RAYLAB_INSPECT_PATHS
+layout(std430, binding = BINDING_INSPECT_BOUNCES) buffer InspectBounceBuffer { vec4 inspectBounces[]; };
+layout(std430, binding = BINDING_INSPECT_PATHS) writeonly buffer InspectPathBuffer { vec4 inspectPaths[]; };
 uniform ivec2 uInspectPixel;       // GL pixel (bottom row 0) whose samples are recorded
 uniform int uInspectMaxRecords;    // bounce records per path that fit the buffer
 

@@ -18,32 +18,32 @@ void tracePixelPass(ivec2 pixel) {
     vec3 sum = vec3(0.0f);
     uint rays = 0u;
     uint nonFinite = 0u;
-#ifdef RAYLAB_DEBUG_MOMENTS
+#if RAYLAB_DEBUG_MOMENTS
     DebugMoments moments = debugMomentsBegin();
 #endif
     for (int s = 0; s < uRpp; ++s) {
         Rng rng = rngCreate(uvec2(pixel), uSampleStart + uint(s), uSeed);
         // A fresh jittered position inside the pixel for every sample (box filter).
         vec2 ndc = (vec2(pixel) + rngNext2(rng)) / vec2(uImageSize) * 2.0f - 1.0f;
-#ifdef RAYLAB_FEATURE_DOF
+#if RAYLAB_FEATURE_DOF
         Ray cameraPath = cameraRayThinLens(cam, ndc, rngNext2(rng), uCamLensRadius, uCamFocusDistance);
 #else
         Ray cameraPath = cameraRay(cam, ndc);
 #endif
         RAYLAB_RECORD_PATH_BEGIN(pixel, s, cameraPath);
-#ifdef RAYLAB_DEBUG_VIEWS
+#if RAYLAB_DEBUG_VIEWS
         vec3 L = debugSample(cameraPath, rng, rays);
 #else
         vec3 L = traceRadiance(cameraPath, rng, rays);
 #endif
         RAYLAB_RECORD_PATH_END(pixel, s, L);
-#ifdef RAYLAB_INJECT_NONFINITE
+#if RAYLAB_INJECT_NONFINITE
         // Tests only: every RAYLAB_INJECT_NONFINITE-th sample of a row becomes NaN or +Inf.
         uint k = uSampleStart + uint(s) + uint(pixel.x);
         if (k % uint(RAYLAB_INJECT_NONFINITE) == 0u)
             L = vec3(uintBitsToFloat((k & 1u) == 0u ? 0x7fc00000u : 0x7f800000u));
 #endif
-#ifdef RAYLAB_DEBUG_MOMENTS
+#if RAYLAB_DEBUG_MOMENTS
         debugMomentsAdd(moments, L);
 #endif
         if (any(isnan(L)) || any(isinf(L))) {
@@ -59,12 +59,12 @@ void tracePixelPass(ivec2 pixel) {
         mean = old + (sum - float(uRpp) * old) / float(uSampleStart + uint(uRpp));
     }
     imageStore(uAccum, pixel, vec4(mean, 1.0f));
-#ifdef RAYLAB_DEBUG_MOMENTS
+#if RAYLAB_DEBUG_MOMENTS
     debugMomentsStore(moments, pixel);
 #endif
     if (nonFinite > 0u) atomicAdd(nonFiniteSamples, nonFinite);
     atomicAdd(raysTraced, rays);
-#ifdef RAYLAB_COUNT_TRAVERSAL
+#if RAYLAB_COUNT_TRAVERSAL
     atomicAdd(boxTestsTotal, gBoxTests);
     atomicAdd(triangleTestsTotal, gTriangleTests);
 #endif

@@ -24,7 +24,7 @@ RL_FN vec2 sampleDiskConcentric(vec2 u) {
 // Cosine-weighted hemisphere around +z by Malley's method: pdf = cos θ / π.
 // With a Lambertian BRDF ρ/π the sample weight f·cos/pdf is exactly ρ.
 // On the disk's rim (u exactly 0, or cos² + sin² rounding to 1) z would be 0: pdf 0, a sample the
-// integrator must drop (one in ~10^7 was lost). z is kept at least 2^-18, above the rounding of a
+// integrator must drop. z is kept at least 2^-18, above the rounding of a
 // frame change (~1e-7), so the direction stays on its side; the weight f·cos/pdf uses this z too.
 RL_FN vec3 sampleCosineHemisphere(vec2 u) {
     vec2 d = sampleDiskConcentric(u);

@@ -4,35 +4,36 @@
 #define RAYLAB_SCENE_DATA_GLSL
 #include "features.glsl"
 #include "scene_types.glsl"
+#include "bindings.glsl"
 
-layout(rgba32f, binding = 0) uniform image2D uAccum;   // running mean, rgb; a = 1
-layout(std430, binding = 1) readonly buffer SphereBuffer { GpuSphere spheres[]; };
-layout(std430, binding = 2) readonly buffer MaterialBuffer { GpuMaterial materials[]; };
-layout(std430, binding = 3) buffer CounterBuffer {
+layout(rgba32f, binding = BINDING_ACCUM_IMAGE) uniform image2D uAccum;   // running mean, rgb; a = 1
+layout(std430, binding = BINDING_SPHERES) readonly buffer SphereBuffer { GpuSphere spheres[]; };
+layout(std430, binding = BINDING_MATERIALS) readonly buffer MaterialBuffer { GpuMaterial materials[]; };
+layout(std430, binding = BINDING_COUNTERS) buffer CounterBuffer {
     uint nonFiniteSamples;   // samples that were NaN or Inf and were replaced by 0
     uint raysTraced;         // ray casts this pass (camera and bounce rays)
 };
 
-layout(std430, binding = 4) readonly buffer LightBuffer { GpuLight lights[]; };
-layout(binding = 4) uniform sampler2D uSkyMap;   // texture unit 4: sky.map (1×1 black without)
+layout(std430, binding = BINDING_SPHERE_LIGHTS) readonly buffer LightBuffer { GpuLight lights[]; };
+layout(binding = BINDING_SKY_MAP_TEXTURE) uniform sampler2D uSkyMap;   // sky.map (1×1 black without)
 // Buffers of optional features are declared only with their feature: llvmpipe allows 16 storage
 // blocks per stage, and the debug variants (heat maps) add their own.
-#ifdef RAYLAB_SKY_MAP
+#if RAYLAB_SKY_MAP
 // Sky map importance sampling (render/environment_distribution.h): marginal CDF over rows
 // (height + 1 floats), conditional CDFs over columns (height × (width + 1) floats).
-layout(std430, binding = 5) readonly buffer EnvMarginalBuffer { float envMarginalCdf[]; };
-layout(std430, binding = 6) readonly buffer EnvConditionalBuffer { float envConditionalCdf[]; };
+layout(std430, binding = BINDING_ENV_MARGINAL) readonly buffer EnvMarginalBuffer { float envMarginalCdf[]; };
+layout(std430, binding = BINDING_ENV_CONDITIONAL) readonly buffer EnvConditionalBuffer { float envConditionalCdf[]; };
 #endif
-#ifdef RAYLAB_EMISSIVE_TRIANGLES
+#if RAYLAB_EMISSIVE_TRIANGLES
 // Emissive triangles in world space (render/light_list.h).
-layout(std430, binding = 24) readonly buffer TriangleLightBuffer { GpuTriangleLight triangleLights[]; };
+layout(std430, binding = BINDING_TRIANGLE_LIGHTS) readonly buffer TriangleLightBuffer { GpuTriangleLight triangleLights[]; };
 // Per triangle (global index): 1 + its index in triangleLights[], 0 when it is no light.
-layout(std430, binding = 26) readonly buffer TriangleLightIndexBuffer { uint triangleLightIndex[]; };
+layout(std430, binding = BINDING_TRIANGLE_LIGHT_INDEX) readonly buffer TriangleLightIndexBuffer { uint triangleLightIndex[]; };
 #endif
-#ifdef RAYLAB_LIGHT_POWER_SELECTION
+#if RAYLAB_LIGHT_POWER_SELECTION
 // The alias table that picks any light (spheres first, then triangles) by power: (q, alias, pmf,
 // pmf of alias) per light (render/light_list.h).
-layout(std430, binding = 25) readonly buffer LightAliasBuffer { vec4 lightAlias[]; };
+layout(std430, binding = BINDING_LIGHT_ALIAS) readonly buffer LightAliasBuffer { vec4 lightAlias[]; };
 #endif
 
 uniform ivec2 uImageSize;

@@ -1,4 +1,4 @@
-// The host contract for geometry (bindings 8–13, render/gpu_scene.cpp) and the accessors the
+// The host contract for geometry (render/gpu_scene.cpp) and the accessors the
 // shared traversal (bvh_traversal.glsl) reads through. GLSL only.
 // Optional define RAYLAB_COUNT_TRAVERSAL: every box and triangle test is counted per invocation
 // (gBoxTests, gTriangleTests) and summed into the TraversalCounters buffer (heat-map views).
@@ -8,11 +8,11 @@
 #include "geometry_types.glsl"
 #include "scene_data.glsl"
 
-layout(std430, binding = 8) readonly buffer TopNodeBuffer { GpuBvhNode topNodes[]; };
-layout(std430, binding = 9) readonly buffer MeshNodeBuffer { GpuBvhNode meshNodes[]; };
-layout(std430, binding = 10) readonly buffer InstanceBuffer { GpuInstance instances[]; };
-layout(std430, binding = 11) readonly buffer TriangleBuffer { GpuTriangle triangles[]; };
-layout(std430, binding = 12) readonly buffer VertexBuffer { GpuVertex vertices[]; };
+layout(std430, binding = BINDING_TOP_NODES) readonly buffer TopNodeBuffer { GpuBvhNode topNodes[]; };
+layout(std430, binding = BINDING_MESH_NODES) readonly buffer MeshNodeBuffer { GpuBvhNode meshNodes[]; };
+layout(std430, binding = BINDING_INSTANCES) readonly buffer InstanceBuffer { GpuInstance instances[]; };
+layout(std430, binding = BINDING_TRIANGLES) readonly buffer TriangleBuffer { GpuTriangle triangles[]; };
+layout(std430, binding = BINDING_VERTICES) readonly buffer VertexBuffer { GpuVertex vertices[]; };
 
 GpuBvhNode topNode(uint i) { return topNodes[i]; }
 GpuBvhNode meshNode(uint i) { return meshNodes[i]; }
@@ -24,8 +24,8 @@ uint instanceCount() { return uint(instances.length()); }
 uvec4 instanceInfo(uint i) { return instances[i].info; }
 uint sphereCount() { return uint(spheres.length()); }
 
-#ifdef RAYLAB_COUNT_TRAVERSAL
-layout(std430, binding = 13) buffer TraversalCounters {
+#if RAYLAB_COUNT_TRAVERSAL
+layout(std430, binding = BINDING_TRAVERSAL_COUNTERS) buffer TraversalCounters {
     uint boxTestsTotal;
     uint triangleTestsTotal;
 };

@@ -1,5 +1,6 @@
-// GPU-side scene records, laid out for std430 buffers and identical in C++ (only vec4 / uvec4
-// members, so both languages agree on size and alignment: 16-byte records).
+// GPU-side scene records, laid out for std430 buffers and identical in C++: vec4 / uvec4 members,
+// or scalars in groups of four after them, so both languages agree on every offset
+// (src/render/gpu_scene.cpp static_asserts them).
 #ifndef RAYLAB_SCENE_TYPES_GLSL
 #define RAYLAB_SCENE_TYPES_GLSL
 #include "compat.glsl"
@@ -14,6 +15,15 @@ struct GpuMaterial {
     vec4 albedo;     // rgb diffuse reflectance, a perceptual roughness
     vec4 emission;   // rgb emitted radiance (colour × strength), a transmission
     vec4 f0Ior;      // rgb specular reflectance at normal incidence, a index of refraction
+    // Image textures (material_textures.glsl): each the texture's index + 1, 0 = none.
+    uint albedoTexture;
+    uint normalTexture;
+    uint roughnessTexture;     // roughness × the texture's green channel
+    uint metallicTexture;      // metallic × the texture's blue channel
+    uint emissionTexture;      // emitted radiance × the texture's colour
+    float metallic;            // mixed per hit (render/gpu_scene.h metallicOnGpu), else 0: baked in
+    float normalScale;         // normal map x and y scale (glTF normalTexture.scale)
+    uint unused;
 };
 
 // An emissive sphere, for next-event estimation.

@@ -5,6 +5,7 @@
 #ifndef RAYLAB_TEXTURE_GLSL
 #define RAYLAB_TEXTURE_GLSL
 #include "compat.glsl"
+#include "features.glsl"
 RL_NAMESPACE_BEGIN
 
 // One texture: its level 0 starts at texel `offset`; the levels follow each other, level l is
@@ -14,15 +15,14 @@ struct GpuTexture {
 };
 
 // Wrap modes (glTF samplers; scene-file textures repeat). Compiled in only where some texture of
-// the scene does not repeat (RAYLAB_TEXTURE_WRAP_MODES; C++ and unspecialised shaders: always).
+// the scene does not repeat (RAYLAB_TEXTURE_WRAP_MODES; always in C++).
 const uint TEXTURE_WRAP_REPEAT = 0u;
 const uint TEXTURE_WRAP_CLAMP = 1u;
 const uint TEXTURE_WRAP_MIRROR = 2u;
 
 RL_FN int textureLevels(GpuTexture t) { return int(t.info.w & 0xffffu); }
 
-#if !defined(RAYLAB_FEATURES_SPECIALISED) || defined(RAYLAB_TEXTURE_WRAP_MODES)
-#define RAYLAB_TEXTURE_WRAPS 1
+#if RAYLAB_TEXTURE_WRAP_MODES
 RL_FN uint textureWrapU(GpuTexture t) { return (t.info.w >> 16u) & 0xffu; }
 RL_FN uint textureWrapV(GpuTexture t) { return (t.info.w >> 24u) & 0xffu; }
 // A coordinate into [0, 1]: repeat takes the fraction, clamp clips, mirror folds every other
@@ -57,7 +57,7 @@ RL_FN vec4 sampleTextureLevel(GpuTexture t, int level, vec2 uv) {
         w = max(1, w / 2);
         h = max(1, h / 2);
     }
-#ifdef RAYLAB_TEXTURE_WRAPS
+#if RAYLAB_TEXTURE_WRAP_MODES
     uint wrapU = textureWrapU(t);
     uint wrapV = textureWrapV(t);
     if (wrapU != TEXTURE_WRAP_REPEAT || wrapV != TEXTURE_WRAP_REPEAT) {

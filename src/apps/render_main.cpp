@@ -11,6 +11,7 @@
 #include "render/progressive_render.h"
 #include "render/scene_stats.h"
 #include "scene/scene_loader.h"
+#include "shaders/include/bindings.glsl"
 
 #include <CLI/CLI.hpp>
 
@@ -222,13 +223,13 @@ int main(int argc, char** argv) {
     if (!quiet)
         std::fprintf(stderr, "%s\n", describeSceneStats(sceneStats(scene, tracer->gpuScene().geometry())).c_str());
 
-    // The heat maps' largest count of one ray (binding 17, shaders/include/debug_views.glsl).
+    // The heat maps' largest count of one ray (shaders/include/debug_views.glsl).
     GLuint heatMax = 0;
     if (view && view->countsTraversal) {
         const GLuint zeros[2] = {0, 0};
         glCreateBuffers(1, &heatMax);
         glNamedBufferStorage(heatMax, sizeof(zeros), zeros, 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 17, heatMax);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_DEBUG_HEAT_MAX, heatMax);
     }
 
     std::signal(SIGINT, onSigint);

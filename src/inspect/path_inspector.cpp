@@ -1,6 +1,7 @@
 #include "inspect/path_inspector.h"
 
-#include "inspect/path_record_layout.h"
+#include "shaders/include/bindings.glsl"
+#include "shaders/include/path_record_layout.glsl"
 
 #include <glad/gl.h>
 
@@ -11,57 +12,61 @@ namespace {
 
 glm::vec3 xyz(const glm::vec4& v) { return glm::vec3(v); }
 
+// Every slot of a bounce record lies inside it.
+static_assert(glsl::PR_VEC4S == glsl::PR_STAGE_ALBEDO + 1 && glsl::PR_PATH_VEC4S == 4);
+static_assert(sizeof(glm::vec4) == 16, "a slot is one std430 vec4");
+
 BounceRecord decodeBounce(const glm::vec4* s) {
-    using namespace path_layout;
+    using namespace glsl;
     BounceRecord b;
-    b.origin = xyz(s[kOrigin]);
-    b.hit = s[kOrigin].w > 0.5f;
-    b.direction = xyz(s[kDirection]);
-    b.distance = s[kDirection].w;
-    b.throughputBefore = xyz(s[kBetaBefore]);
-    b.emission = xyz(s[kEmission]);
-    b.emissionWeight = s[kEmission].w;
-    b.hasStageAlbedo = s[kStageAlbedo].w > 0.5f;
-    b.stageAlbedo = xyz(s[kStageAlbedo]);
-    b.emissionCounted = s[kCounted].x > 0.5f;
-    b.lightCounted = s[kCounted].y > 0.5f;
+    b.origin = xyz(s[PR_ORIGIN]);
+    b.hit = s[PR_ORIGIN].w > 0.5f;
+    b.direction = xyz(s[PR_DIRECTION]);
+    b.distance = s[PR_DIRECTION].w;
+    b.throughputBefore = xyz(s[PR_BETA_BEFORE]);
+    b.emission = xyz(s[PR_EMISSION]);
+    b.emissionWeight = s[PR_EMISSION].w;
+    b.hasStageAlbedo = s[PR_STAGE_ALBEDO].w > 0.5f;
+    b.stageAlbedo = xyz(s[PR_STAGE_ALBEDO]);
+    b.emissionCounted = s[PR_COUNTED].x > 0.5f;
+    b.lightCounted = s[PR_COUNTED].y > 0.5f;
     if (b.hit) {
-        b.position = xyz(s[kPosition]);
-        b.primitive = int(s[kPosition].w);
-        b.normal = xyz(s[kNormal]);
-        b.material = int(s[kNormal].w);
-        b.shadingNormal = xyz(s[kShading]);
-        b.instance = int(s[kShading].w);
+        b.position = xyz(s[PR_POSITION]);
+        b.primitive = int(s[PR_POSITION].w);
+        b.normal = xyz(s[PR_NORMAL]);
+        b.material = int(s[PR_NORMAL].w);
+        b.shadingNormal = xyz(s[PR_SHADING]);
+        b.instance = int(s[PR_SHADING].w);
     } else {
         b.position = b.origin + b.direction;   // a point along the escaping ray, for drawing
     }
-    b.lightStatus = LightStatus(int(s[kLight].w));
+    b.lightStatus = LightStatus(int(s[PR_LIGHT].w));
     if (b.lightStatus != LightStatus::None) {
-        b.lightContribution = xyz(s[kLight]);
-        b.lightDirection = xyz(s[kLightDir]);
-        b.lightDistance = s[kLightDir].w;
-        b.lightPdf = s[kLightTerms].x;
-        b.lightBsdfPdf = s[kLightTerms].y;
-        b.lightMisWeight = s[kLightTerms].z;
-        b.lightIndex = int(s[kLightTerms].w);
-        b.lightFCos = xyz(s[kLightF]);
-        b.lightCosTheta = s[kLightF].w;
-        b.lightRadiance = xyz(s[kLightLe]);
+        b.lightContribution = xyz(s[PR_LIGHT]);
+        b.lightDirection = xyz(s[PR_LIGHT_DIR]);
+        b.lightDistance = s[PR_LIGHT_DIR].w;
+        b.lightPdf = s[PR_LIGHT_TERMS].x;
+        b.lightBsdfPdf = s[PR_LIGHT_TERMS].y;
+        b.lightMisWeight = s[PR_LIGHT_TERMS].z;
+        b.lightIndex = int(s[PR_LIGHT_TERMS].w);
+        b.lightFCos = xyz(s[PR_LIGHT_F]);
+        b.lightCosTheta = s[PR_LIGHT_F].w;
+        b.lightRadiance = xyz(s[PR_LIGHT_LE]);
     }
-    b.lobe = int(s[kSampled].w);
+    b.lobe = int(s[PR_SAMPLED].w);
     b.sampled = b.lobe >= 0;
     if (b.sampled) {
-        b.sampledDirection = xyz(s[kSampled]);
-        b.lobeProbability = s[kBetaBefore].w;
-        b.f = xyz(s[kF]);
-        b.cosTheta = s[kF].w;
-        b.weight = xyz(s[kWeight]);
-        b.pdf = s[kWeight].w;
-        b.throughputAfter = xyz(s[kBetaAfter]);
-        b.delta = s[kBetaAfter].w > 0.5f;
+        b.sampledDirection = xyz(s[PR_SAMPLED]);
+        b.lobeProbability = s[PR_BETA_BEFORE].w;
+        b.f = xyz(s[PR_F]);
+        b.cosTheta = s[PR_F].w;
+        b.weight = xyz(s[PR_WEIGHT]);
+        b.pdf = s[PR_WEIGHT].w;
+        b.throughputAfter = xyz(s[PR_BETA_AFTER]);
+        b.delta = s[PR_BETA_AFTER].w > 0.5f;
     }
-    b.rrProbability = s[kRr].x;
-    b.rrOutcome = int(s[kRr].y);
+    b.rrProbability = s[PR_RR].x;
+    b.rrOutcome = int(s[PR_RR].y);
     if (b.rrOutcome == 0) b.throughputAfter = glm::vec3(0.0f);
     return b;
 }
@@ -104,8 +109,8 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
         glDeleteBuffers(2, buffers_);
         glCreateBuffers(2, buffers_);
         const auto bytes = [&](int vec4s) { return GLsizeiptr(std::size_t(count) * std::size_t(vec4s) * sizeof(glm::vec4)); };
-        glNamedBufferStorage(buffers_[0], bytes(path_layout::kBounceVec4s * maxRecords_), nullptr, GL_MAP_READ_BIT);
-        glNamedBufferStorage(buffers_[1], bytes(path_layout::kPathVec4s), nullptr, GL_MAP_READ_BIT);
+        glNamedBufferStorage(buffers_[0], bytes(glsl::PR_VEC4S * maxRecords_), nullptr, GL_MAP_READ_BIT);
+        glNamedBufferStorage(buffers_[1], bytes(glsl::PR_PATH_VEC4S), nullptr, GL_MAP_READ_BIT);
         capacity_ = std::size_t(count);
     }
     const int glY = h - 1 - y;   // GL rows start at the bottom
@@ -114,20 +119,20 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
     p.set("uInspectMaxRecords", maxRecords_);
     p.set("uDebugView", int(filter_));
     p.set("uDebugBounce", filterBounce_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, buffers_[0]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, buffers_[1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_BOUNCES, buffers_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_PATHS, buffers_[1]);
     tracer_->reset();
     tracer_->traceBand(glY, 1, int(firstSample), count);   // waits for the pass (counter read-back)
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
 
-    std::vector<glm::vec4> bounces(std::size_t(count) * std::size_t(maxRecords_ * path_layout::kBounceVec4s));
-    std::vector<glm::vec4> paths(std::size_t(count) * path_layout::kPathVec4s);
+    std::vector<glm::vec4> bounces(std::size_t(count) * std::size_t(maxRecords_ * glsl::PR_VEC4S));
+    std::vector<glm::vec4> paths(std::size_t(count) * glsl::PR_PATH_VEC4S);
     glGetNamedBufferSubData(buffers_[0], 0, GLsizeiptr(bounces.size() * sizeof(glm::vec4)), bounces.data());
     glGetNamedBufferSubData(buffers_[1], 0, GLsizeiptr(paths.size() * sizeof(glm::vec4)), paths.data());
 
     std::vector<PathRecord> out(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i) {
-        const glm::vec4* q = &paths[std::size_t(i) * path_layout::kPathVec4s];
+        const glm::vec4* q = &paths[std::size_t(i) * glsl::PR_PATH_VEC4S];
         PathRecord& r = out[std::size_t(i)];
         r.x = x;
         r.y = y;
@@ -137,7 +142,7 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
         const int n = std::min(int(q[0].w), maxRecords_);
         for (int b = 0; b < n; ++b)
             r.bounces.push_back(
-                decodeBounce(&bounces[(std::size_t(i) * std::size_t(maxRecords_) + std::size_t(b)) * path_layout::kBounceVec4s]));
+                decodeBounce(&bounces[(std::size_t(i) * std::size_t(maxRecords_) + std::size_t(b)) * glsl::PR_VEC4S]));
     }
     return out;
 }

@@ -1,14 +1,16 @@
 #include "inspect/path_record.h"
 
+#include "shaders/include/bsdf_sample.glsl"
+
 namespace raylab {
 
 std::string lobeName(int lobe) {
     switch (lobe) {
-    case 0: return "none";
-    case 1: return "diffuse";
-    case 2: return "specular";
-    case 3: return "glass reflect";
-    case 4: return "glass transmit";
+    case glsl::LOBE_NONE: return "none";
+    case glsl::LOBE_DIFFUSE: return "diffuse";
+    case glsl::LOBE_SPECULAR: return "specular";
+    case glsl::LOBE_GLASS_REFLECT: return "glass reflect";
+    case glsl::LOBE_GLASS_TRANSMIT: return "glass transmit";
     default: return "-";
     }
 }

@@ -3,28 +3,27 @@
 #include "io/image_io.h"
 #include "render/environment_distribution.h"
 #include "render/light_list.h"
+#include "shaders/include/bindings.glsl"
 #include "shaders/include/scene_types.glsl"
 
 #include <glad/gl.h>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace raylab {
 namespace {
 
-// Binding points; keep in step with shaders/include/scene_data.glsl.
-constexpr GLuint kSphereBinding = 1;
-constexpr GLuint kMaterialBinding = 2;
-constexpr GLuint kLightBinding = 4;
-constexpr GLuint kSkyMapUnit = 4;   // texture unit of uSkyMap
-constexpr GLuint kEnvMarginalBinding = 5;
-constexpr GLuint kEnvConditionalBinding = 6;
-constexpr GLuint kFirstGeometryBinding = 8;   // 8–12, see shaders/include/scene_geometry.glsl
-constexpr GLuint kTriangleLightBinding = 24;
-constexpr GLuint kLightAliasBinding = 25;
-constexpr GLuint kTriangleLightIndexBinding = 26;
+// std430 offsets of GpuMaterial (shaders/include/scene_types.glsl): vec4s, then scalars.
+static_assert(sizeof(glsl::GpuMaterial) == 80);
+static_assert(offsetof(glsl::GpuMaterial, f0Ior) == 32 && offsetof(glsl::GpuMaterial, albedoTexture) == 48);
+static_assert(offsetof(glsl::GpuMaterial, emissionTexture) == 64 && offsetof(glsl::GpuMaterial, normalScale) == 72);
+
+// geometryBuffers_ in order: top nodes, mesh nodes, instances, triangles, vertices.
+constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, BINDING_INSTANCES,
+                                         BINDING_TRIANGLES, BINDING_VERTICES};
 
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
@@ -96,7 +95,10 @@ void GpuScene::uploadMaterials(const Scene& scene) {
         const glm::vec3 albedo = bake ? m.albedo * (1.0f - m.metallic) : m.albedo;
         const glm::vec3 f0 = bake ? glm::mix(m.f0, m.albedo, m.metallic) : m.f0;
         materials.push_back({glm::vec4(albedo, m.roughness), glm::vec4(m.radiance(), m.transmission),
-                             glm::vec4(f0, m.ior)});
+                             glm::vec4(f0, m.ior), unsigned(m.albedoTextureIndex + 1),
+                             unsigned(m.normalTextureIndex + 1), unsigned(m.roughnessTextureIndex + 1),
+                             unsigned(m.metallicTextureIndex + 1), unsigned(m.emissionTextureIndex + 1),
+                             metallicOnGpu(m) ? m.metallic : 0.0f, m.normalScale, 0u});
     }
     materialRadiance_.clear();
     // Emission varying over a texture is not a light for next-event estimation (the light list
@@ -105,16 +107,9 @@ void GpuScene::uploadMaterials(const Scene& scene) {
         materialRadiance_.push_back(lightRadiance(m));
     uploadBuffer(materialBuffer_, std::move(materials));
 
-    // Per material its textures and scalars read beside them, then per texture where its levels
-    // start in the texel array (upload() puts the levels there in this order).
+    // Per texture where its levels start in the texel array (upload() puts the levels there in
+    // this order).
     std::vector<glm::uvec4> info;
-    info.emplace_back(unsigned(scene.materials.size()), 0u, 0u, 0u);
-    for (const Material& m : scene.materials) {
-        info.emplace_back(unsigned(m.albedoTextureIndex + 1), unsigned(m.normalTextureIndex + 1),
-                          unsigned(m.roughnessTextureIndex + 1), unsigned(m.metallicTextureIndex + 1));
-        info.emplace_back(unsigned(m.emissionTextureIndex + 1), glm::floatBitsToUint(metallicOnGpu(m) ? m.metallic : 0.0f),
-                          glm::floatBitsToUint(m.normalScale), 0u);
-    }
     std::size_t firstTexel = 0;
     for (const Texture& t : scene.textures) {
         const unsigned wrap = (unsigned(t.wrapU) << 16u) | (unsigned(t.wrapV) << 24u);
@@ -173,19 +168,18 @@ void GpuScene::uploadSkyMap(const Sky& sky) {
 }
 
 void GpuScene::bind() const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSphereBinding, sphereBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, materialBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer_);
-    glBindTextureUnit(kSkyMapUnit, skyMapTexture_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvMarginalBinding, envMarginalBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvConditionalBinding, envConditionalBuffer_);
-    for (GLuint i = 0; i < 5; ++i)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFirstGeometryBinding + i, geometryBuffers_[i]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, textureBuffers_[0]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, textureBuffers_[1]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTriangleLightBinding, triangleLightBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightAliasBinding, lightAliasBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTriangleLightIndexBinding, triangleLightIndexBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SPHERES, sphereBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS, materialBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SPHERE_LIGHTS, lightBuffer_);
+    glBindTextureUnit(BINDING_SKY_MAP_TEXTURE, skyMapTexture_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_ENV_MARGINAL, envMarginalBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_ENV_CONDITIONAL, envConditionalBuffer_);
+    for (int i = 0; i < 5; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGeometryBindings[i], geometryBuffers_[i]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_TEXELS, textureBuffers_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_INFO, textureBuffers_[1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHTS, triangleLightBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_LIGHT_ALIAS, lightAliasBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHT_INDEX, triangleLightIndexBuffer_);
 }
 
 } // namespace raylab

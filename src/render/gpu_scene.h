@@ -60,15 +60,14 @@ private:
     std::uint64_t meshBvhBuilds_ = 0;
     std::uint64_t topLevelUpdates_ = 0;
     std::uint64_t materialUpdates_ = 0;
-    unsigned geometryBuffers_[5] = {};   // bindings 8–12: top nodes, mesh nodes, instances,
-                                         // triangles, vertices
+    unsigned geometryBuffers_[5] = {};   // top nodes, mesh nodes, instances, triangles, vertices
     void uploadTopLevel(const Scene& scene);
-    unsigned triangleLightBuffer_ = 0;   // binding 24: emissive triangles
-    unsigned lightAliasBuffer_ = 0;      // binding 25: alias table over all lights, by power
+    unsigned triangleLightBuffer_ = 0;   // emissive triangles
+    unsigned lightAliasBuffer_ = 0;      // alias table over all lights, by power
     int triangleLightCount_ = 0;
     std::vector<double> lightPower_;
-    unsigned triangleLightIndexBuffer_ = 0;   // binding 26: per triangle 1 + its light index, 0 none
-    unsigned textureBuffers_[2] = {};    // bindings 14–15: texels, texture info
+    unsigned triangleLightIndexBuffer_ = 0;   // per triangle 1 + its light index, 0 none
+    unsigned textureBuffers_[2] = {};    // texels, texture info
 };
 
 } // namespace raylab

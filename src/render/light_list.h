@@ -48,9 +48,8 @@ struct LightList {
 // Whether the scene's lights (emissive spheres, emissive triangles with area) differ in power by
 // more than 5% (largest / smallest). When they do not, picking uniformly is as good as picking by
 // power (the variance gain is of second order in the differences), and the tracer is compiled
-// without the table (RAYLAB_LIGHT_POWER_SELECTION off, render/shader_variant.h): such scenes keep
-// the earlier uniform selection, random numbers included. Any choice is unbiased: only the noise
-// differs.
+// without the table (RAYLAB_LIGHT_POWER_SELECTION off, render/shader_variant.h): such scenes pick
+// uniformly. Any choice is unbiased: only the noise differs.
 bool lightPowersDiffer(const Scene& scene);
 
 // `radiance` per material (Material::radiance()). Triangles of a mesh are put in world space with

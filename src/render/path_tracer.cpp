@@ -1,5 +1,6 @@
 #include "render/path_tracer.h"
 
+#include "shaders/include/bindings.glsl"
 #include "shaders/include/camera.glsl"
 #include "shaders/include/sky.glsl"
 
@@ -162,12 +163,12 @@ void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
 
     const GLuint zeros[2] = {0, 0};
     glNamedBufferSubData(counterBuffer_, 0, sizeof(zeros), zeros);
-    glBindImageTexture(0, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(BINDING_ACCUM_IMAGE, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     gpuScene_.bind();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, counterBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_COUNTERS, counterBuffer_);
     if (traversalBuffer_) {
         glNamedBufferSubData(traversalBuffer_, 0, sizeof(zeros), zeros);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 13, traversalBuffer_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRAVERSAL_COUNTERS, traversalBuffer_);
     }
     glUseProgram(program_->id());
     if (options_.entry == TracerEntry::Fragment) {

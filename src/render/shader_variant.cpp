@@ -47,23 +47,11 @@ SceneFeatures allFeatures() { return SceneFeatures{}; }
 
 ShaderDefines featureDefines(const SceneFeatures& f) {
     ShaderDefines d = {{tracerDefine("RAYLAB_FEATURES_SPECIALISED"), "1"}};
-    if (f.spheres) d.emplace_back(tracerDefine("RAYLAB_FEATURE_SPHERES"), "1");
-    if (f.meshes) d.emplace_back(tracerDefine("RAYLAB_FEATURE_MESHES"), "1");
-    if (f.smoothNormals) d.emplace_back(tracerDefine("RAYLAB_FEATURE_SMOOTH_NORMALS"), "1");
-    if (f.depthOfField) d.emplace_back(tracerDefine("RAYLAB_FEATURE_DOF"), "1");
-    if (f.textures) d.emplace_back(tracerDefine("RAYLAB_FEATURE_TEXTURES"), "1");
-    if (f.linearTopLevel) d.emplace_back(tracerDefine("RAYLAB_TOP_LEVEL_LINEAR"), "1");
-    if (f.showMipLevel) d.emplace_back(tracerDefine("RAYLAB_SHOW_MIP_LEVEL"), "1");
-    if (f.nee) d.emplace_back(tracerDefine("RAYLAB_NEE"), "1");
-    if (f.generalBsdf) d.emplace_back(tracerDefine("RAYLAB_GENERAL_BSDF"), "1");
-    if (f.skyMap) d.emplace_back(tracerDefine("RAYLAB_SKY_MAP"), "1");
-    if (f.textures && f.roughnessTextures) d.emplace_back(tracerDefine("RAYLAB_TEXTURE_ROUGHNESS"), "1");
-    if (f.textures && f.metallicTextures) d.emplace_back(tracerDefine("RAYLAB_TEXTURE_METALLIC"), "1");
-    if (f.textures && f.emissionTextures) d.emplace_back(tracerDefine("RAYLAB_TEXTURE_EMISSION"), "1");
-    if (f.textures && f.textureWrapModes) d.emplace_back(tracerDefine("RAYLAB_TEXTURE_WRAP_MODES"), "1");
-    if (f.stage != RenderStage::Full) d.emplace_back(tracerDefine("RAYLAB_STAGE"), std::to_string(int(f.stage)));
-    if (f.emissiveTriangles) d.emplace_back(tracerDefine("RAYLAB_EMISSIVE_TRIANGLES"), "1");
-    if (f.lightPowerSelection) d.emplace_back(tracerDefine("RAYLAB_LIGHT_POWER_SELECTION"), "1");
+#define RL_FEATURE_DEFINE(def, field, needs, name) \
+    d.emplace_back(tracerDefine(#def), f.field && f.needs ? "1" : "0");
+    RAYLAB_FEATURE_LIST(RL_FEATURE_DEFINE)
+#undef RL_FEATURE_DEFINE
+    d.emplace_back(tracerDefine("RAYLAB_STAGE"), std::to_string(int(f.stage)));
     return d;
 }
 
@@ -74,24 +62,11 @@ std::string featureName(const SceneFeatures& f) {
         if (!name.empty()) name += "+";
         name += part;
     };
-    add(f.spheres, "spheres");
-    add(f.meshes, "meshes");
-    add(f.smoothNormals, "smooth");
-    add(f.depthOfField, "dof");
-    add(f.textures, "textures");
-    add(f.linearTopLevel, "few-objects");
-    add(f.showMipLevel, "mip-view");
-    add(f.nee, "nee");
-    add(f.generalBsdf, "ggx+glass");
-    add(f.skyMap, "sky-map");
-    add(f.textures && f.roughnessTextures, "roughness-tex");
-    add(f.textures && f.metallicTextures, "metallic-tex");
-    add(f.textures && f.emissionTextures, "emission-tex");
-    add(f.textures && f.textureWrapModes, "wrap-modes");
+#define RL_FEATURE_NAME(def, field, needs, name) add(f.field && f.needs, name);
+    RAYLAB_FEATURE_LIST(RL_FEATURE_NAME)
+#undef RL_FEATURE_NAME
     static const char* const stages[] = {"stage-primary", "stage-emission", "stage-lambert", "stage-ggx", "stage-textures"};
     add(f.stage != RenderStage::Full, stages[std::min(int(f.stage), 4)]);
-    add(f.emissiveTriangles, "triangle-lights");
-    add(f.lightPowerSelection, "light-power");
     return name.empty() ? "none" : name;
 }
 

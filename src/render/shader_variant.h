@@ -1,34 +1,24 @@
 #pragma once
 // Per-scene specialisation of the tracer: the features a scene uses become #defines right after
-// #version (shaders/include/features.glsl), so absent features cost nothing at run time; compiled
-// variants are cached by their define set. performance.md measured 12–39% lost to a dead branch
-// behind a uniform on llvmpipe.
+// #version (shaders/include/features.glsl), so absent features cost nothing at run time
+// (bench/geometry.md); compiled variants are cached by their define set.
 #include "gl/shader_program.h"
 #include "scene/scene.h"
+#include "shaders/include/features.glsl"
 
 #include <map>
 #include <string>
 
 namespace raylab {
 
+// One field per entry of RAYLAB_FEATURE_LIST (features.glsl, where each is described), defaulting
+// to the unspecialised tracer's value.
 struct SceneFeatures {
-    bool spheres = true;
-    bool meshes = true;
-    bool smoothNormals = true;
-    bool depthOfField = true;
-    bool textures = true;
-    bool nee = true;             // render.nee: next-event estimation compiled in (RAYLAB_NEE)
-    bool generalBsdf = true;     // some material has f0 > 0 or transmission > 0 (RAYLAB_GENERAL_BSDF)
-    bool skyMap = true;          // sky.type map (RAYLAB_SKY_MAP)
-    bool emissiveTriangles = true;   // with nee: some mesh's material emits (RAYLAB_EMISSIVE_TRIANGLES)
-    bool lightPowerSelection = true; // with nee: lights differ in power, pick by power (RAYLAB_LIGHT_POWER_SELECTION)
-    bool linearTopLevel = false; // at most kLinearTopLevelMax objects: no top-level BVH
-    bool showMipLevel = false;   // debug view (render.show_mip_level), never part of "all features"
-    bool roughnessTextures = true;   // some material has a roughness_texture (RAYLAB_TEXTURE_ROUGHNESS)
-    bool metallicTextures = true;    // metallic mixed per hit (RAYLAB_TEXTURE_METALLIC, gpu_scene.h)
-    bool emissionTextures = true;    // some material has an emission_texture (RAYLAB_TEXTURE_EMISSION)
-    bool textureWrapModes = true;    // some texture clamps or mirrors (RAYLAB_TEXTURE_WRAP_MODES)
-    RenderStage stage = RenderStage::Full;   // render.stage below full: RAYLAB_STAGE (teaching)
+#define RL_FEATURE_FIELD(def, field, needs, name) bool field = def;
+    RAYLAB_FEATURE_LIST(RL_FEATURE_FIELD)
+#undef RL_FEATURE_FIELD
+    RenderStage stage = RenderStage(RAYLAB_STAGE);   // render.stage below full: RAYLAB_STAGE (teaching)
+    static constexpr bool always = true;   // the `needs` of a feature without a prerequisite
     bool operator==(const SceneFeatures&) const = default;
 };
 
@@ -37,7 +27,7 @@ constexpr std::size_t kLinearTopLevelMax = 16;
 
 SceneFeatures sceneFeatures(const Scene& scene);   // what this scene needs
 SceneFeatures allFeatures();                       // the unspecialised tracer
-// RAYLAB_FEATURES_SPECIALISED plus one RAYLAB_FEATURE_* per feature that is on.
+// RAYLAB_FEATURES_SPECIALISED, every feature of the list as 0 or 1, and RAYLAB_STAGE.
 ShaderDefines featureDefines(const SceneFeatures& features);
 // "spheres+meshes+dof", "none" when nothing is on.
 std::string featureName(const SceneFeatures& features);

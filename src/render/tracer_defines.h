@@ -1,10 +1,10 @@
 #pragma once
-// Every #define the host can set on the path tracer's entry points, in one list. The tracer's
-// fragment entry (shaders/entry/trace.frag, compiled with entry/fullscreen.vert, which receives
-// the same defines and uses none) and its compute entry (entry/trace.comp) each name, in their
-// header comment, every define they can receive (tests/render/tracer_defines_test.cpp checks it).
-// Host code names a define through tracerDefine("NAME"), which does not compile for a name that is
-// missing here, so a new define cannot bypass the list.
+// Every #define the host can set on the path tracer's entry points (shaders/entry/trace.frag and
+// trace.comp), in one list; the scene's features come from RAYLAB_FEATURE_LIST. Host code names a
+// define through tracerDefine("NAME"), which does not compile for a name that is missing here, and
+// tests/render/tracer_defines_test.cpp fails on a shader that tests a name missing here.
+#include "shaders/include/features.glsl"
+
 #include <string_view>
 
 namespace raylab {
@@ -18,23 +18,10 @@ struct TracerDefine {
 inline constexpr TracerDefine kTracerDefines[] = {
     // The scene's features (render/shader_variant.cpp featureDefines; shaders/include/features.glsl).
     {"RAYLAB_FEATURES_SPECIALISED", "render/shader_variant.cpp"},
-    {"RAYLAB_FEATURE_SPHERES", "render/shader_variant.cpp"},
-    {"RAYLAB_FEATURE_MESHES", "render/shader_variant.cpp"},
-    {"RAYLAB_FEATURE_SMOOTH_NORMALS", "render/shader_variant.cpp"},
-    {"RAYLAB_FEATURE_DOF", "render/shader_variant.cpp"},
-    {"RAYLAB_FEATURE_TEXTURES", "render/shader_variant.cpp"},
-    {"RAYLAB_TOP_LEVEL_LINEAR", "render/shader_variant.cpp"},
-    {"RAYLAB_SHOW_MIP_LEVEL", "render/shader_variant.cpp"},
-    {"RAYLAB_NEE", "render/shader_variant.cpp"},
-    {"RAYLAB_GENERAL_BSDF", "render/shader_variant.cpp"},
-    {"RAYLAB_SKY_MAP", "render/shader_variant.cpp"},
-    {"RAYLAB_TEXTURE_ROUGHNESS", "render/shader_variant.cpp"},
-    {"RAYLAB_TEXTURE_METALLIC", "render/shader_variant.cpp"},
-    {"RAYLAB_TEXTURE_EMISSION", "render/shader_variant.cpp"},
-    {"RAYLAB_TEXTURE_WRAP_MODES", "render/shader_variant.cpp"},
+#define RL_FEATURE_ENTRY(def, field, needs, name) {#def, "render/shader_variant.cpp"},
+    RAYLAB_FEATURE_LIST(RL_FEATURE_ENTRY)
+#undef RL_FEATURE_ENTRY
     {"RAYLAB_STAGE", "render/shader_variant.cpp"},
-    {"RAYLAB_EMISSIVE_TRIANGLES", "render/shader_variant.cpp"},
-    {"RAYLAB_LIGHT_POWER_SELECTION", "render/shader_variant.cpp"},
     // The compute entry's work-group size (render/path_tracer.cpp).
     {"LOCAL_SIZE_X", "render/path_tracer.cpp", true},
     {"LOCAL_SIZE_Y", "render/path_tracer.cpp", true},

@@ -1,10 +1,13 @@
 #include "selftest/gpu_sampler.h"
 
+#include "render/shader_variant.h"
+#include "shaders/include/bindings.glsl"
+
 #include <glad/gl.h>
 
 namespace raylab {
 
-GpuSampler::GpuSampler() : program_(ShaderProgram::compute("entry/bsdf_samples.comp")) {}
+GpuSampler::GpuSampler() : program_(ShaderProgram::compute("entry/bsdf_samples.comp", featureDefines(allFeatures()))) {}
 
 std::vector<GpuSample> GpuSampler::cosineHemisphere(unsigned count, unsigned seed) const { return run(0, count, seed, {}, {}); }
 
@@ -55,7 +58,7 @@ std::vector<GpuSample> GpuSampler::run(int mode, unsigned count, unsigned seed, 
     p.set("uAlpha", m.alpha);
     p.set("uTransmission", m.transmission);
     p.set("uIor", m.ior);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, buffer);   // binding 7: sampler output (harness only)
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_BSDF_SAMPLES, buffer);
     glUseProgram(p.id());
     glDispatchCompute((count + 63) / 64, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

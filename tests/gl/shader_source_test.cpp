@@ -1,5 +1,6 @@
 // Shader assembly (#include, defines, #line) and compile errors reported as file:line.
 #include "gl/shader_program.h"
+#include "render/shader_variant.h"
 #include "support/gl_test.h"
 
 #include <gtest/gtest.h>
@@ -89,6 +90,9 @@ TEST_F(ShaderCompileTest, CompileErrorNamesTheIncludedFileAndLine) {
 }
 
 TEST_F(ShaderCompileTest, ShippedEntryPointsCompile) {
-    EXPECT_NO_THROW(ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag"));
-    EXPECT_NO_THROW(ShaderProgram::compute("entry/trace.comp", {{"LOCAL_SIZE_X", "8"}, {"LOCAL_SIZE_Y", "8"}}));
+    const ShaderDefines features = featureDefines(allFeatures());
+    ShaderDefines compute = features;
+    compute.insert(compute.end(), {{"LOCAL_SIZE_X", "8"}, {"LOCAL_SIZE_Y", "8"}});
+    EXPECT_NO_THROW(ShaderProgram::graphics("entry/fullscreen.vert", "entry/trace.frag", features));
+    EXPECT_NO_THROW(ShaderProgram::compute("entry/trace.comp", compute));
 }

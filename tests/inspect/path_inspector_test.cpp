@@ -3,7 +3,8 @@
 #include "inspect/path_checks.h"
 #include "inspect/path_export.h"
 #include "inspect/path_inspector.h"
-#include "inspect/path_record_layout.h"
+#include "shaders/include/bindings.glsl"
+#include "shaders/include/path_record_layout.glsl"
 #include "render/path_tracer.h"
 #include "scene/scene_loader.h"
 #include "support/gl_test.h"
@@ -284,10 +285,10 @@ TEST_F(PathInspectorTest, InspectorVariantRendersTheSameImage) {
         recording.setScene(scene);
         GLuint buffers[2];
         glCreateBuffers(2, buffers);
-        glNamedBufferStorage(buffers[0], 4 * 64 * path_layout::kBounceVec4s * 16, nullptr, 0);
-        glNamedBufferStorage(buffers[1], 4 * path_layout::kPathVec4s * 16, nullptr, 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, buffers[0]);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, buffers[1]);
+        glNamedBufferStorage(buffers[0], 4 * 64 * glsl::PR_VEC4S * 16, nullptr, 0);
+        glNamedBufferStorage(buffers[1], 4 * glsl::PR_PATH_VEC4S * 16, nullptr, 0);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_BOUNCES, buffers[0]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_PATHS, buffers[1]);
         recording.program().set("uInspectPixel", glm::ivec2(17, 24 - 1 - 11));
         recording.program().set("uInspectMaxRecords", 64);
         recording.renderPass(4);

@@ -123,12 +123,12 @@ TEST(TriangleLightVariant, ScenesWithoutEmissiveTrianglesCompileTheSameVariantAs
             }
         }
         const ShaderDefines d = featureDefines(sceneFeatures(scene));
-        const bool defined = std::any_of(d.begin(), d.end(), [](const auto& kv) { return kv.first == "RAYLAB_EMISSIVE_TRIANGLES"; });
+        const bool defined = std::any_of(d.begin(), d.end(), [](const auto& kv) { return kv.first == "RAYLAB_EMISSIVE_TRIANGLES" && kv.second == "1"; });
         EXPECT_EQ(defined, emissiveMesh);
         (emissiveMesh ? withLights : without) += 1;
-        // Without NEE the define is never set: BSDF rays score emission without it.
+        // Without NEE the feature is never on: BSDF rays score emission without it.
         const ShaderDefines off = featureDefines(sceneFeatures(loadScene(entry.path(), {"render.nee=false"})));
-        EXPECT_TRUE(std::none_of(off.begin(), off.end(), [](const auto& kv) { return kv.first == "RAYLAB_EMISSIVE_TRIANGLES"; }));
+        EXPECT_TRUE(std::none_of(off.begin(), off.end(), [](const auto& kv) { return kv.first == "RAYLAB_EMISSIVE_TRIANGLES" && kv.second == "1"; }));
     }
     EXPECT_GE(withLights, 1) << "the Cornell box";
     EXPECT_GE(without, 3);

@@ -2,6 +2,7 @@
 // Runs tests/support/lens_samples.comp: lens positions drawn by the tracer's own thin-lens code on
 // the current GL context. Needs a current GL 4.5 context.
 #include "gl/shader_program.h"
+#include "shaders/include/bindings.glsl"
 
 #include <glad/gl.h>
 #include <glm/glm.hpp>
@@ -20,7 +21,7 @@ inline std::vector<glm::vec4> gpuLensSamples(glm::vec3 position, glm::vec3 lookA
     GLuint buffer = 0;
     glCreateBuffers(1, &buffer);
     glNamedBufferStorage(buffer, GLsizeiptr(count * sizeof(glm::vec4)), nullptr, GL_MAP_READ_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, buffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEST_OUTPUT, buffer);
     glUseProgram(program.id());
     program.set("uCount", count);
     program.set("uSeed", seed);

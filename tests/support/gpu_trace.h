@@ -3,6 +3,8 @@
 // Needs a current GL context.
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
+#include "render/shader_variant.h"
+#include "shaders/include/bindings.glsl"
 
 #include <glad/gl.h>
 
@@ -23,9 +25,9 @@ struct TestRay {
     glm::vec4 dir;   // w = tMax for the occlusion query
 };
 
-// defines: none = every feature and the top-level BVH; or a specialisation (features.glsl).
+// defines: the scene features (render/shader_variant.h featureDefines); every feature by default.
 inline std::vector<GpuTraceResult> gpuTrace(const GpuScene& scene, const std::vector<TestRay>& rays,
-                                            const ShaderDefines& defines = {}) {
+                                            const ShaderDefines& defines = featureDefines(allFeatures())) {
     const ShaderProgram program = ShaderProgram::computeFromFile(
         std::filesystem::path(RAYLAB_SOURCE_DIR) / "tests/support/trace_rays.comp", defines);
     GLuint buffers[2];
@@ -33,8 +35,8 @@ inline std::vector<GpuTraceResult> gpuTrace(const GpuScene& scene, const std::ve
     glNamedBufferData(buffers[0], GLsizeiptr(rays.size() * sizeof(TestRay)), rays.data(), GL_STATIC_DRAW);
     glNamedBufferData(buffers[1], GLsizeiptr(rays.size() * sizeof(glm::vec4)), nullptr, GL_DYNAMIC_READ);
     scene.bind();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, buffers[0]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, buffers[1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEST_INPUT, buffers[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEST_OUTPUT, buffers[1]);
     glUseProgram(program.id());
     program.set("uRayCount", unsigned(rays.size()));
     glDispatchCompute(GLuint((rays.size() + 63) / 64), 1, 1);

@@ -4,6 +4,7 @@
 // (a pixel jitter, then the lens sample, from one stream per sample), in lens coordinates
 // divided by the lens radius. One invocation per sample. Host: tests/support/gpu_lens.h.
 // Defines set by the host: none.
+#include "../../shaders/include/bindings.glsl"
 #include "../../shaders/include/camera.glsl"
 #include "../../shaders/include/random.glsl"
 
@@ -11,7 +12,7 @@ layout(local_size_x = 64) in;
 
 // xy: lens position / radius; z: the origin's component along the view (0 on the lens plane);
 // w: the ray direction's length minus 1.
-layout(std430, binding = 15) writeonly buffer LensSampleBuffer { vec4 lensSamples[]; };
+layout(std430, binding = BINDING_TEST_OUTPUT) writeonly buffer LensSampleBuffer { vec4 lensSamples[]; };
 uniform uint uCount;
 uniform uint uSeed;
 uniform vec3 uPosition;

@@ -1,8 +1,8 @@
 #version 450 core
 // Test entry point: traces a buffer of rays through the scene's BVH (the tracer's own code) and
-// writes what it found. Defines set by the host: none (every feature, top-level BVH), or a
-// specialisation as in features.glsl (RAYLAB_FEATURES_SPECIALISED, RAYLAB_FEATURE_*,
-// RAYLAB_TOP_LEVEL_LINEAR).
+// writes what it found. Defines set by the host: the scene features (features.glsl), every one on
+// by default (tests/support/gpu_trace.h).
+#include "../../shaders/include/bindings.glsl"
 #include "../../shaders/include/scene_intersect.glsl"
 
 layout(local_size_x = 64) in;
@@ -11,9 +11,9 @@ struct TestRay {
     vec4 origin;   // xyz; w unused
     vec4 dir;      // xyz; w: tMax of the shadow query
 };
-layout(std430, binding = 14) readonly buffer TestRayBuffer { TestRay testRays[]; };
+layout(std430, binding = BINDING_TEST_INPUT) readonly buffer TestRayBuffer { TestRay testRays[]; };
 // x: t of the nearest hit (-1 for none); y: instance (bits); z: primitive (bits); w: occluded
-layout(std430, binding = 15) writeonly buffer TestResultBuffer { vec4 testResults[]; };
+layout(std430, binding = BINDING_TEST_OUTPUT) writeonly buffer TestResultBuffer { vec4 testResults[]; };
 uniform uint uRayCount;
 
 void main() {
