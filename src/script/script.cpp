@@ -1,5 +1,7 @@
 #include "script/script.h"
 
+#include "script/key_actions.h"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -37,8 +39,19 @@ constexpr std::array<std::string_view, 14> kDebugViews = {"beauty", "normals", "
                                                           "material-id", "object-id", "nan", "noise", "bounce",
                                                           "direct", "indirect", "boxes", "triangles", "uv"};
 
-// The keys `key` presses (ui/main.cpp maps them to GLFW's codes; ui/README.md lists what they do).
-constexpr std::array<std::string_view, 7> kKeys = {"page-down", "page-up", "space", "r", "f5", "f9", "f12"};
+// The names `key` presses, in the table's order.
+constexpr std::array<std::string_view, kKeyBindings.size()> kKeys = [] {
+    std::array<std::string_view, kKeyBindings.size()> names{};
+    for (std::size_t i = 0; i < names.size(); ++i) names[i] = kKeyBindings[i].name;
+    return names;
+}();
+
+std::string keyChoices() {
+    std::string text;
+    for (std::size_t i = 0; i < kKeys.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == kKeys.size() ? " or " : ", ") + std::string(kKeys[i]);
+    return text;
+}
 
 // render.stage's names (scene/parameters.cpp; tests/script keeps the two in step).
 constexpr std::array<std::string_view, 6> kStages = {"primary", "emission", "lambert", "ggx", "textures", "full"};
@@ -123,7 +136,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
             c.args[0] != "off")
             fail("teach takes lesson, classroom, self-test or off");
         if (c.name == "key" && std::find(kKeys.begin(), kKeys.end(), c.args[0]) == kKeys.end())
-            fail("key takes page-down, page-up, space, r, f5, f9 or f12");
+            fail("key takes " + keyChoices());
         out.push_back(std::move(c));
     }
     return out;

@@ -1,8 +1,7 @@
 #pragma once
 // raylab's automation script: one command per line, '#' starts a comment. The viewer runs it
 // (raylab --script FILE, tests under Xvfb, reproducible screenshots) and lessons use it for the
-// state each step sets (lessons/README.md). This is the core copy: the viewer will use this one
-// (its own ui/app/script.* is to be deleted at merge). Commands:
+// state each step sets (lessons/README.md). Commands:
 //   open PATH              load a scene (errors are shown, the previous scene stays)
 //   drop PATH              drop a file on the window: the window's drop handling opens it next
 //                          frame (a failed open shows its error; the script goes on)
@@ -43,10 +42,9 @@
 //   split-a KEY VALUE      an override of side A (left); split-b KEY VALUE: of side B (right)
 //   split-divider X        where the sides meet, 0 to 1 of the image width
 //   ui-scale S             UI scale for projectors (0.5 to 4)
-//   key NAME               press a key in the window, through the window's own key handling:
-//                          page-down, page-up (next / previous lesson step), space (pause /
-//                          resume), r (reset), f5 (reload shaders), f9 (export the render to
-//                          raylab-render.exr), f12 (screenshot to raylab-screenshot.png)
+//   key NAME               press a key in the window, through the window's own key handling: a
+//                          name of script/key_actions.h (page-down, page-up, space, r, f5, f9,
+//                          f12, f1, ctrl+s, ctrl+=, ctrl+-, ctrl+0)
 //   lesson PATH            open a lesson in the Lesson panel;  lesson-step N: apply its step N
 //   self-test              run the self-test (furnace, χ² of the GLSL samplers), log the verdicts
 //   teach TAB              show the Teach window at lesson, classroom or self-test; off hides it
@@ -73,7 +71,7 @@ public:
 
 // The names `debug-view` accepts, in the order the viewer lists them.
 std::span<const std::string_view> scriptDebugViews();
-// The names `key` accepts.
+// The names `key` accepts (script/key_actions.h).
 std::span<const std::string_view> scriptKeys();
 
 // Parses and checks every line up front (command names, argument counts and numbers), so a typo

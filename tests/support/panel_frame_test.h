@@ -36,6 +36,7 @@ protected:
     }
     void frame() {
         ImGui::NewFrame();
+        ui::shortcutKeys(*viewer, ui);
         ui::applyUiScale(ui);
         ui::presenterKeys(ui);
         ui::drawWorkspace(*viewer, ui, 1280, 800);

@@ -17,9 +17,9 @@ protected:
     // Opens scenes/`scene` in the viewer (made on first use) at width × height.
     void openSmall(const std::string& scene, int width, int height) {
         if (!viewer) viewer = std::make_unique<ui::Viewer>(log);
-        ASSERT_TRUE(viewer->openScene(scenePath(scene))) << viewer->lastError();
-        ASSERT_TRUE(viewer->set("render.width", std::to_string(width)));
-        ASSERT_TRUE(viewer->set("render.height", std::to_string(height)));
+        ASSERT_TRUE(viewer->openScene(scenePath(scene))) << viewer->document().lastError();
+        ASSERT_TRUE(viewer->document().set("render.width", std::to_string(width)));
+        ASSERT_TRUE(viewer->document().set("render.height", std::to_string(height)));
     }
     ui::Log log{false};
     std::unique_ptr<ui::Viewer> viewer;

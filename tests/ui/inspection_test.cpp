@@ -24,7 +24,7 @@ protected:
     // The Cornell box (meshes, a triangle lamp): every path bounces on, with light at each bounce.
     void openCornellBox() {
         openSmall("cornell_box.json", 48, 27);
-        ASSERT_TRUE(viewer->set("render.nee", "true"));
+        ASSERT_TRUE(viewer->document().set("render.nee", "true"));
     }
     void traceToTarget() {
         for (int i = 0; i < 100000 && !viewer->converged(); ++i) viewer->update(1e-5);
@@ -35,7 +35,7 @@ protected:
     void expectPixelTakesTheValues(int x, int y, glm::vec4 before, int done, const std::vector<PathRecord>& paths,
                                    const std::string& where) {
         const int spp = done + int(paths.size());
-        ASSERT_TRUE(viewer->set("render.spp", std::to_string(spp)));   // no restart: spp is a stop condition
+        ASSERT_TRUE(viewer->document().set("render.spp", std::to_string(spp)));   // no restart: spp is a stop condition
         traceToTarget();
         glm::vec3 sum(0.0f);
         for (const PathRecord& p : paths) sum += p.value;
@@ -46,8 +46,8 @@ protected:
 };
 
 TEST_F(InspectionTest, RecordedPathsAreTheSamplesTheViewerTracesNext) {
-    ASSERT_TRUE(viewer->set("render.rpp", "4"));
-    ASSERT_TRUE(viewer->set("render.spp", "4"));
+    ASSERT_TRUE(viewer->document().set("render.rpp", "4"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "4"));
     traceToTarget();
     const int x = 24, y = 14;
     const glm::vec4 before = viewer->pixelValue(x, y);
@@ -64,7 +64,7 @@ TEST_F(InspectionTest, RecordedPathsAreTheSamplesTheViewerTracesNext) {
 // terms of the bounces the view leaves out are marked and not summed.
 TEST_F(InspectionTest, UnderTheBounceViewsTheValuesAreThePixelsOwn) {
     openCornellBox();
-    ASSERT_TRUE(viewer->set("render.rpp", "4"));
+    ASSERT_TRUE(viewer->document().set("render.rpp", "4"));
     const int x = 24, y = 6;   // the back wall: it sees the lamp
     struct Case {
         DebugView view;
@@ -75,7 +75,7 @@ TEST_F(InspectionTest, UnderTheBounceViewsTheValuesAreThePixelsOwn) {
     for (const Case& c : {Case{DebugView::BounceK, 1, BounceFilter::Only}, Case{DebugView::BounceK, 2, BounceFilter::Only},
                           Case{DebugView::Direct, 1, BounceFilter::Direct}, Case{DebugView::Indirect, 1, BounceFilter::Indirect}}) {
         const std::string where = std::string(debugViewName(c.view)) + " " + std::to_string(c.bounce);
-        ASSERT_TRUE(viewer->set("render.spp", "4"));
+        ASSERT_TRUE(viewer->document().set("render.spp", "4"));
         viewer->setDebugView(c.view);
         viewer->setDebugBounce(c.bounce);
         viewer->resetAccumulation();
@@ -125,8 +125,8 @@ TEST_F(InspectionTest, InspectionFollowsBounceStepping) {
         EXPECT_GT(reachedCap, 0u) << "bounce step " << k;
     }
     // The recorded values are what the stepped image gets.
-    ASSERT_TRUE(viewer->set("render.rpp", "4"));
-    ASSERT_TRUE(viewer->set("render.spp", "4"));
+    ASSERT_TRUE(viewer->document().set("render.rpp", "4"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "4"));
     viewer->resetAccumulation();
     traceToTarget();
     const glm::vec4 before = viewer->pixelValue(x, y);
@@ -143,11 +143,11 @@ TEST_F(InspectionTest, ClicksInInspectModeInspectAndFollowingRecordsAgain) {
     ASSERT_TRUE(viewer->inspection.active());
     EXPECT_EQ(viewer->inspection.x(), 10);
     EXPECT_EQ(viewer->inspection.y(), 20);
-    EXPECT_EQ(viewer->selected, -1) << "inspect mode does not pick";
+    EXPECT_EQ(viewer->selection.object(), -1) << "inspect mode does not pick";
     const auto first = viewer->inspection.paths();
     // A camera move restarts the image; following records again once the restarts settle.
     viewer->scene().camera.position.x += 0.5f;
-    viewer->sceneChanged(Trigger::ResetAccumulation);
+    viewer->document().changed(Trigger::ResetAccumulation);
     viewer->inspection.update(*viewer);
     viewer->inspection.update(*viewer);
     ASSERT_EQ(viewer->inspection.paths().size(), first.size());

@@ -71,7 +71,7 @@ TEST_P(EveryLessonStep, AppliesInTheViewer) {
         SCOPED_TRACE("step " + std::to_string(i + 1));
         ASSERT_TRUE(ui.lesson.apply(i));
         EXPECT_EQ(ui.lesson.current(), i);
-        EXPECT_EQ(runQueuedStep(), 0) << viewer->lastError();
+        EXPECT_EQ(runQueuedStep(), 0) << viewer->document().lastError();
         EXPECT_TRUE(viewer->hasScene());
         // A step may end by switching the view (a new accumulation): trace its first pass.
         for (int k = 0; k < 10000 && viewer->tracer()->samplesPerPixel() == 0 && !ui.split.on(); ++k) viewer->update(0.05);

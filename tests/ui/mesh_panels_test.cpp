@@ -14,9 +14,9 @@ class MeshPanelsTest : public test::PanelFrameTest {
 protected:
     void SetUp() override {
         PanelFrameTest::SetUp();
-        ASSERT_TRUE(viewer->openScene(test::scenePath("cornell_box.json"))) << viewer->lastError();
-        ASSERT_TRUE(viewer->set("render.width", "24"));
-        ASSERT_TRUE(viewer->set("render.height", "24"));
+        ASSERT_TRUE(viewer->openScene(test::scenePath("cornell_box.json"))) << viewer->document().lastError();
+        ASSERT_TRUE(viewer->document().set("render.width", "24"));
+        ASSERT_TRUE(viewer->document().set("render.height", "24"));
     }
     int viewportVertices() {
         frame();
@@ -35,7 +35,7 @@ TEST_F(MeshPanelsTest, TheBoxOverlayDrawsMeshInstances) {
     EXPECT_GT(all - without, 4 * 12 * 4);
     viewer->overlays.boxes = false;
     viewer->overlays.selectedOnly = true;
-    viewer->select(objectCount(viewer->scene()) - 1);
+    viewer->selection.select(objectCount(viewer->scene()) - 1);
     const int selected = viewportVertices();
     EXPECT_GT(selected, without);
     EXPECT_LT(selected, all);
@@ -43,10 +43,10 @@ TEST_F(MeshPanelsTest, TheBoxOverlayDrawsMeshInstances) {
 
 TEST_F(MeshPanelsTest, TheMaterialPanelShowsASelectedMeshWithoutChangingIt) {
     const nlohmann::json before = sceneToJson(viewer->scene());
-    viewer->select(3);
+    viewer->selection.select(3);
     for (int i = 0; i < 3; ++i) frame();
     EXPECT_EQ(sceneToJson(viewer->scene()), before);
-    EXPECT_EQ(viewer->selected, 3);
+    EXPECT_EQ(viewer->selection.object(), 3);
     EXPECT_NE(ImGui::FindWindowByName("Material"), nullptr);
 }
 

@@ -16,7 +16,7 @@ namespace {
 class PanelsTest : public test::PanelFrameTest {};
 
 TEST_F(PanelsTest, TheWorkspaceDrawsEveryPanelAndLaysTheImageOut) {
-    viewer->selected = 2;
+    viewer->selection.select(2);
     for (int i = 0; i < 3; ++i) frame();
     for (const char* name : {"Viewport", "Render", "Camera", "Material", "Overlays", "Debug views", "Stats", "Log"})
         EXPECT_NE(ImGui::FindWindowByName(name), nullptr) << name;
@@ -34,23 +34,23 @@ TEST_F(PanelsTest, DrawingChangesNothingAndAClickOnTheImagePicks) {
     EXPECT_EQ(sceneToJson(viewer->scene()), before);
     // The bottom-centre of the image shows the ground (object 0); above the image is no pick.
     viewportClick(*viewer, ui, ui.image.x + ui.image.width * 0.5f, ui.image.y + ui.image.height - 1.0f);
-    EXPECT_EQ(viewer->selected, 0);
+    EXPECT_EQ(viewer->selection.object(), 0);
     viewportClick(*viewer, ui, ui.image.x + 1.0f, ui.image.y - 5.0f);
-    EXPECT_EQ(viewer->selected, 0);   // outside: unchanged
+    EXPECT_EQ(viewer->selection.object(), 0);   // outside: unchanged
 }
 
 TEST_F(PanelsTest, ClickToFocusModeFocusesInsteadOfPickingOnce) {
     for (int i = 0; i < 2; ++i) frame();
-    viewer->selected = 3;
+    viewer->selection.select(3);
     ui.focusOnClick = true;
     const float before = viewer->scene().camera.focusDistance;
     viewportClick(*viewer, ui, ui.image.x + ui.image.width * 0.5f, ui.image.y + ui.image.height - 1.0f);
     EXPECT_FALSE(ui.focusOnClick) << "the mode ends with the click";
-    EXPECT_EQ(viewer->selected, 3) << "a focusing click does not pick";
+    EXPECT_EQ(viewer->selection.object(), 3) << "a focusing click does not pick";
     EXPECT_NE(viewer->scene().camera.focusDistance, before);
     EXPECT_GT(viewer->scene().camera.focusDistance, 0.0f);
     viewportClick(*viewer, ui, ui.image.x + ui.image.width * 0.5f, ui.image.y + ui.image.height - 1.0f);
-    EXPECT_EQ(viewer->selected, 0) << "the next click picks again";
+    EXPECT_EQ(viewer->selection.object(), 0) << "the next click picks again";
 }
 
 TEST_F(PanelsTest, HeatMapsAndBvhOverlaysDraw) {
@@ -59,7 +59,7 @@ TEST_F(PanelsTest, HeatMapsAndBvhOverlaysDraw) {
     viewer->overlays.bvhDepth = 2;
     for (DebugView v : {DebugView::Boxes, DebugView::Triangles, DebugView::Uv}) {
         viewer->setDebugView(v);
-        EXPECT_EQ(viewer->debugView(), v) << viewer->lastError();
+        EXPECT_EQ(viewer->debugView(), v) << viewer->document().lastError();
         for (int i = 0; i < 2; ++i) {
             viewer->update(0.01);
             frame();

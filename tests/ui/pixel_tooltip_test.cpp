@@ -19,7 +19,7 @@ protected:
     // Traces the 32 x 18 image to its target, so the values the tooltip reads stay put.
     void SetUp() override {
         PanelFrameTest::SetUp();
-        ASSERT_TRUE(viewer->set("render.spp", "4"));
+        ASSERT_TRUE(viewer->document().set("render.spp", "4"));
         for (int i = 0; i < 10000 && !viewer->converged(); ++i) viewer->update(0.01);
         ASSERT_TRUE(viewer->converged());
         frame();   // lays the image out: ui.image

@@ -30,8 +30,8 @@ protected:
 };
 
 TEST_F(RenderStopTest, StopsAtTheTargetSppExactly) {
-    ASSERT_TRUE(viewer->set("render.rpp", "3"));
-    ASSERT_TRUE(viewer->set("render.spp", "7"));   // passes of 3, 3 and a last one of 1
+    ASSERT_TRUE(viewer->document().set("render.rpp", "3"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "7"));   // passes of 3, 3 and a last one of 1
     traceUntilConverged();
     EXPECT_EQ(spp(), 7u);
     EXPECT_EQ(viewer->tracer()->passes(), 3u);
@@ -41,7 +41,7 @@ TEST_F(RenderStopTest, StopsAtTheTargetSppExactly) {
     EXPECT_NE(text.find("ETA 0.0 s"), std::string::npos) << text;
     // A higher target (a redisplay edit) goes on from there, without a restart.
     const std::uint64_t restarts = viewer->stats().restarts;
-    ASSERT_TRUE(viewer->set("render.spp", "9"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "9"));
     EXPECT_FALSE(viewer->converged());
     traceUntilConverged();
     EXPECT_EQ(spp(), 9u);
@@ -49,8 +49,8 @@ TEST_F(RenderStopTest, StopsAtTheTargetSppExactly) {
 }
 
 TEST_F(RenderStopTest, TheTimeBudgetStopsAfterThePassThatCrossesIt) {
-    ASSERT_TRUE(viewer->set("render.spp", "1000000"));
-    ASSERT_TRUE(viewer->set("render.time", "0.05"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "1000000"));
+    ASSERT_TRUE(viewer->document().set("render.time", "0.05"));
     traceUntilConverged();
     const std::uint64_t n = spp();
     EXPECT_GE(viewer->stats().traceSeconds, 0.05);
@@ -65,15 +65,15 @@ TEST_F(RenderStopTest, TheTimeBudgetStopsAfterThePassThatCrossesIt) {
     // (bit for bit with 1-sample passes). A stop in the middle of a pass would leave the rows
     // already traced with one sample more.
     const Image stopped = viewer->tracer()->readImage();
-    ASSERT_TRUE(viewer->set("render.time", "0"));
-    ASSERT_TRUE(viewer->set("render.spp", std::to_string(n)));
+    ASSERT_TRUE(viewer->document().set("render.time", "0"));
+    ASSERT_TRUE(viewer->document().set("render.spp", std::to_string(n)));
     viewer->resetAccumulation();
     traceUntilConverged();
     ASSERT_EQ(spp(), n);
     EXPECT_EQ(viewer->tracer()->readImage().rgba, stopped.rgba);
     // A larger budget (a redisplay edit) goes on from there.
-    ASSERT_TRUE(viewer->set("render.spp", "1000000"));
-    ASSERT_TRUE(viewer->set("render.time", "60"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "1000000"));
+    ASSERT_TRUE(viewer->document().set("render.time", "60"));
     EXPECT_FALSE(viewer->converged());
     for (int i = 0; i < 1000 && spp() == n; ++i) viewer->update(0.01);
     EXPECT_GT(spp(), n);

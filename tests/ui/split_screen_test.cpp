@@ -19,7 +19,7 @@ protected:
     void SetUp() override {
         ViewerTestBase::SetUp();
         openSmall("default.json", 48, 27);
-        ASSERT_TRUE(viewer->set("render.spp", "4"));
+        ASSERT_TRUE(viewer->document().set("render.spp", "4"));
     }
     Scene with(const std::vector<std::pair<std::string, std::string>>& overrides) const {
         Scene s = viewer->scene();
@@ -63,7 +63,7 @@ TEST_F(ClassroomTest, EachHalfOfTheSplitIsThatSidesRender) {
     EXPECT_NE(split.displayTexture(0), 0u);
     EXPECT_NE(split.displayTexture(1), 0u);
     // A camera move restarts the viewer: the split follows with both sides.
-    ASSERT_TRUE(viewer->set("camera.fov", "30"));
+    ASSERT_TRUE(viewer->document().set("camera.fov", "30"));
     split.update(*viewer, 0.0);
     EXPECT_LE(split.accounting().side(0).spp, 1u);
     split.stop();
@@ -72,7 +72,7 @@ TEST_F(ClassroomTest, EachHalfOfTheSplitIsThatSidesRender) {
 }
 
 TEST_F(ClassroomTest, EqualTimeKeepsBothSidesWithinTheLongestPass) {
-    ASSERT_TRUE(viewer->set("render.spp", "24"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "24"));
     SplitScreen split;
     split.addOverride(0, "render.max_bounces", "1", viewer->scene());   // cheap
     split.addOverride(1, "render.max_bounces", "8", viewer->scene());   // dearer

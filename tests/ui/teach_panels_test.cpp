@@ -18,7 +18,7 @@ class TeachPanelsTest : public test::PanelFrameTest {
 protected:
     void SetUp() override {
         PanelFrameTest::SetUp();
-        ASSERT_TRUE(viewer->set("render.spp", "2"));
+        ASSERT_TRUE(viewer->document().set("render.spp", "2"));
     }
 };
 

@@ -85,9 +85,9 @@ protected:
     void SetUp() override {
         GlTest::SetUp();
         viewer = std::make_unique<Viewer>(log);
-        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json"))) << viewer->lastError();
+        ASSERT_TRUE(viewer->openScene(test::scenePath("default.json"))) << viewer->document().lastError();
         viewer->scene() = spheresBeforeAWall();
-        viewer->sceneChanged(Trigger::ReloadScene);
+        viewer->document().changed(Trigger::ReloadScene);
         ASSERT_TRUE(viewer->hasScene());
     }
     Image trace(DebugView v) {

@@ -25,7 +25,7 @@ protected:
     void SetUp() override {
         ViewerTestBase::SetUp();
         openSmall("cornell_box.json", kSize, kSize);
-        ASSERT_TRUE(viewer->set("render.spp", "2"));
+        ASSERT_TRUE(viewer->document().set("render.spp", "2"));
     }
     void traceToTarget() {
         for (int i = 0; i < 100000 && !viewer->converged(); ++i) viewer->update(1e-3);
@@ -66,8 +66,8 @@ TEST_F(ViewerMeshTest, ClickingTheWallSelectsThatMeshAndItsMaterialEverywhere) {
     ASSERT_TRUE(objectRef(viewer->scene(), wall)->mesh);
     const ImagePoint p = at(kGreenWall);
     EXPECT_EQ(viewer->pick(p.x, p.y), wall);
-    EXPECT_EQ(viewer->selected, wall);
-    EXPECT_EQ(viewer->editedMaterial(), materialNamed("green"));
+    EXPECT_EQ(viewer->selection.object(), wall);
+    EXPECT_EQ(viewer->selection.editedMaterial(), materialNamed("green"));
     EXPECT_EQ(viewer->brdfExplorer.resolvedMaterial(*viewer), materialNamed("green"))
         << "the BRDF explorer's 'selected material' is the mesh's";
     ASSERT_FALSE(log.entries().empty());
@@ -93,7 +93,7 @@ TEST_F(ViewerMeshTest, AMeshMaterialEditChangesTheImageAndCompilesNothing) {
     const auto& gpu = viewer->tracer()->gpuScene();
     const std::uint64_t builds = gpu.meshBvhBuilds(), materialUpdates = gpu.materialUpdates();
     // As the script's `set selected.albedo` does (selectedKey: the edited material's key).
-    ASSERT_TRUE(viewer->set("materials." + std::to_string(viewer->editedMaterial()) + ".albedo", "[0.9, 0.9, 0.1]"));
+    ASSERT_TRUE(viewer->document().set("materials." + std::to_string(viewer->selection.editedMaterial()) + ".albedo", "[0.9, 0.9, 0.1]"));
     EXPECT_EQ(viewer->stats().restarts, restarts + 1) << "accumulation restarts";
     EXPECT_EQ(gpu.meshBvhBuilds(), builds) << "a material edit keeps the meshes' BVHs";
     EXPECT_EQ(gpu.materialUpdates(), materialUpdates + 1) << "the materials alone were uploaded";
@@ -106,14 +106,14 @@ TEST_F(ViewerMeshTest, AMeshMaterialEditChangesTheImageAndCompilesNothing) {
     const int x = int(p.x), y = kSize - 1 - int(p.y);   // readImage's rows start at the bottom
     EXPECT_GT(after.rgb(x, y).r, before.rgb(x, y).r * 2.0f) << "before " << before.rgb(x, y).r;
     // A change of the feature set does compile (the counter can tell): f0 turns on the GGX code.
-    ASSERT_TRUE(viewer->set("materials." + std::to_string(viewer->editedMaterial()) + ".f0", "0.5"));
+    ASSERT_TRUE(viewer->document().set("materials." + std::to_string(viewer->selection.editedMaterial()) + ".f0", "0.5"));
     EXPECT_EQ(viewer->tracer()->compiledVariants(), compiled + 1);
     EXPECT_NE(viewer->shaderVariant(), variant);
 }
 
 TEST_F(ViewerMeshTest, MovingAMeshKeepsItsBvhAndTheObjectMovesInTheImage) {
     viewer->setDebugView(DebugView::ObjectId);
-    ASSERT_EQ(viewer->debugView(), DebugView::ObjectId) << viewer->lastError();
+    ASSERT_EQ(viewer->debugView(), DebugView::ObjectId) << viewer->document().lastError();
     const int block = int(viewer->scene().meshes.size()) - 1;   // the tall block
     const ImagePoint oldAt = at(kTallBlockFront);
     const glm::vec3 shift(-200.0f, 0.0f, 0.0f);
@@ -124,7 +124,7 @@ TEST_F(ViewerMeshTest, MovingAMeshKeepsItsBvhAndTheObjectMovesInTheImage) {
     const auto& gpu = viewer->tracer()->gpuScene();
     const std::uint64_t builds = gpu.meshBvhBuilds(), updates = gpu.topLevelUpdates();
     const std::size_t compiled = viewer->tracer()->compiledVariants();
-    ASSERT_TRUE(viewer->set("objects." + std::to_string(block) + ".transform.translation", "[-200, 0, 0]"));
+    ASSERT_TRUE(viewer->document().set("objects." + std::to_string(block) + ".transform.translation", "[-200, 0, 0]"));
     EXPECT_EQ(gpu.meshBvhBuilds(), builds) << "the meshes' BVHs stay";
     EXPECT_EQ(gpu.topLevelUpdates(), updates + 1) << "only the top level is rebuilt";
     EXPECT_EQ(viewer->tracer()->compiledVariants(), compiled);
@@ -148,7 +148,7 @@ TEST_F(ViewerMeshTest, ACameraEditUploadsNoSceneBuffers) {
     const std::uint64_t builds = gpu.meshBvhBuilds(), updates = gpu.topLevelUpdates(),
                         materialUpdates = gpu.materialUpdates();
     const Image before = traced();
-    ASSERT_TRUE(viewer->set("camera.fov", "30"));
+    ASSERT_TRUE(viewer->document().set("camera.fov", "30"));
     EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 0u) << "accumulation restarts";
     EXPECT_EQ(gpu.meshBvhBuilds(), builds);
     EXPECT_EQ(gpu.topLevelUpdates(), updates);
@@ -163,17 +163,17 @@ TEST_F(ViewerMeshTest, AReloadThatOnlyMovesAMeshKeepsItsBvh) {
     const auto file = std::filesystem::temp_directory_path() / "raylab_viewer_mesh_reload.json";
     Scene s = viewer->scene();
     std::ofstream(file) << sceneToJson(s).dump();
-    ASSERT_TRUE(viewer->openScene(file)) << viewer->lastError();
+    ASSERT_TRUE(viewer->openScene(file)) << viewer->document().lastError();
     const auto& gpu = viewer->tracer()->gpuScene();
     const std::uint64_t builds = gpu.meshBvhBuilds();
     s.meshes.back().transform.translation = glm::vec3(-50.0f, 0.0f, 0.0f);
     std::ofstream(file) << sceneToJson(s).dump();
-    ASSERT_TRUE(viewer->openScene(file)) << viewer->lastError();
+    ASSERT_TRUE(viewer->openScene(file)) << viewer->document().lastError();
     EXPECT_EQ(gpu.meshBvhBuilds(), builds);
     EXPECT_EQ(viewer->scene().meshes.back().transform.translation, glm::vec3(-50.0f, 0.0f, 0.0f));
     s.materials[0].albedo = glm::vec3(0.2f);
     std::ofstream(file) << sceneToJson(s).dump();
-    ASSERT_TRUE(viewer->openScene(file)) << viewer->lastError();
+    ASSERT_TRUE(viewer->openScene(file)) << viewer->document().lastError();
     EXPECT_EQ(gpu.meshBvhBuilds(), builds + 1) << "a material changed: a full reload";
     std::filesystem::remove(file);
 }
@@ -202,7 +202,7 @@ TEST_F(ViewerMeshTest, ASphereAndAMeshOfOneMaterialGetDifferentObjectIds) {
         "objects": [{"type": "sphere", "center": [-1.5, 0, 0], "radius": 1, "material": "white"},
                     {"type": "mesh", "material": "white", "positions": [1, -1, 0, 3, -1, 0, 3, 1, 0, 1, 1, 0],
                      "indices": [0, 1, 2, 0, 2, 3]}]})";
-    ASSERT_TRUE(viewer->openScene(file)) << viewer->lastError();
+    ASSERT_TRUE(viewer->openScene(file)) << viewer->document().lastError();
     const ImagePoint sphere = at(glm::vec3(-1.5f, 0.0f, 1.0f)), quad = at(glm::vec3(2.0f, 0.0f, 0.0f));
     auto colour = [&](const Image& im, ImagePoint p) { return im.rgb(int(p.x), viewer->imageHeight() - 1 - int(p.y)); };
     viewer->setDebugView(DebugView::MaterialId);

@@ -30,7 +30,7 @@ protected:
 };
 
 TEST_F(ViewerTest, SameImageAsTheHeadlessRendererForOneSamplePasses) {
-    ASSERT_TRUE(viewer->set("render.spp", "3"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "3"));
     traceToTarget();
     const Image shown = viewer->tracer()->readImage();
     const Image reference = test::render(viewer->scene());   // raylab-render's path: whole passes
@@ -39,8 +39,8 @@ TEST_F(ViewerTest, SameImageAsTheHeadlessRendererForOneSamplePasses) {
 }
 
 TEST_F(ViewerTest, ChunkedPassesMatchUpToTheRoundingOfTheRunningMean) {
-    ASSERT_TRUE(viewer->set("render.rpp", "4"));
-    ASSERT_TRUE(viewer->set("render.spp", "8"));
+    ASSERT_TRUE(viewer->document().set("render.rpp", "4"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "8"));
     traceToTarget();
     EXPECT_EQ(viewer->tracer()->passes(), 2u);
     const Image shown = viewer->tracer()->readImage();
@@ -53,23 +53,23 @@ TEST_F(ViewerTest, ChunkedPassesMatchUpToTheRoundingOfTheRunningMean) {
 }
 
 TEST_F(ViewerTest, EditsDoWhatTheirTriggerSays) {
-    ASSERT_TRUE(viewer->set("render.spp", "2"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "2"));
     traceToTarget();
     ASSERT_EQ(viewer->tracer()->samplesPerPixel(), 2u);
-    ASSERT_TRUE(viewer->set("render.exposure", "1"));   // redisplay: the samples stay
+    ASSERT_TRUE(viewer->document().set("render.exposure", "1"));   // redisplay: the samples stay
     EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 2u);
-    ASSERT_TRUE(viewer->set("camera.fov", "50"));       // reset accumulation
+    ASSERT_TRUE(viewer->document().set("camera.fov", "50"));       // reset accumulation
     EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 0u);
-    EXPECT_FALSE(viewer->set("camera.fov", "500"));     // refused: nothing changes
+    EXPECT_FALSE(viewer->document().set("camera.fov", "500"));     // refused: nothing changes
     EXPECT_FLOAT_EQ(viewer->scene().camera.fovY, 50.0f);
-    EXPECT_NE(viewer->lastError().find("camera.fov"), std::string::npos);
+    EXPECT_NE(viewer->document().lastError().find("camera.fov"), std::string::npos);
     viewer->setResolutionScale(0.5f);
     EXPECT_EQ(viewer->tracer()->width(), 24);
     EXPECT_EQ(viewer->tracer()->height(), 14);
 }
 
 TEST_F(ViewerTest, DebugViewsShowNormalsNotRadiance) {
-    ASSERT_TRUE(viewer->set("render.spp", "2"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "2"));
     traceToTarget();
     const Image beauty = viewer->tracer()->readImage();
     viewer->setDebugView(DebugView::Normals);
@@ -98,7 +98,7 @@ TEST_F(ViewerTest, DebugViewsShowNormalsNotRadiance) {
 
 TEST_F(ViewerTest, DirectPlusIndirectIsTheBeautyImageAndBouncesSplitIt) {
     // The bounce views only filter what the integrator adds; the paths (same seed) are the same.
-    ASSERT_TRUE(viewer->set("render.spp", "2"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "2"));
     traceToTarget();
     const Image beauty = viewer->tracer()->readImage();
     auto trace = [&](DebugView v, int k = 1) {
@@ -128,13 +128,13 @@ TEST_F(ViewerTest, DirectPlusIndirectIsTheBeautyImageAndBouncesSplitIt) {
 }
 
 TEST_F(ViewerTest, ABrokenSceneFileKeepsThePreviousSceneAndImage) {
-    ASSERT_TRUE(viewer->set("render.spp", "2"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "2"));
     traceToTarget();
     const Image before = viewer->tracer()->readImage();
     const auto broken = std::filesystem::temp_directory_path() / "raylab_viewer_broken.json";
     std::ofstream(broken) << "{\n  \"camera\": { \"fov\": -3 }\n}\n";
     EXPECT_FALSE(viewer->openScene(broken));
-    EXPECT_NE(viewer->lastError().find("raylab_viewer_broken.json:2:"), std::string::npos) << viewer->lastError();
+    EXPECT_NE(viewer->document().lastError().find("raylab_viewer_broken.json:2:"), std::string::npos) << viewer->document().lastError();
     EXPECT_EQ(viewer->scene().render.width, 48);
     EXPECT_EQ(viewer->tracer()->readImage().rgba, before.rgba);
     ASSERT_FALSE(log.entries().empty());
@@ -145,7 +145,7 @@ TEST_F(ViewerTest, ABrokenSceneFileKeepsThePreviousSceneAndImage) {
 TEST_F(ViewerTest, ReloadsTheSceneWhenTheFileChanges) {
     const auto file = std::filesystem::temp_directory_path() / "raylab_viewer_reload.json";
     std::ofstream(file) << R"({"render": {"width": 16, "height": 8}, "camera": {"fov": 30}, "objects": [{"type": "sphere"}]})";
-    ASSERT_TRUE(viewer->openScene(file)) << viewer->lastError();
+    ASSERT_TRUE(viewer->openScene(file)) << viewer->document().lastError();
     EXPECT_FLOAT_EQ(viewer->scene().camera.fovY, 30.0f);
     std::ofstream(file) << R"({"render": {"width": 16, "height": 8}, "camera": {"fov": 45.5}, "objects": [{"type": "sphere"}]})";
     viewer->pollFileChanges();
@@ -153,21 +153,21 @@ TEST_F(ViewerTest, ReloadsTheSceneWhenTheFileChanges) {
     std::ofstream(file) << R"({"render": {"width": 16, "height": 8}, "camera": {"fov": "wide"}, "objects": [{"type": "sphere"}]})";
     viewer->pollFileChanges();   // broken on disk: the running scene stays
     EXPECT_FLOAT_EQ(viewer->scene().camera.fovY, 45.5f);
-    EXPECT_NE(viewer->lastError().find("raylab_viewer_reload.json:1:"), std::string::npos) << viewer->lastError();
+    EXPECT_NE(viewer->document().lastError().find("raylab_viewer_reload.json:1:"), std::string::npos) << viewer->document().lastError();
     std::filesystem::remove(file);
 }
 
 TEST_F(ViewerTest, SavedScenesLoadBackTheSame) {
-    ASSERT_TRUE(viewer->set("materials.red.albedo", "[0.1, 0.2, 0.3]"));
+    ASSERT_TRUE(viewer->document().set("materials.red.albedo", "[0.1, 0.2, 0.3]"));
     const auto file = std::filesystem::temp_directory_path() / "raylab_viewer_saved.json";
-    ASSERT_TRUE(viewer->saveScene(file));
+    ASSERT_TRUE(viewer->document().save(file));
     const Scene back = loadScene(file);
     EXPECT_EQ(sceneToJson(back), sceneToJson(viewer->scene()));
     std::filesystem::remove(file);
 }
 
 TEST_F(ViewerTest, AShaderThatFailsToCompileKeepsThePreviousOneRunning) {
-    ASSERT_TRUE(viewer->set("render.spp", "1"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "1"));
     traceToTarget();
     const Image before = viewer->tracer()->readImage();
     // A copy of the shaders with an error on line 3 of the debug-view include.
@@ -187,9 +187,9 @@ TEST_F(ViewerTest, AShaderThatFailsToCompileKeepsThePreviousOneRunning) {
     viewer->setDebugView(DebugView::Normals);   // needs the debug-view variant: compiled now
     ::unsetenv("RAYLAB_SHADER_DIR");
     EXPECT_EQ(viewer->debugView(), DebugView::Beauty);
-    EXPECT_NE(viewer->lastError().find("debug_views.glsl:3"), std::string::npos) << viewer->lastError();
+    EXPECT_NE(viewer->document().lastError().find("debug_views.glsl:3"), std::string::npos) << viewer->document().lastError();
     EXPECT_EQ(viewer->tracer()->readImage().rgba, before.rgba);
-    ASSERT_TRUE(viewer->set("render.spp", "2"));   // the previous program still traces
+    ASSERT_TRUE(viewer->document().set("render.spp", "2"));   // the previous program still traces
     traceToTarget();
     EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 2u);
     std::filesystem::remove_all(dir);
@@ -197,9 +197,9 @@ TEST_F(ViewerTest, AShaderThatFailsToCompileKeepsThePreviousOneRunning) {
 
 TEST_F(ViewerTest, PickingSelectsTheObjectUnderThePixel) {
     EXPECT_EQ(viewer->pick(24.0f, 26.0f), 0);   // the ground
-    EXPECT_EQ(viewer->selected, 0);
+    EXPECT_EQ(viewer->selection.object(), 0);
     EXPECT_FALSE(viewer->pick(24.0f, 0.5f));    // sky
-    EXPECT_EQ(viewer->selected, -1);
+    EXPECT_EQ(viewer->selection.object(), -1);
 }
 
 } // namespace

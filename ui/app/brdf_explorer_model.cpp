@@ -11,7 +11,7 @@ int BrdfExplorerModel::resolvedMaterial(const Viewer& viewer) const {
     const Scene& s = viewer.scene();
     if (s.materials.empty()) return -1;
     if (material >= 0 && material < int(s.materials.size())) return material;
-    const int m = viewer.editedMaterial();   // the selected sphere's or mesh's (under the click)
+    const int m = viewer.selection.editedMaterial();   // the selected sphere's or mesh's (under the click)
     return m >= 0 && m < int(s.materials.size()) ? m : 0;
 }
 

@@ -18,7 +18,7 @@ class Viewer;
 class BrdfExplorerModel {
 public:
     bool panelOpen = false;
-    int material = -1;        // -1: the selected object's material (Viewer::editedMaterial; else the first)
+    int material = -1;        // -1: the selected object's material (Selection::editedMaterial; else the first)
     float thetaDeg = 45.0f;   // incoming (wo) direction in the local frame; > 90: from inside
     float phiDeg = 0.0f;
     LobeToggles lobes;

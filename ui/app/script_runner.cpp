@@ -68,11 +68,11 @@ namespace {
 // translation") or of the material it edits ("selected.albedo"), as the Material panel shows them.
 std::string selectedKey(const Viewer& viewer, const std::string& key) {
     const std::string prefix = "selected.";
-    if (key.rfind(prefix, 0) != 0 || viewer.selected < 0) return key;
+    if (key.rfind(prefix, 0) != 0 || viewer.selection.object() < 0) return key;
     const std::string field = key.substr(prefix.size());
     for (const MaterialParamSpec& p : materialParameters())
-        if (p.key == field) return "materials." + std::to_string(viewer.editedMaterial()) + "." + field;
-    return "objects." + std::to_string(viewer.selected) + "." + field;
+        if (p.key == field) return "materials." + std::to_string(viewer.selection.editedMaterial()) + "." + field;
+    return "objects." + std::to_string(viewer.selection.object()) + "." + field;
 }
 
 } // namespace
@@ -81,7 +81,7 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
     const auto& a = c.args;
     const auto num = [&](std::size_t i) { return std::stod(a[i]); };
     if (c.name == "open") return viewer.openScene(a[0]);
-    if (c.name == "set") return viewer.set(selectedKey(viewer, a[0]), a[1]);
+    if (c.name == "set") return viewer.document().set(selectedKey(viewer, a[0]), a[1]);
     if (c.name == "click") {
         viewportClick(viewer, ui, float(num(0)), float(num(1)));
         return true;
@@ -105,7 +105,7 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
     if (c.name == "select") {
         const int i = int(num(0));
         if (i < -1 || i >= objectCount(viewer.scene())) return false;
-        viewer.select(i);
+        viewer.selection.select(i);
         return true;
     }
     if (c.name == "debug-view") {
@@ -155,7 +155,7 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         viewer.setBounceStep(a[0] == "off" ? 0 : a[0] == "next" ? viewer.bounceStep() + 1 : int(num(0)));
         return true;
     }
-    if (c.name == "stage") return viewer.set("render.stage", a[0]);
+    if (c.name == "stage") return viewer.document().set("render.stage", a[0]);
     if (c.name == "split") {
         if (a[0] == "off") ui.split.stop();
         else ui.split.start(a[0] == "time" ? SplitBudget::EqualTime : SplitBudget::EqualSamples);
@@ -209,7 +209,7 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
     else if (c.name == "wait-frames") waitFrames_ = int(num(0));
     else if (c.name == "screenshot") ui.pendingScreenshot = a[0];
     else if (c.name == "export") return ui.split.on() ? ui.split.exportComposite(a[0], viewer) : viewer.exportRender(a[0]);
-    else if (c.name == "save") return viewer.saveScene(a[0]);
+    else if (c.name == "save") return viewer.document().save(a[0]);
     else if (c.name == "window") host.resizeWindow(int(num(0)), int(num(1)));
     else if (c.name == "drop") host.dropFile(a[0]);   // opened by the window loop next frame
     return true;

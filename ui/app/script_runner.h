@@ -1,5 +1,5 @@
 #pragma once
-// Runs an automation script (app/script.h) one step per UI frame against the viewer, so each
+// Runs an automation script (script/script.h) one step per UI frame against the viewer, so each
 // command sees the frames before it drawn: waits (wait-spp, wait-frames, a pending screenshot)
 // hold the script, everything else runs at once. Window operations go through ScriptHost.
 #include "script/script.h"

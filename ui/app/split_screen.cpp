@@ -209,7 +209,7 @@ bool SplitScreen::exportComposite(const std::string& file, Viewer& viewer) const
         meta.spp = minSpp();
         meta.renderSeconds = accounting_.side(0).seconds + accounting_.side(1).seconds;
         meta.seed = scenes_[0].render.seed;
-        meta.sceneFile = viewer.scenePath().string();
+        meta.sceneFile = viewer.document().path().string();
         writeImage(file, img, meta, DisplayTransform{scenes_[0].render.exposure, scenes_[0].render.toneMap});
         viewer.log().info("exported the split screen " + file + " (" + label(0) + " | " + label(1) + ")");
         return true;

@@ -1,11 +1,9 @@
 #include "app/viewer.h"
 
 #include "app/focus_pick.h"
-#include "app/scene_change.h"
 #include "app/scene_object.h"
 #include "app/view_geometry.h"
 #include "io/image_io.h"
-#include "scene/scene_loader.h"
 
 #include <glad/gl.h>
 
@@ -13,7 +11,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 namespace raylab::ui {
 namespace {
@@ -53,58 +50,16 @@ Viewer::~Viewer() {
 // --- files ---------------------------------------------------------------------------------------
 
 bool Viewer::openScene(const std::filesystem::path& file) {
-    Scene next;
-    try {
-        next = loadScene(file);
-    } catch (const std::exception& e) {
-        lastError_ = e.what();
-        log_.error(lastError_ + (hasScene_ ? " (the previous scene stays)" : ""));
-        // Keep watching the broken file: fixing it on disk reloads it.
-        std::error_code ec;
-        if (!hasScene_ || std::filesystem::equivalent(file, scenePath_, ec)) watcher_.watch(file);
-        return false;
-    }
-    // The same file again with only objects moved: keep the meshes' BVHs.
-    std::error_code ec;
-    const bool sameFile = hasScene_ && std::filesystem::equivalent(file, scenePath_, ec);
-    const Trigger trigger = sameFile ? reloadTrigger(scene_, next) : Trigger::ReloadScene;
-    if (!applyScene(std::move(next), trigger)) return false;
-    scenePath_ = file;
-    watcher_.watch(file);
-    select(-1);
-    log_.info("opened " + file.string() + " (" + std::to_string(objectCount(scene_)) + " objects, " +
-              std::to_string(scene_.materials.size()) + " materials" +
-              (trigger == Trigger::MoveObjects ? "; only objects moved: the meshes' BVHs stay" : "") + ")");
+    if (!document_.open(file)) return false;
+    selection.select(-1);
     return true;
 }
 
 void Viewer::pollFileChanges() {
-    if (!watcher_.changed()) return;
-    const std::filesystem::path file = watcher_.file();
-    log_.info(file.string() + " changed on disk: reloading");
-    const int keep = selected, keepMaterial = selectedMaterial;
-    if (openScene(file) && keep < objectCount(scene_)) select(keep, keepMaterial);
-}
-
-bool Viewer::saveScene(const std::filesystem::path& file) {
-    try {
-        const std::string text = sceneToJson(scene_).dump(2) + "\n";
-        std::filesystem::path tmp = file;
-        tmp.replace_filename("." + file.filename().string() + ".tmp");
-        {
-            std::ofstream out(tmp, std::ios::binary);
-            out << text;
-            out.close();
-            if (!out) throw std::runtime_error(file.string() + ": error: cannot write");
-        }
-        std::filesystem::rename(tmp, file);
-        log_.info("saved the scene to " + file.string());
-        return true;
-    } catch (const std::exception& e) {
-        lastError_ = e.what();
-        log_.error(lastError_);
-        return false;
-    }
+    const int keep = selection.object(), keepMaterial = selection.material();
+    if (!document_.reloadIfChanged()) return;
+    selection.select(-1);
+    if (keep < objectCount(scene_)) selection.select(keep, keepMaterial);
 }
 
 bool Viewer::exportRender(const std::filesystem::path& file) {
@@ -117,14 +72,14 @@ bool Viewer::exportRender(const std::filesystem::path& file) {
         meta.spp = tracer_->samplesPerPixel();
         meta.renderSeconds = stats_.traceSeconds;
         meta.seed = scene_.render.seed;
-        meta.sceneFile = scenePath_.string();
+        meta.sceneFile = document_.path().string();
         meta.nonFiniteSamples = tracer_->nonFiniteSamples();
         writeImage(file, tracer_->readImage(), meta, DisplayTransform{scene_.render.exposure, scene_.render.toneMap});
         log_.info("exported " + file.string() + " (" + std::to_string(meta.spp) + " spp)");
         return true;
     } catch (const std::exception& e) {
-        lastError_ = e.what();
-        log_.error(lastError_);
+        document_.setError(e.what());
+        log_.error(document_.lastError());
         return false;
     }
 }
@@ -145,7 +100,7 @@ std::unique_ptr<PathTracer> Viewer::compileVariant(Variant v) {
     auto tracer = std::make_unique<PathTracer>(o);
     // The tracer compiles its program for a scene's features: do it here, so a shader error
     // surfaces while the previous tracer still runs.
-    if (hasScene_) tracer->setScene(tracedScene());
+    if (document_.loaded()) tracer->setScene(tracedScene());
     stats_.shaderCompileSeconds = tracer->compileSeconds();
     return tracer;
 }
@@ -161,15 +116,15 @@ bool Viewer::activateVariant(Variant v) {
                           std::string(debugViewName(view_)).c_str(), now() - t0, stats_.shaderCompileSeconds);
             log_.info(text);
         } catch (const std::exception& e) {
-            lastError_ = e.what();
-            log_.error(lastError_);
+            document_.setError(e.what());
+            log_.error(document_.lastError());
             return false;
         }
     }
     tracer_ = tracers_[v].get();
     variant_ = v;
     slicer_.forgetCosts();   // another variant, another cost per sample
-    if (hasScene_) {
+    if (document_.loaded()) {
         tracer_->setScene(tracedScene());
         restart();
     }
@@ -185,63 +140,22 @@ bool Viewer::reloadShaders() {
         tracer_ = tracers_[variant_].get();
         display_ = std::move(display);
     } catch (const std::exception& e) {
-        lastError_ = e.what();
-        log_.error(lastError_ + (tracer_ ? " (the previous shaders stay)" : ""));
+        document_.setError(e.what());
+        log_.error(document_.lastError() + (tracer_ ? " (the previous shaders stay)" : ""));
         return false;
     }
-    lastError_.clear();
+    document_.clearError();
     slicer_.forgetCosts();   // new shaders, new costs
-    if (hasScene_) {
+    if (document_.loaded()) {
         tracer_->setScene(tracedScene());
         restart();
     }
     return true;
 }
 
-// --- edits ---------------------------------------------------------------------------------------
+// --- the scene reaching the tracer ----------------------------------------------------------------
 
-bool Viewer::set(const std::string& key, const std::string& valueText) {
-    Scene next = scene_;
-    try {
-        const Trigger t = setParam(next, key, valueText);
-        return applyScene(std::move(next), t);
-    } catch (const std::exception& e) {
-        lastError_ = std::string("set ") + e.what();
-        log_.error(lastError_);
-        return false;
-    }
-}
-
-bool Viewer::set(const SceneParam& param, const ParamValue& value) {
-    Scene next = scene_;
-    try {
-        const Trigger t = setParam(next, param, value);
-        return applyScene(std::move(next), t);
-    } catch (const std::exception& e) {
-        lastError_ = e.what();
-        log_.error(lastError_);
-        return false;
-    }
-}
-
-void Viewer::sceneChanged(Trigger trigger) { applyScene(scene_, trigger); }
-
-bool Viewer::applyScene(Scene next, Trigger trigger) {
-    if (!tracer_) {
-        scene_ = std::move(next);
-        hasScene_ = true;
-        return false;
-    }
-    if (trigger == Trigger::RecompileShader) {
-        scene_ = std::move(next);
-        hasScene_ = true;
-        return reloadShaders();
-    }
-    if (trigger == Trigger::Redisplay && hasScene_) {
-        scene_ = std::move(next);
-        displayDirty_ = true;
-        return true;
-    }
+bool Viewer::upload(const Scene& next, Trigger trigger) {
     // Another scene, other materials or objects elsewhere cost what they cost: the pass slicer
     // measures again (camera edits keep its costs: they come every frame of a drag).
     if (trigger != Trigger::ResetAccumulation) slicer_.forgetCosts();
@@ -250,26 +164,23 @@ bool Viewer::applyScene(Scene next, Trigger trigger) {
     // only (the meshes' BVHs stay); UpdateMaterials re-uploads the materials and the lights;
     // ReloadScene everything. Each reallocates only when the image size changed and recompiles
     // only for a feature set never met.
+    const bool hasScene = document_.loaded();
     try {
-        if (hasScene_ && trigger == Trigger::ResetAccumulation)
+        if (hasScene && trigger == Trigger::ResetAccumulation)
             tracer_->updateSettings(traced(next));
-        else if (hasScene_ && trigger == Trigger::MoveObjects && next.spheres.size() == scene_.spheres.size() &&
+        else if (hasScene && trigger == Trigger::MoveObjects && next.spheres.size() == scene_.spheres.size() &&
                  next.meshes.size() == scene_.meshes.size())
             tracer_->updateTransforms(traced(next));
-        else if (hasScene_ && trigger == Trigger::UpdateMaterials && next.materials.size() == scene_.materials.size())
+        else if (hasScene && trigger == Trigger::UpdateMaterials && next.materials.size() == scene_.materials.size())
             tracer_->updateMaterials(traced(next));
         else
             tracer_->setScene(traced(next));
     } catch (const std::exception& e) {
-        lastError_ = e.what();
-        log_.error(lastError_);
-        if (hasScene_) tracer_->setScene(tracedScene());   // put the previous scene back
+        document_.setError(e.what());
+        log_.error(document_.lastError());
+        if (hasScene) tracer_->setScene(tracedScene());   // put the previous scene back
         return false;
     }
-    scene_ = std::move(next);
-    hasScene_ = true;
-    lastError_.clear();
-    restart();
     return true;
 }
 
@@ -321,7 +232,7 @@ void Viewer::setResolutionScale(float scale) {
     scale = std::clamp(scale, 0.125f, 2.0f);
     if (scale == scale_) return;
     scale_ = scale;
-    if (hasScene()) applyScene(scene_, Trigger::ReloadScene);
+    if (hasScene()) document_.changed(Trigger::ReloadScene);
 }
 
 void Viewer::setDebugView(DebugView view) {
@@ -355,7 +266,7 @@ void Viewer::setBounceStep(int k) {
     if (k == bounceStep_) return;
     bounceStep_ = k;
     slicer_.forgetCosts();   // another path length
-    if (hasScene()) applyScene(scene_, Trigger::ResetAccumulation);
+    if (hasScene()) document_.changed(Trigger::ResetAccumulation);
 }
 
 int Viewer::imageWidth() const { return std::max(1, int(std::lround(float(scene_.render.width) * scale_))); }
@@ -469,36 +380,9 @@ glm::vec4 Viewer::pixelValue(int x, int y) const {
     return v;
 }
 
-void Viewer::select(int object, int material) {
-    const bool valid = objectRef(scene_, object).has_value();
-    selected = valid ? object : -1;
-    selectedMaterial = valid ? material : -1;
-}
-
-int Viewer::editedMaterial() const {
-    const std::vector<int> materials = objectMaterials(scene_, selected);
-    if (materials.empty()) return -1;
-    for (const int m : materials)
-        if (m == selectedMaterial) return m;
-    return materials.front();
-}
-
 std::optional<int> Viewer::pick(float x, float y) {
     if (!hasScene()) return std::nullopt;
-    const std::optional<ViewHit> hit = viewHit(scene_, *geometry(), imageWidth(), imageHeight(), ImagePoint{x, y});
-    if (!hit) {
-        select(-1);
-        log_.info("picked nothing (sky)");
-        return std::nullopt;
-    }
-    select(hit->object, hit->material);
-    const std::string material = hit->material >= 0 && hit->material < int(scene_.materials.size())
-                                     ? scene_.materials[std::size_t(hit->material)].name
-                                     : "?";
-    const ObjectRef r = *objectRef(scene_, hit->object);
-    log_.info("picked object " + std::to_string(hit->object) + " (material " + material + "), " +
-              (r.mesh ? "mesh " : "sphere ") + std::to_string(r.index));
-    return hit->object;
+    return selection.pick(*geometry(), imageWidth(), imageHeight(), ImagePoint{x, y}, log_);
 }
 
 std::optional<float> Viewer::focusAt(float x, float y) {
@@ -510,7 +394,7 @@ std::optional<float> Viewer::focusAt(float x, float y) {
     }
     char text[32];
     std::snprintf(text, sizeof text, "%.9g", double(*d));
-    if (!set("camera.focus_distance", text)) return std::nullopt;
+    if (!document_.set("camera.focus_distance", text)) return std::nullopt;
     log_.info(std::string("focus distance ") + text + " (the surface at image pixel (" + std::to_string(int(x)) + ", " +
               std::to_string(int(y)) + "))");
     return d;

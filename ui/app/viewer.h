@@ -1,15 +1,16 @@
 #pragma once
-// The viewer's model: the scene being shown, the path tracer driving it (the same renderer core as
-// raylab-render), the time-sliced progressive passes, the display pass, and every command the
-// panels, the mouse and keys, and the automation script issue. No window and no ImGui here: the
-// views in ui/panels read and change this object. Needs a current GL 4.5 context.
+// The viewer's model and its render session: it composes the scene document (app/scene_document.h:
+// files, edits, the last error) and the selection (app/selection.h), and itself runs the path
+// tracer on the document's scene (the same renderer core as raylab-render): the time-sliced
+// progressive passes, the display pass, the overlays and the stats. No window and no ImGui here:
+// the views in ui/panels read and change this object. Needs a current GL 4.5 context.
 #include "app/brdf_explorer_model.h"
 #include "app/debug_view.h"
-#include "app/file_watcher.h"
 #include "app/inspection.h"
 #include "app/log.h"
 #include "app/pass_slicer.h"
-#include "scene/scene_keys.h"
+#include "app/scene_document.h"
+#include "app/selection.h"
 #include "gl/shader_program.h"
 #include "render/path_tracer.h"
 #include "scene/scene.h"
@@ -39,35 +40,31 @@ struct OverlaySettings {
     int bvhDepth = 0;            // 0 = the root
 };
 
-class Viewer {
+class Viewer : private SceneRenderer {
+    Log& log_;
+    SceneDocument document_{log_, *this};   // first: the members below refer to it
+
 public:
     explicit Viewer(Log& log);
-    ~Viewer();
+    ~Viewer() override;
     Viewer(const Viewer&) = delete;
     Viewer& operator=(const Viewer&) = delete;
 
-    // --- files -----------------------------------------------------------------------------------
-    // Loads a scene file; on failure logs the error (file:line), keeps the previous scene running
-    // and returns false.
+    // --- the scene -------------------------------------------------------------------------------
+    SceneDocument& document() { return document_; }
+    const SceneDocument& document() const { return document_; }
+    Scene& scene() { return document_.scene(); }   // the document's scene, which this session traces
+    const Scene& scene() const { return document_.scene(); }
+    // document().open() that also clears the selection.
     bool openScene(const std::filesystem::path& file);
-    // Reloads when the file changed on disk; call once a frame.
+    // Reloads when the file changed on disk, keeping the selection when it still exists; call once
+    // a frame.
     void pollFileChanges();
-    bool saveScene(const std::filesystem::path& file);
     // The traced image as EXR (linear) or PNG (exposure and tone map applied).
     bool exportRender(const std::filesystem::path& file);
-    bool reloadShaders();
-
-    // --- edits -------------------------------------------------------------------------------------
-    // Changes one key ("camera.fov", "materials.red.albedo", "objects.2.radius"); logs and returns
-    // false when the key or value is bad.
-    bool set(const std::string& key, const std::string& valueText);
-    bool set(const SceneParam& param, const ParamValue& value);
-    // After changing scene() directly (camera moves): does what `trigger` implies.
-    void sceneChanged(Trigger trigger);
-    Scene& scene() { return scene_; }
-    const Scene& scene() const { return scene_; }
-    Scene tracedScene() const;   // scene_ with the resolution scale applied (what the tracer traces)
-    bool hasScene() const { return hasScene_ && tracer_ != nullptr; }
+    bool reloadShaders() override;
+    Scene tracedScene() const;   // the scene with the resolution scale applied (what the tracer traces)
+    bool hasScene() const { return document_.loaded() && tracer_ != nullptr; }
 
     // --- render control ----------------------------------------------------------------------------
     void setPaused(bool paused) { paused_ = paused; }
@@ -93,15 +90,7 @@ public:
     float heatScaleInUse() const;
     OverlaySettings overlays;
     float cameraSpeed = 2.0f;   // world units per second for WASD/QE
-    // The selected object (app/scene_object.h: spheres, then mesh instances; -1 = none), shared by
-    // the outliner, picking, the box overlay, the Material panel, `selected.KEY` and the BRDF
-    // explorer; and the material of it that they edit: a click takes the material under the
-    // cursor (a glTF mesh's per-triangle one), -1 = the object's own.
-    int selected = -1;
-    int selectedMaterial = -1;
-    void select(int object, int material = -1);   // out of range: none
-    // The material the Material panel and `selected.KEY` edit (-1 when nothing is selected).
-    int editedMaterial() const;
+    Selection selection{document_.scene()};   // app/selection.h
     Inspection inspection;      // the pixel path inspector (app/inspection.h)
     BrdfExplorerModel brdfExplorer;   // the BRDF explorer (app/brdf_explorer_model.h)
 
@@ -117,12 +106,11 @@ public:
     // when paused); after a restart the previous picture stays until the first pass is complete,
     // so moving the camera never flashes a half-traced image.
     unsigned displayTexture();
-    void redisplay() { displayDirty_ = true; }
-    bool needsDisplay() const;   // the next displayTexture() would show something new   // after changing depthScale or noiseScale
+    void redisplay() override { displayDirty_ = true; }   // after changing depthScale or noiseScale
+    bool needsDisplay() const;   // the next displayTexture() would show something new
     // The linear value of image pixel (x, y), top-left origin, as accumulated.
     glm::vec4 pixelValue(int x, int y) const;
-    // Select the object seen at image pixel (x, y) (sphere or mesh instance, through the tracer's
-    // BVH on the CPU) and the material there; logs what was picked.
+    // selection.pick() at image pixel (x, y) of the traced image.
     std::optional<int> pick(float x, float y);
     // Click-to-focus at image pixel (x, y): camera.focus_distance becomes the depth of the surface
     // there along the view axis (app/focus_pick.h); logs it. nullopt (and no change) for the sky.
@@ -134,21 +122,16 @@ public:
     const PathTracer* tracer() const { return tracer_; }
     const ViewerStats& stats() const { return stats_; }
     std::string shaderVariant() const;
-    // The most recent error of a load, reload, compile or edit ("" once something succeeds).
-    const std::string& lastError() const { return lastError_; }
-    const std::filesystem::path& scenePath() const { return scenePath_; }
     Log& log() { return log_; }
 
 private:
     Scene traced(Scene s) const;  // s with the resolution scale and the bounce step applied
-    bool applyScene(Scene next, Trigger trigger);
-    void restart();   // after a scene upload: clear moments, restart the slicer
+    bool ready() const override { return tracer_ != nullptr; }
+    bool upload(const Scene& next, Trigger trigger) override;
+    void restart() override;   // after a scene upload: clear moments, restart the slicer
     void ensureDisplayTargets();
 
-    Log& log_;
-    Scene scene_;
-    std::filesystem::path scenePath_;
-    FileWatcher watcher_;
+    const Scene& scene_ = document_.scene();   // what the tracer traces
     // Tracer variants, compiled when first needed: the plain beauty tracer (what raylab-render runs),
     // one that also keeps per-pixel moments (noise, NaN views), one that traces the debug views,
     // one that traces them counting traversal (heat maps).
@@ -161,14 +144,12 @@ private:
     Variant variant_ = kBeauty;
     ShaderProgram display_;
     PassSlicer slicer_;
-    bool hasScene_ = false;
     bool paused_ = false;
     float scale_ = 1.0f;
     DebugView view_ = DebugView::Beauty;
     int bounce_ = 1;
     int bounceStep_ = 0;
     ViewerStats stats_;
-    std::string lastError_;
     double passWall_ = 0.0;
 
     unsigned momentsBuffer_ = 0;   // binding 16: per-pixel moments (debug_views.glsl)

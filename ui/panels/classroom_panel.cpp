@@ -56,7 +56,7 @@ void drawClassroomPanel(Viewer& viewer, UiState& ui) {
     if (ImGui::CollapsingHeader("Renderer stage", ImGuiTreeNodeFlags_DefaultOpen)) {
         const int stage = int(viewer.scene().render.stage);
         for (int i = 0; i < 6; ++i) {
-            if (ImGui::RadioButton(kStages[i], stage == i) && stage != i) viewer.set("render.stage", kStages[i]);
+            if (ImGui::RadioButton(kStages[i], stage == i) && stage != i) viewer.document().set("render.stage", kStages[i]);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kStageHelp[i]);
             if (i % 3 != 2) ImGui::SameLine();
         }

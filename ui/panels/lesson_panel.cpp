@@ -1,9 +1,11 @@
 // The Lesson tab of the Teach window: a picker over lessons/, the open lesson's Markdown, a button
 // per step that runs its script (the window loop runs it, app/lesson_session.h), the current step
-// highlighted, and presenter keys (PageDown/PageUp anywhere; arrows and Space while this window
-// has the keyboard).
+// highlighted, and the presenter keys of this window (arrows and Space while it has the keyboard;
+// PageDown/PageUp are key actions, script/key_actions.h).
 #include "panels/markdown_view.h"
 #include "panels/panels.h"
+
+#include "app/actions.h"
 
 #include "gl/shader_source.h"
 
@@ -56,14 +58,11 @@ void picker(Viewer& viewer, UiState& ui) {
 void presenterKeys(UiState& ui) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantTextInput || !ui.lesson.isOpen()) return;
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageDown), false)) ui.lesson.next();
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageUp), false)) ui.lesson.previous();
-    if (ui.teachFocused) {
-        if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow), false) ||
-            ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false))
-            ui.lesson.next();
-        if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow), false)) ui.lesson.previous();
-    }
+    if (!ui.teachFocused) return;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow), false) ||
+        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false))
+        ui.lesson.next();
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow), false)) ui.lesson.previous();
 }
 
 void drawLessonPanel(Viewer& viewer, UiState& ui) {
@@ -75,9 +74,9 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     }
     const Lesson& l = ui.lesson.lesson();
     const int n = ui.lesson.stepCount(), cur = ui.lesson.current();
-    if (ImGui::Button("< Previous (PgUp)")) ui.lesson.previous();
+    if (ImGui::Button(("< " + buttonLabel("Previous", KeyAction::PreviousStep)).c_str())) runAction(KeyAction::PreviousStep, viewer, ui);
     ImGui::SameLine();
-    if (ImGui::Button("Next (PgDn) >")) ui.lesson.next();
+    if (ImGui::Button((buttonLabel("Next", KeyAction::NextStep) + " >").c_str())) runAction(KeyAction::NextStep, viewer, ui);
     ImGui::SameLine();
     ImGui::Text("step %d of %d", cur + 1, n);
     ImGui::Separator();

@@ -54,8 +54,8 @@ void materialAssignment(Viewer& viewer, int sel, const ObjectRef& r) {
     for (int j = 0; j < int(scene.materials.size()); ++j)
         if (ImGui::Selectable(scene.materials[std::size_t(j)].name.c_str(), j == own)) {
             own = j;
-            viewer.select(sel, j);
-            viewer.sceneChanged(Trigger::ReloadScene);   // recompiles only if the feature set changed
+            viewer.selection.select(sel, j);
+            viewer.document().changed(Trigger::ReloadScene);   // recompiles only if the feature set changed
             break;   // the scene's vectors were replaced: `own` is gone
         }
     ImGui::EndCombo();
@@ -79,24 +79,24 @@ void drawMaterialPanel(Viewer& viewer, UiState&) {
         static int scrolledTo = -1;   // a pick in the viewport scrolls its row into view once
         for (int i = 0; i < objectCount(scene); ++i) {
             const std::string label = objectLabel(scene, i);
-            if (ImGui::Selectable(label.c_str(), viewer.selected == i)) viewer.select(i);
-            if (viewer.selected == i && scrolledTo != i) ImGui::SetScrollHereY();
+            if (ImGui::Selectable(label.c_str(), viewer.selection.object() == i)) viewer.selection.select(i);
+            if (viewer.selection.object() == i && scrolledTo != i) ImGui::SetScrollHereY();
         }
-        scrolledTo = viewer.selected;
+        scrolledTo = viewer.selection.object();
         ImGui::EndListBox();
     }
-    const int sel = viewer.selected;
+    const int sel = viewer.selection.object();
     if (const auto r = objectRef(scene, sel)) {
         ImGui::Separator();
         objectKeys(viewer, sel, *r);
         materialAssignment(viewer, sel, *r);
         const std::vector<int> materials = objectMaterials(viewer.scene(), sel);
-        const int m = viewer.editedMaterial();
+        const int m = viewer.selection.editedMaterial();
         if (materials.size() > 1) {
             ImGui::TextDisabled("its materials (a click in the viewport picks the one there):");
             for (const int j : materials)
                 if (ImGui::Selectable(("  " + viewer.scene().materials[std::size_t(j)].name).c_str(), j == m))
-                    viewer.select(sel, j);
+                    viewer.selection.select(sel, j);
         }
         ImGui::Separator();
         ImGui::TextWrapped("material '%s' (shared by every object that uses it)", viewer.scene().materials[std::size_t(m)].name.c_str());

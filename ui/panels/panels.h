@@ -21,15 +21,18 @@ void drawBrdfExplorerPanel(Viewer& viewer, UiState& ui);  // brdf_explorer_panel
 // The inspected paths over the image (inspector_panel.cpp), called by the viewport.
 void drawPathOverlay(Viewer& viewer, const ImageRect& image);
 
-// Teaching (issue 6): the Teach window (teach_panel.cpp) with the Lesson (lesson_panel.cpp),
+// Teaching: the Teach window (teach_panel.cpp) with the Lesson (lesson_panel.cpp),
 // Classroom (classroom_panel.cpp) and Self-test (self_test_panel.cpp) tabs.
 void drawTeachWindow(Viewer& viewer, UiState& ui, float windowHeight);
 void drawLessonPanel(Viewer& viewer, UiState& ui);
 void drawClassroomPanel(Viewer& viewer, UiState& ui);
 void drawSelfTestPanel(Viewer& viewer, UiState& ui);
-// Presenter keys (lesson_panel.cpp): PageDown/PageUp always, Right/Left/Space while the Teach
-// window has the keyboard. Call between NewFrame and drawing.
+// The Teach window's presenter keys (lesson_panel.cpp): Right/Left/Space while it has the
+// keyboard. Call between NewFrame and drawing.
 void presenterKeys(UiState& ui);
+// The key actions of script/key_actions.h (shortcuts.cpp). Call between NewFrame and drawing,
+// before applyUiScale.
+void shortcutKeys(Viewer& viewer, UiState& ui);
 // The A/B split screen over the image (split_view.cpp); the viewport calls it after the image.
 void drawSplitView(UiState& ui, const ImageRect& image);
 // UI scale (ui_scale.cpp): register the imgui.ini entry before the first frame; apply once a frame
@@ -37,8 +40,8 @@ void drawSplitView(UiState& ui, const ImageRect& image);
 void installUiScaleSettings(UiState& ui);
 void applyUiScale(UiState& ui);
 
-// All of the above, laid out for a window of the given size on first use (imgui.ini keeps what
-// the user changes afterwards).
+// All of the above, laid out for a window of the given size on first use (workspace.cpp; imgui.ini
+// keeps what the user changes afterwards).
 void drawWorkspace(Viewer& viewer, UiState& ui, float windowWidth, float windowHeight);
 
 } // namespace raylab::ui

@@ -104,7 +104,7 @@ bool paramWidget(Viewer& viewer, const SceneParam& param, float vectorSpeed) {
     }
     tooltip(s);
     ImGui::PopID();
-    if (changed && !checkValue(s, value)) return viewer.set(param, value);
+    if (changed && !checkValue(s, value)) return viewer.document().set(param, value);
     return false;
 }
 

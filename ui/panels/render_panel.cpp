@@ -1,6 +1,8 @@
 // Render panel: files (open, save, screenshot, export), pause/resume/reset, resolution scale and
 // every render.* key of the parameter table except the display ones (camera panel).
 #include "panels/panels.h"
+
+#include "app/actions.h"
 #include "panels/param_widget.h"
 
 #include <imgui.h>
@@ -24,18 +26,19 @@ void drawRenderPanel(Viewer& viewer, UiState& ui) {
         ImGui::SetNextItemWidth(boxWidth);
         ImGui::InputText("##save", &ui.savePath);
         ImGui::SameLine();
-        if (ImGui::Button("Save scene") && !ui.savePath.empty()) viewer.saveScene(ui.savePath);
+        if (ImGui::Button("Save scene")) runAction(KeyAction::SaveScene, viewer, ui);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(keyBinding(KeyAction::SaveScene).keyLabel).c_str());
         ImGui::SetNextItemWidth(boxWidth);
         ImGui::InputText("##shot", &ui.screenshotPath);
         ImGui::SameLine();
-        if (ImGui::Button("Screenshot (F12)")) ui.pendingScreenshot = ui.screenshotPath;
+        if (ImGui::Button(buttonLabel("Screenshot", KeyAction::Screenshot).c_str())) runAction(KeyAction::Screenshot, viewer, ui);
         ImGui::SetNextItemWidth(boxWidth);
         ImGui::InputText("##export", &ui.exportPath);
         ImGui::SameLine();
-        if (ImGui::Button("Export (F9)")) viewer.exportRender(ui.exportPath);
-        if (ImGui::Button("Reload shaders (F5)")) viewer.reloadShaders();
+        if (ImGui::Button(buttonLabel("Export", KeyAction::Export).c_str())) runAction(KeyAction::Export, viewer, ui);
+        if (ImGui::Button(buttonLabel("Reload shaders", KeyAction::ReloadShaders).c_str())) runAction(KeyAction::ReloadShaders, viewer, ui);
         ImGui::SameLine();
-        if (ImGui::Button("Teach (F1)")) ui.showTeach = !ui.showTeach;
+        if (ImGui::Button(buttonLabel("Teach", KeyAction::ToggleTeach).c_str())) runAction(KeyAction::ToggleTeach, viewer, ui);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lessons, classroom mode (split screen, stepping, stages) and the self-test");
     }
     if (!viewer.hasScene()) {
@@ -45,9 +48,9 @@ void drawRenderPanel(Viewer& viewer, UiState& ui) {
         return;
     }
     if (ImGui::CollapsingHeader("Passes", ImGuiTreeNodeFlags_DefaultOpen)) {
-        if (ImGui::Button(viewer.paused() ? "Resume (Space)" : "Pause (Space)")) viewer.setPaused(!viewer.paused());
+        if (ImGui::Button(buttonLabel(viewer.paused() ? "Resume" : "Pause", KeyAction::Pause).c_str())) runAction(KeyAction::Pause, viewer, ui);
         ImGui::SameLine();
-        if (ImGui::Button("Reset (R)")) viewer.resetAccumulation();
+        if (ImGui::Button(buttonLabel("Reset", KeyAction::Reset).c_str())) runAction(KeyAction::Reset, viewer, ui);
         float scale = viewer.resolutionScale();
         if (ImGui::SliderFloat("resolution scale", &scale, 0.125f, 2.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp))
             viewer.setResolutionScale(scale);

@@ -44,12 +44,6 @@ void installUiScaleSettings(UiState& ui) {
 void applyUiScale(UiState& ui) {
     static ImGuiStyle base = ImGui::GetStyle();
     static float applied = 1.0f;
-    const ImGuiIO& io = ImGui::GetIO();
-    if (!io.WantTextInput && io.KeyCtrl) {
-        if (ImGui::IsKeyPressed('=', false) || ImGui::IsKeyPressed(334 /* GLFW_KEY_KP_ADD */, false)) ui.uiScale += 0.25f;
-        if (ImGui::IsKeyPressed('-', false) || ImGui::IsKeyPressed(333 /* GLFW_KEY_KP_SUBTRACT */, false)) ui.uiScale -= 0.25f;
-        if (ImGui::IsKeyPressed('0', false)) ui.uiScale = 1.0f;
-    }
     ui.uiScale = std::clamp(ui.uiScale, kMinUiScale, kMaxUiScale);
     if (ui.uiScale == applied) return;
     ImGuiStyle style = base;

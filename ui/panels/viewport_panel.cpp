@@ -42,7 +42,7 @@ void drawOverlays(Viewer& viewer, const ImageRect& r) {
     }
     const SceneGeometry* g = viewer.geometry();
     for (int i = 0; g && i < objectCount(scene) && (o.boxes || o.selectedOnly); ++i) {   // spheres, then meshes
-        const bool sel = i == viewer.selected;
+        const bool sel = i == viewer.selection.object();
         if (viewer.overlays.selectedOnly && !sel) continue;
         const ImU32 colour = sel ? IM_COL32(0, 255, 255, 255) : IM_COL32(255, 255, 0, 255);
         const std::optional<Box> box = objectBounds(scene, *g, i);
@@ -69,7 +69,7 @@ void keyboardCamera(Viewer& viewer) {
     Camera& cam = viewer.scene().camera;
     moveCamera(cam, forward * step, right * step, up * step);
     turnCamera(cam, yaw * kTurnSpeed * dt, pitch * kTurnSpeed * dt);
-    viewer.sceneChanged(Trigger::ResetAccumulation);
+    viewer.document().changed(Trigger::ResetAccumulation);
 }
 
 void tooltip(Viewer& viewer, const ImageRect& r) {
@@ -112,9 +112,9 @@ void drawViewport(Viewer& viewer, UiState& ui) {
         ImGui::End();
         return;
     }
-    if (!viewer.lastError().empty()) {
+    if (!viewer.document().lastError().empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
-        ImGui::TextWrapped("%s", viewer.lastError().c_str());
+        ImGui::TextWrapped("%s", viewer.document().lastError().c_str());
         ImGui::PopStyleColor();
     }
     const unsigned texture = viewer.displayTexture();
@@ -163,7 +163,7 @@ void drawViewport(Viewer& viewer, UiState& ui) {
         if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
             if (io.MouseDown[0]) orbitCamera(cam, io.MouseDelta.x * kRadiansPerPixel, io.MouseDelta.y * kRadiansPerPixel);
             else turnCamera(cam, io.MouseDelta.x * kRadiansPerPixel, -io.MouseDelta.y * kRadiansPerPixel);
-            viewer.sceneChanged(Trigger::ResetAccumulation);
+            viewer.document().changed(Trigger::ResetAccumulation);
         }
     }
     if (ImGui::IsItemDeactivated()) {
@@ -173,45 +173,12 @@ void drawViewport(Viewer& viewer, UiState& ui) {
     if (ImGui::IsItemHovered()) {
         if (io.MouseWheel != 0.0f) {
             dollyCamera(cam, io.MouseWheel > 0 ? 0.9f : 1.0f / 0.9f);
-            viewer.sceneChanged(Trigger::ResetAccumulation);
+            viewer.document().changed(Trigger::ResetAccumulation);
         }
         if (ui.pixelTooltip && !ui.dragging) tooltip(viewer, ui.image);
     }
     if (ImGui::IsWindowFocused()) keyboardCamera(viewer);
     ImGui::End();
-}
-
-void drawWorkspace(Viewer& viewer, UiState& ui, float W, float H) {
-    // First-use layout: controls on the left, the image in the middle, inspection on the right,
-    // stats and log under the image. imgui.ini remembers any change.
-    const float left = 330.0f, right = 330.0f, bottom = 230.0f;
-    const float mid = std::max(200.0f, W - left - right);
-    auto place = [](float x, float y, float w, float h) {
-        ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(w, h), ImGuiCond_FirstUseEver);
-    };
-    place(left, 0, mid, H - bottom);
-    drawViewport(viewer, ui);
-    place(0, 0, left, H * 0.62f);
-    drawRenderPanel(viewer, ui);
-    place(0, H * 0.62f, left, H * 0.38f);
-    drawCameraPanel(viewer, ui);
-    place(left + mid, 0, right, H * 0.40f);
-    drawMaterialPanel(viewer, ui);
-    place(left + mid, H * 0.40f, right, H * 0.22f);
-    drawOverlaysPanel(viewer, ui);
-    place(left + mid, H * 0.62f, right, H * 0.38f);
-    drawDebugPanel(viewer, ui);
-    place(left, H - bottom, mid * 0.5f, bottom);
-    drawStatsPanel(viewer, ui);
-    place(left + mid * 0.5f, H - bottom, mid * 0.5f, bottom);
-    drawLogPanel(viewer, ui);
-    // Opened from the Overlays panel, an inspection or "explore": over the image's right side.
-    place(left + mid * 0.35f, 20, mid * 0.65f, H * 0.45f);
-    drawInspectorPanel(viewer, ui);
-    place(left + mid * 0.3f, H * 0.3f, mid * 0.7f, H * 0.5f);
-    drawBrdfExplorerPanel(viewer, ui);
-    drawTeachWindow(viewer, ui, H);   // on top, when open (F1)
 }
 
 } // namespace raylab::ui
