@@ -32,15 +32,15 @@ vec3 skyLookup(SkyParams sky, vec3 dir) {
 #else
     if (sky.type != SKY_MAP) return skyRadiance(sky, dir);
     ivec2 size = textureSize(uSkyMap, 0);
-    vec2 uv = equirectFromDirection(dir, uSkyRotation);
+    vec2 uv = equirectFromDirection(dir, params.skyRotation);
     ivec2 texel = min(ivec2(uv * vec2(size)), size - ivec2(1));
-    return uSkyMapScale * texelFetch(uSkyMap, texel, 0).rgb;
+    return params.skyMapScale * texelFetch(uSkyMap, texel, 0).rgb;
 #endif
 }
 
 // Next-event estimation of the sky: the map by its own distribution, analytic skies uniformly.
 #ifdef RAYLAB_SKY_MAP
-bool skyByMap() { return uSkyType == SKY_MAP && uEnvMeanWeight > 0.0f; }
+bool skyByMap() { return params.skyType == SKY_MAP && params.envMeanWeight > 0.0f; }
 #else
 bool skyByMap() { return false; }
 #endif
@@ -69,7 +69,7 @@ BsdfParams materialBsdf(GpuMaterial m) {
 // RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (some material has f0 > 0 or transmission > 0),
 // RAYLAB_SKY_MAP (sky.type map), RAYLAB_EMISSIVE_TRIANGLES (some mesh emits).
 #ifdef RAYLAB_NEE
-int neeLightCount() { return uNee ? boundedLightCount() + (uSkyIsLight ? 1 : 0) : 0; }
+int neeLightCount() { return params.nee ? boundedLightCount() + (params.skyIsLight ? 1 : 0) : 0; }
 #else
 int neeLightCount() { return 0; }
 #endif
@@ -79,7 +79,7 @@ int neeLightCount() { return 0; }
 float emitterLightPdf(vec3 p, vec3 q) {
     int best = -1;
     float bestMiss = FLOAT_MAX;
-    for (int i = 0; i < uLightCount; ++i) {
+    for (int i = 0; i < params.lightCount; ++i) {
         vec4 s = lights[i].centerRadius;
         float miss = abs(length(q - s.xyz) - s.w) / s.w;
         if (miss < bestMiss) {
@@ -102,17 +102,17 @@ float triangleEmitterLightPdf(vec3 d, Hit hit) {
     float len = length(d);
     float dist = hit.t * len;
     float pdf = triangleLightPdf(dist * dist, dot(hit.normal, d) / len, triangleLights[j].p0Area.w);
-    return pdf * boundedLightPmf(uLightCount + j);
+    return pdf * boundedLightPmf(params.lightCount + j);
 #else
     return 0.0f;
 #endif
 }
 
 // Radiance along one camera path (Kajiya 1986). beta is the path throughput: the product of
-// f·|cosθ|/pdf over the bounces so far. With uNee, each bounce also adds a light sample; emission
+// f·|cosθ|/pdf over the bounces so far. With params.nee, each bounce also adds a light sample; emission
 // that a BSDF sample reaches is then weighted so nothing is counted twice (Veach 1997, §9.2).
 vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
-    SkyParams sky = SkyParams(uSkyType, uSkyColor, uSkyTop, uSkyBottom);
+    SkyParams sky = SkyParams(params.skyType, params.skyColor, params.skyTop, params.skyBottom);
     int lightCount = neeLightCount();
     vec3 radiance = vec3(0.0f);
     vec3 beta = vec3(1.0f);
@@ -123,7 +123,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
     // Ray cone (Ray Tracing Gems ch. 20, §20.3.4): the width grows by the spread angle per unit
     // distance; the spread starts at the pixel's and widens at rough bounces (ray_cone.glsl).
     float coneWidth = 0.0f;
-    float coneSpread = uCamPixelSpread;
+    float coneSpread = params.camPixelSpread;
 #endif
     for (int bounce = 0;; ++bounce) {
         Hit hit;
@@ -138,9 +138,9 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             vec3 dir = normalize(ray.dir);
             float w = 1.0f;
 #ifdef RAYLAB_NEE
-            if (uSkyIsLight && lightCount > 0 && !prevDelta) {
+            if (params.skyIsLight && lightCount > 0 && !prevDelta) {
                 float lightPdf = skyLightPdf(dir) * skySelectionPmf();
-                w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
+                w = params.mis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
             }
 #endif
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * skyLookup(sky, dir) * w);
@@ -170,13 +170,13 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
 #else
                 float lightPdf = emitterLightPdf(prevPos, hit.position);   // only spheres are lights
 #endif
-                w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
+                w = params.mis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
             }
 #endif
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
             RAYLAB_RECORD(recordEmission(bounce, Le, w));
         }
-        if (bounce >= uMaxBounces || RAYLAB_STAGE == RAYLAB_STAGE_EMISSION) break;
+        if (bounce >= params.maxBounces || RAYLAB_STAGE == RAYLAB_STAGE_EMISSION) break;
         BsdfParams bsdf = materialBsdf(m);
 #ifdef RAYLAB_FEATURE_TEXTURES
         applyMaterialTextures(hit, ray.dir, coneWidth, bsdf);
@@ -203,9 +203,9 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             float misPdf = 0.0f;     // density the BSDF side sees for it (weights only)
             float tMax = FLOAT_MAX;
             vec3 lightPoint = vec3(0.0f);   // triangle lights: the point sampled
-            if (k >= uLightCount) {
+            if (k >= params.lightCount) {
 #ifdef RAYLAB_EMISSIVE_TRIANGLES
-                GpuTriangleLight tl = triangleLights[k - uLightCount];
+                GpuTriangleLight tl = triangleLights[k - params.lightCount];
                 vec3 p0 = tl.p0Area.xyz;
                 lightPoint = sampleTrianglePoint(p0, tl.p1.xyz, tl.p2.xyz, ul);
                 vec3 d = lightPoint - hit.position;
@@ -247,7 +247,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             if (max(f.r, max(f.g, f.b)) > 0.0f) {
                 vec3 side = dot(wiW, hit.normal) > 0.0f ? hit.normal : -hit.normal;
                 Ray shadow = Ray(offsetRayOrigin(hit.position, side, hit.error), wiW);
-                if (k >= uLightCount) {
+                if (k >= params.lightCount) {
                     // Stop just short of the light's own triangle.
                     tMax = dot(lightPoint - shadow.origin, wiW) * (1.0f - 1e-4f);
                     if (!(tMax > 0.0f)) tMax = -1.0f;
@@ -260,7 +260,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
                 ++rays;
                 bool visible = tMax > 0.0f && !occluded(shadow, tMax);
                 if (visible) {
-                    float w = uMis ? powerHeuristic(misPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
+                    float w = params.mis ? powerHeuristic(misPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
                     RAYLAB_ADD_RADIANCE(radiance, bounce + 1, beta * f * Ll * (w / lightPdf));
                 }
                 RAYLAB_RECORD(recordLight(bounce, k, wiW, k >= 0 ? tMax : -1.0f, Ll, f, abs(wiL.z), lightPdf,
@@ -309,7 +309,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
 
         // Russian roulette (pbrt-v4 §14.1.4 style): survive with q = max throughput, at most
         // 0.95, and divide by q so the estimate stays unbiased.
-        if (bounce + 1 >= uRrDepth) {
+        if (bounce + 1 >= params.rrDepth) {
             float q = min(max(beta.r, max(beta.g, beta.b)), 0.95f);
             bool survived = !(rngNextFloat(rng) >= q);   // a NaN q survives (the NaN guard counts it)
             RAYLAB_RECORD(recordRoulette(bounce, q, survived));
