@@ -15,7 +15,7 @@
 
 namespace raylab {
 
-// Which entry point runs the tracer. Fragment measured faster on llvmpipe (README, benchmarks).
+// Which entry point runs the tracer; the fragment entry is the faster on llvmpipe (bench/throughput.md).
 enum class TracerEntry { Fragment, Compute };
 
 struct TracerOptions {
