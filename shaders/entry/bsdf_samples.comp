@@ -22,7 +22,7 @@ struct SampleRecord {
 };
 layout(std430, binding = BINDING_BSDF_SAMPLES) writeonly buffer Samples { SampleRecord samples[]; };
 
-uniform uint uCount;        // (uSeed comes from scene_data.glsl)
+uniform uint uCount;        // the seed and light counts come from the tracer's params block
 uniform int uMode;          // 0: cosine hemisphere, 1: bsdfSample, 2: sphere cone, 3: sky map,
                             // 4: triangle light by area, 5: light selection
 uniform vec3 uTriangle0;    // mode 4: the triangle, seen from the origin
@@ -40,7 +40,7 @@ uniform float uIor;
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= uCount) return;
-    Rng rng = rngCreate(uvec2(i, 0u), 0u, uSeed);
+    Rng rng = rngCreate(uvec2(i, 0u), 0u, params.seed);
     vec2 u = rngNext2(rng);
     float uLobe = rngNextFloat(rng);
     if (uMode == 0) {
@@ -73,7 +73,7 @@ void main() {
     if (uMode == 5) {
         // x: the light picked (-1 the sky), y: its probability, z: boundedLightPmf of it.
         float pmf;
-        Rng pick = rngCreate(uvec2(i, 1u), 0u, uSeed);
+        Rng pick = rngCreate(uvec2(i, 1u), 0u, params.seed);
         int k = selectLight(pick, pmf);
         samples[i] = SampleRecord(vec4(float(k), pmf, k >= 0 ? boundedLightPmf(k) : 0.0, 0.0), vec4(0.0));
         return;

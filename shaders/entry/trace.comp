@@ -11,6 +11,6 @@ layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y) in;
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (pixel.x >= uImageSize.x || pixel.y >= uImageSize.y) return;
+    if (pixel.x >= params.imageSize.x || pixel.y >= params.imageSize.y) return;
     tracePixelPass(pixel);
 }

@@ -116,10 +116,10 @@ void debugMomentsAdd(inout DebugMoments m, vec3 L) {
 }
 
 void debugMomentsStore(DebugMoments m, ivec2 pixel) {
-    uint i = uint(pixel.y * uImageSize.x + pixel.x);
-    vec4 old = uSampleStart > 0u ? debugMoments[i] : vec4(0.0f);
-    float n = float(uSampleStart + uint(uRpp));
-    debugMoments[i] = vec4(old.x + (m.sumSq - float(uRpp) * old.x) / n, old.y + float(m.nonFinite), 0.0f, 0.0f);
+    uint i = uint(pixel.y * params.imageSize.x + pixel.x);
+    vec4 old = params.sampleStart > 0u ? debugMoments[i] : vec4(0.0f);
+    float n = float(params.sampleStart + uint(params.rpp));
+    debugMoments[i] = vec4(old.x + (m.sumSq - float(params.rpp) * old.x) / n, old.y + float(m.nonFinite), 0.0f, 0.0f);
 }
 #endif
 

@@ -36,15 +36,15 @@ int envFindConditional(int offset, int n, float u) {
 float envPdfUv(ivec2 texel, ivec2 size) {
     vec3 c = texelFetch(uSkyMap, texel, 0).rgb;
     float theta = (float(texel.y) + 0.5f) / float(size.y) * PI;
-    return max(max(c.r, c.g), max(c.b, 0.0f)) * sin(theta) / uEnvMeanWeight;
+    return max(max(c.r, c.g), max(c.b, 0.0f)) * sin(theta) / params.envMeanWeight;
 }
 
 // Solid-angle density: pdf(u, v) / (2π² sinθ), the Jacobian of the equirectangular map.
 float environmentPdf(vec3 dir) {
     ivec2 size = textureSize(uSkyMap, 0);
-    vec2 uv = equirectFromDirection(dir, uSkyRotation);
+    vec2 uv = equirectFromDirection(dir, params.skyRotation);
     float sinTheta = sin(uv.y * PI);
-    if (sinTheta <= 0.0f || uEnvMeanWeight <= 0.0f) return 0.0f;
+    if (sinTheta <= 0.0f || params.envMeanWeight <= 0.0f) return 0.0f;
     ivec2 texel = min(ivec2(uv * vec2(size)), size - ivec2(1));
     return envPdfUv(texel, size) / (2.0f * PI * PI * sinTheta);
 }
@@ -68,7 +68,7 @@ vec3 sampleEnvironment(vec2 u, out float pdf, out vec2 uvOut) {
     float sinTheta = sin(uv.y * PI);
     pdf = sinTheta > 0.0f ? envPdfUv(ivec2(x, y), size) / (2.0f * PI * PI * sinTheta) : 0.0f;
     uvOut = uv;
-    return directionFromEquirect(uv, uSkyRotation);
+    return directionFromEquirect(uv, params.skyRotation);
 }
 #else
 // Without a sky map nothing samples it (skyByMap() is false): a stub keeps the callers compiling.

@@ -32,15 +32,15 @@ vec3 skyLookup(SkyParams sky, vec3 dir) {
 #else
     if (sky.type != SKY_MAP) return skyRadiance(sky, dir);
     ivec2 size = textureSize(uSkyMap, 0);
-    vec2 uv = equirectFromDirection(dir, uSkyRotation);
+    vec2 uv = equirectFromDirection(dir, params.skyRotation);
     ivec2 texel = min(ivec2(uv * vec2(size)), size - ivec2(1));
-    return uSkyMapScale * texelFetch(uSkyMap, texel, 0).rgb;
+    return params.skyMapScale * texelFetch(uSkyMap, texel, 0).rgb;
 #endif
 }
 
 // Next-event estimation of the sky: the map by its own distribution, analytic skies uniformly.
 #if RAYLAB_SKY_MAP
-bool skyByMap() { return uSkyType == SKY_MAP && uEnvMeanWeight > 0.0f; }
+bool skyByMap() { return params.skyType == SKY_MAP && params.envMeanWeight > 0.0f; }
 #else
 bool skyByMap() { return false; }
 #endif
@@ -63,13 +63,12 @@ BsdfParams materialBsdf(GpuMaterial m) {
 }
 
 // Lights that next-event estimation picks from (light_selection.glsl): the emissive spheres and
-// triangles by power, and the sky.
-// Compiled in only when the host defines them (absent features cost nothing; on llvmpipe the mere
-// presence of the light-sampling block, even never taken, cost about 2.5× in throughput):
-// RAYLAB_NEE (render.nee), RAYLAB_GENERAL_BSDF (some material has f0 > 0 or transmission > 0),
-// RAYLAB_SKY_MAP (sky.type map), RAYLAB_EMISSIVE_TRIANGLES (some mesh emits).
+// triangles by power, and the sky. Each part is compiled in only when the host defines its feature,
+// because llvmpipe pays for the light-sampling block even where it is never taken: RAYLAB_NEE
+// (render.nee), RAYLAB_GENERAL_BSDF (some material has f0 > 0 or transmission > 0), RAYLAB_SKY_MAP
+// (sky.type map), RAYLAB_EMISSIVE_TRIANGLES (some mesh emits).
 #if RAYLAB_NEE
-int neeLightCount() { return uNee ? boundedLightCount() + (uSkyIsLight ? 1 : 0) : 0; }
+int neeLightCount() { return params.nee ? boundedLightCount() + (params.skyIsLight ? 1 : 0) : 0; }
 #else
 int neeLightCount() { return 0; }
 #endif
@@ -79,7 +78,7 @@ int neeLightCount() { return 0; }
 float emitterLightPdf(vec3 p, vec3 q) {
     int best = -1;
     float bestMiss = FLOAT_MAX;
-    for (int i = 0; i < uLightCount; ++i) {
+    for (int i = 0; i < params.lightCount; ++i) {
         vec4 s = lights[i].centerRadius;
         float miss = abs(length(q - s.xyz) - s.w) / s.w;
         if (miss < bestMiss) {
@@ -102,28 +101,216 @@ float triangleEmitterLightPdf(vec3 d, Hit hit) {
     float len = length(d);
     float dist = hit.t * len;
     float pdf = triangleLightPdf(dist * dist, dot(hit.normal, d) / len, triangleLights[j].p0Area.w);
-    return pdf * boundedLightPmf(uLightCount + j);
+    return pdf * boundedLightPmf(params.lightCount + j);
 #else
     return 0.0f;
 #endif
 }
 
+// What multiple importance sampling needs of the bounce that sent the current ray.
+struct PrevBounce {
+    float pdf;       // BSDF density of the direction it followed
+    bool delta;      // a camera ray or a delta lobe: light sampling could not have found it
+    vec3 position;   // where it left from
+};
+
+// Weight of emission a BSDF sample reached where a light sample would have drawn it with density
+// lightPdf: the power heuristic with MIS; without, the light sample alone counts what it can find.
+float bsdfHitWeight(float bsdfPdf, float lightPdf) {
+    return params.mis ? powerHeuristic(bsdfPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
+}
+
+// That weight for the sky a ray escaped to (unit direction dir).
+float skyHitWeight(vec3 dir, PrevBounce prev, int lightCount) {
+    float w = 1.0f;
+#if RAYLAB_NEE
+    if (params.skyIsLight && lightCount > 0 && !prev.delta)
+        w = bsdfHitWeight(prev.pdf, skyLightPdf(dir) * skySelectionPmf());
+#endif
+    return w;
+}
+
+// That weight for an emitting surface a ray hit.
+float surfaceHitWeight(Ray ray, Hit hit, PrevBounce prev, int lightCount) {
+    float w = 1.0f;
+#if RAYLAB_NEE
+    if (lightCount > 0 && !prev.delta) {
+#if RAYLAB_EMISSIVE_TRIANGLES
+        float lightPdf = instances[hit.instance].info.x == INSTANCE_SPHERE
+                             ? emitterLightPdf(prev.position, hit.position)
+                             : triangleEmitterLightPdf(ray.dir, hit);
+#else
+        float lightPdf = emitterLightPdf(prev.position, hit.position);   // only spheres are lights
+#endif
+        w = bsdfHitWeight(prev.pdf, lightPdf);
+    }
+#endif
+    return w;
+}
+
+// A hit as the BSDF sees it. The BSDF works in the shading frame (smooth or normal-mapped normals),
+// turned to the geometric normal's side; it tells inside from outside by the sign of wo.z.
+struct ShadingPoint {
+    BsdfParams bsdf;
+    Frame frame;
+    vec3 wo;             // towards where the path came from, shading frame
+    float arrivalSide;   // > 0: the path arrived on the geometric normal's side
+};
+
+ShadingPoint shadingPoint(BsdfParams bsdf, Hit hit, vec3 rayDir) {
+    vec3 ns = dot(hit.shadingNormal, hit.normal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
+    Frame frame = frameFromNormal(ns);
+    return ShadingPoint(bsdf, frame, frameToLocal(frame, -normalize(rayDir)), dot(-rayDir, hit.normal));
+}
+
+// Whether the shading frame and the geometric surface agree on the side of a direction wi (local
+// and world): where they do not, following it would leak light through the surface.
+bool sidesAgree(ShadingPoint sp, vec3 wiLocal, vec3 wiWorld, vec3 geometricNormal) {
+    return (wiLocal.z * sp.wo.z > 0.0f) == (dot(wiWorld, geometricNormal) * sp.arrivalSide > 0.0f);
+}
+
+// A ray leaving the hit along dir, from the side of the surface dir points to.
+Ray spawnRay(Hit hit, vec3 dir) {
+    vec3 side = dot(dir, hit.normal) > 0.0f ? hit.normal : -hit.normal;
+    return Ray(offsetRayOrigin(hit.position, side, hit.error), dir);
+}
+
+// A direction towards light k (-1: the sky) from p.
+struct LightSample {
+    vec3 wi;        // world, unit
+    vec3 L;         // radiance arriving along wi
+    float pdf;      // solid-angle density wi was drawn with (divides)
+    float misPdf;   // density the BSDF side sees for wi (weights only)
+    vec3 point;     // triangle lights: the point sampled
+};
+
+// Spheres by the cone they subtend, triangles by area, the sky map by its distribution and an
+// analytic sky uniformly; a pdf of 0 means no direction.
+LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
+    LightSample ls = LightSample(vec3(0.0f), vec3(0.0f), 0.0f, 0.0f, vec3(0.0f));
+    if (k >= params.lightCount) {
+#if RAYLAB_EMISSIVE_TRIANGLES
+        GpuTriangleLight tl = triangleLights[k - params.lightCount];
+        vec3 p0 = tl.p0Area.xyz;
+        ls.point = sampleTrianglePoint(p0, tl.p1.xyz, tl.p2.xyz, u);
+        vec3 d = ls.point - p;
+        float dist2 = dot(d, d);
+        if (dist2 > 0.0f) {
+            ls.wi = d / sqrt(dist2);
+            ls.pdf = triangleLightPdf(dist2, dot(normalize(cross(tl.p1.xyz - p0, tl.p2.xyz - p0)), ls.wi),
+                                      tl.p0Area.w);
+            ls.L = tl.radiance.rgb;
+        }
+        ls.misPdf = ls.pdf;
+#endif
+    } else if (k >= 0) {
+        vec4 s = lights[k].centerRadius;
+        ls.pdf = sphereConePdf(p, s.xyz, s.w);
+        if (ls.pdf > 0.0f) {
+            ls.wi = sphereConeSample(p, s.xyz, s.w, u);
+            ls.L = lights[k].radiance.rgb;
+        }
+        ls.misPdf = ls.pdf;
+    } else if (skyByMap()) {
+        vec2 uv;
+        ls.wi = sampleEnvironment(u, ls.pdf, uv);
+        ls.misPdf = skyLightPdf(ls.wi);   // equal but at texel edges, where it re-maps
+        ls.L = skyLookup(sky, ls.wi);
+    } else {
+        ls.wi = sampleUniformSphere(u);
+        ls.pdf = UNIFORM_SPHERE_PDF;
+        ls.misPdf = ls.pdf;
+        ls.L = skyLookup(sky, ls.wi);
+    }
+    return ls;
+}
+
+// Where a shadow ray towards light k must stop so that it does not hit the light itself: just
+// short of its surface (-1 when the ray misses it); the sky is at infinity.
+float shadowRayEnd(int k, Ray shadow, vec3 lightPoint) {
+    if (k >= params.lightCount) {
+        float tMax = dot(lightPoint - shadow.origin, shadow.dir) * (1.0f - 1e-4f);
+        return tMax > 0.0f ? tMax : -1.0f;
+    }
+    if (k >= 0) {
+        vec4 s = lights[k].centerRadius;
+        float t = intersectSphere(shadow, s.xyz, s.w, 0.0f, FLOAT_MAX);
+        return t > 0.0f ? t * (1.0f - 1e-4f) : -1.0f;
+    }
+    return FLOAT_MAX;
+}
+
+// Next-event estimation at a hit (pbrt-v4 PathIntegrator::SampleLd): one light picked by power
+// (light_selection.glsl), a direction towards it, the shadow ray, and the MIS weight against the
+// BSDF sample that could have found the same light (Veach 1997, §9.2). True when the light is seen;
+// Ld is then the path's contribution through it, beta included.
+bool sampleLd(Hit hit, ShadingPoint sp, SkyParams sky, vec3 beta, int bounce, inout Rng rng, inout uint rays,
+              out vec3 Ld) {
+    Ld = vec3(0.0f);
+    float selectPmf;
+    int k = selectLight(rng, selectPmf);
+    LightSample ls = sampleLight(k, hit.position, rngNext2(rng), sky);
+    float lightPdf = ls.pdf * selectPmf;
+    float misPdf = ls.misPdf * selectPmf;
+    vec3 wiL = frameToLocal(sp.frame, ls.wi);
+    vec3 f = lightPdf > 0.0f ? bsdfEval(sp.bsdf, sp.wo, wiL) : vec3(0.0f);
+    if (!sidesAgree(sp, wiL, ls.wi, hit.normal)) f = vec3(0.0f);
+    if (!(max(f.r, max(f.g, f.b)) > 0.0f)) {
+        RAYLAB_RECORD(recordLight(bounce, k, ls.wi, -1.0f, ls.L, f, abs(wiL.z), lightPdf, misPdf, 0.0f, 2));
+        return false;
+    }
+    Ray shadow = spawnRay(hit, ls.wi);
+    float tMax = shadowRayEnd(k, shadow, ls.point);
+    ++rays;
+    bool visible = tMax > 0.0f && !occluded(shadow, tMax);
+    if (visible) {
+        float w = params.mis ? powerHeuristic(misPdf, bsdfPdf(sp.bsdf, sp.wo, wiL)) : 1.0f;
+        Ld = beta * f * ls.L * (w / lightPdf);
+    }
+    RAYLAB_RECORD(recordLight(bounce, k, ls.wi, k >= 0 ? tMax : -1.0f, ls.L, f, abs(wiL.z), lightPdf, misPdf,
+                              bsdfPdf(sp.bsdf, sp.wo, wiL), visible ? 1 : 0));
+    return visible;
+}
+
+// A direction from the BSDF. Pure Lambert (f0 0, no glass) takes the short path of the foundation:
+// the same random numbers and f·cos/pdf = ρ exactly, without the general code's cost.
+BsdfSample sampleScattering(ShadingPoint sp, inout Rng rng) {
+    vec2 u = rngNext2(rng);
+#if RAYLAB_GENERAL_BSDF
+    if (bsdfNeedsLobeChoice(sp.bsdf)) return bsdfSample(sp.bsdf, sp.wo, vec3(u.x, u.y, rngNextFloat(rng)));
+#endif
+    vec3 wi = sampleCosineHemisphere(u);
+    return BsdfSample(sp.wo.z < 0.0f ? vec3(wi.x, wi.y, -wi.z) : wi, sp.bsdf.albedo, pdfCosineHemisphere(wi.z),
+                      LOBE_DIFFUSE, false);
+}
+
+// Russian roulette (pbrt-v3 §13.7, as its PathIntegrator::Li applies it): the path survives with
+// q = its largest throughput component, at most 0.95, and is divided by q so the estimate stays
+// unbiased. pbrt-v4 takes max(beta·etaScale) without the cap.
+bool survivesRoulette(int bounce, inout vec3 beta, bool delta, inout Rng rng) {
+    float q = min(max(beta.r, max(beta.g, beta.b)), 0.95f);
+    bool survived = !(rngNextFloat(rng) >= q);   // a NaN q survives (the NaN guard counts it)
+    RAYLAB_RECORD(recordRoulette(bounce, q, survived));
+    if (!survived) return false;
+    beta /= q;
+    RAYLAB_RECORD(recordThroughput(bounce, beta, delta));
+    return true;
+}
+
 // Radiance along one camera path (Kajiya 1986). beta is the path throughput: the product of
-// f·|cosθ|/pdf over the bounces so far. With uNee, each bounce also adds a light sample; emission
-// that a BSDF sample reaches is then weighted so nothing is counted twice (Veach 1997, §9.2).
+// f·|cosθ|/pdf over the bounces so far. With params.nee, each bounce also adds a light sample;
+// emission that a BSDF sample reaches is then weighted so nothing is counted twice.
 vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
-    SkyParams sky = SkyParams(uSkyType, uSkyColor, uSkyTop, uSkyBottom);
+    SkyParams sky = SkyParams(params.skyType, params.skyColor, params.skyTop, params.skyBottom);
     int lightCount = neeLightCount();
     vec3 radiance = vec3(0.0f);
     vec3 beta = vec3(1.0f);
-    float prevPdf = 0.0f;      // BSDF density of the direction just followed
-    bool prevDelta = true;     // camera rays and delta bounces: light sampling could not help
-    vec3 prevPos = vec3(0.0f);
+    PrevBounce prev = PrevBounce(0.0f, true, vec3(0.0f));
 #if RAYLAB_FEATURE_TEXTURES
     // Ray cone (Ray Tracing Gems ch. 20, §20.3.4): the width grows by the spread angle per unit
     // distance; the spread starts at the pixel's and widens at rough bounces (ray_cone.glsl).
     float coneWidth = 0.0f;
-    float coneSpread = uCamPixelSpread;
+    float coneSpread = params.camPixelSpread;
 #endif
     for (int bounce = 0;; ++bounce) {
         Hit hit;
@@ -136,13 +323,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
             break;   // render.stage primary: black sky, as the albedo view
 #endif
             vec3 dir = normalize(ray.dir);
-            float w = 1.0f;
-#if RAYLAB_NEE
-            if (uSkyIsLight && lightCount > 0 && !prevDelta) {
-                float lightPdf = skyLightPdf(dir) * skySelectionPmf();
-                w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
-            }
-#endif
+            float w = skyHitWeight(dir, prev, lightCount);
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * skyLookup(sky, dir) * w);
             RAYLAB_RECORD(recordEmission(bounce, skyLookup(sky, dir), w));
             break;
@@ -160,165 +341,40 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         Le *= materialEmissionScale(hit, ray.dir, coneWidth);
 #endif
         if (max(Le.r, max(Le.g, Le.b)) > 0.0f) {
-            float w = 1.0f;
-#if RAYLAB_NEE
-            if (lightCount > 0 && !prevDelta) {
-#if RAYLAB_EMISSIVE_TRIANGLES
-                float lightPdf = instances[hit.instance].info.x == INSTANCE_SPHERE
-                                     ? emitterLightPdf(prevPos, hit.position)
-                                     : triangleEmitterLightPdf(ray.dir, hit);
-#else
-                float lightPdf = emitterLightPdf(prevPos, hit.position);   // only spheres are lights
-#endif
-                w = uMis ? powerHeuristic(prevPdf, lightPdf) : (lightPdf > 0.0f ? 0.0f : 1.0f);
-            }
-#endif
+            float w = surfaceHitWeight(ray, hit, prev, lightCount);
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
             RAYLAB_RECORD(recordEmission(bounce, Le, w));
         }
-        if (bounce >= uMaxBounces || RAYLAB_STAGE == RAYLAB_STAGE_EMISSION) break;
+        if (bounce >= params.maxBounces || RAYLAB_STAGE == RAYLAB_STAGE_EMISSION) break;
+
         BsdfParams bsdf = materialBsdf(m);
 #if RAYLAB_FEATURE_TEXTURES
         applyMaterialTextures(hit, ray.dir, coneWidth, bsdf);
 #endif
-        // The BSDF works in the shading frame (smooth or normal-mapped normals), turned to the
-        // geometric normal's side; it tells inside from outside by the sign of wo.z.
-        vec3 ns = dot(hit.shadingNormal, hit.normal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
-        Frame frame = frameFromNormal(ns);
-        vec3 wo = frameToLocal(frame, -normalize(ray.dir));
-        // Which side of the true (geometric) surface the path arrived on.
-        float arrivalSide = dot(-ray.dir, hit.normal);
-        RAYLAB_RECORD(recordShadingFrame(bounce, ns));
-
+        ShadingPoint sp = shadingPoint(bsdf, hit, ray.dir);
+        RAYLAB_RECORD(recordShadingFrame(bounce, sp.frame.n));
 #if RAYLAB_NEE
-        // Next-event estimation: one light, picked by power (the sky: see light_selection.glsl),
-        // sampled by solid angle (spheres, sky) or by area (triangles).
-        if (lightCount > 0) {
-            float selectPmf;
-            int k = selectLight(rng, selectPmf);
-            vec2 ul = rngNext2(rng);
-            vec3 wiW = vec3(0.0f);
-            vec3 Ll = vec3(0.0f);
-            float lightPdf = 0.0f;   // density the direction was drawn with (divides)
-            float misPdf = 0.0f;     // density the BSDF side sees for it (weights only)
-            float tMax = FLOAT_MAX;
-            vec3 lightPoint = vec3(0.0f);   // triangle lights: the point sampled
-            if (k >= uLightCount) {
-#if RAYLAB_EMISSIVE_TRIANGLES
-                GpuTriangleLight tl = triangleLights[k - uLightCount];
-                vec3 p0 = tl.p0Area.xyz;
-                lightPoint = sampleTrianglePoint(p0, tl.p1.xyz, tl.p2.xyz, ul);
-                vec3 d = lightPoint - hit.position;
-                float dist2 = dot(d, d);
-                if (dist2 > 0.0f) {
-                    wiW = d / sqrt(dist2);
-                    lightPdf = triangleLightPdf(dist2, dot(normalize(cross(tl.p1.xyz - p0, tl.p2.xyz - p0)), wiW),
-                                                tl.p0Area.w);
-                    Ll = tl.radiance.rgb;
-                }
-                misPdf = lightPdf;
+        vec3 Ld;
+        if (lightCount > 0 && sampleLd(hit, sp, sky, beta, bounce, rng, rays, Ld))
+            RAYLAB_ADD_RADIANCE(radiance, bounce + 1, Ld);
 #endif
-            } else if (k >= 0) {
-                vec4 s = lights[k].centerRadius;
-                lightPdf = sphereConePdf(hit.position, s.xyz, s.w);
-                if (lightPdf > 0.0f) {
-                    wiW = sphereConeSample(hit.position, s.xyz, s.w, ul);
-                    Ll = lights[k].radiance.rgb;
-                }
-                misPdf = lightPdf;
-            } else if (skyByMap()) {
-                vec2 uv;
-                wiW = sampleEnvironment(ul, lightPdf, uv);
-                misPdf = skyLightPdf(wiW);   // equal but at texel edges, where it re-maps
-                Ll = skyLookup(sky, wiW);
-            } else {
-                wiW = sampleUniformSphere(ul);
-                lightPdf = UNIFORM_SPHERE_PDF;
-                misPdf = lightPdf;
-                Ll = skyLookup(sky, wiW);
-            }
-            lightPdf *= selectPmf;
-            misPdf *= selectPmf;
-            vec3 wiL = frameToLocal(frame, wiW);
-            vec3 f = lightPdf > 0.0f ? bsdfEval(bsdf, wo, wiL) : vec3(0.0f);
-            // A direction the shading frame calls reflected but the geometry calls transmitted
-            // (or the reverse) would leak light through the surface: drop it.
-            if ((wiL.z * wo.z > 0.0f) != (dot(wiW, hit.normal) * arrivalSide > 0.0f)) f = vec3(0.0f);
-            if (max(f.r, max(f.g, f.b)) > 0.0f) {
-                vec3 side = dot(wiW, hit.normal) > 0.0f ? hit.normal : -hit.normal;
-                Ray shadow = Ray(offsetRayOrigin(hit.position, side, hit.error), wiW);
-                if (k >= uLightCount) {
-                    // Stop just short of the light's own triangle.
-                    tMax = dot(lightPoint - shadow.origin, wiW) * (1.0f - 1e-4f);
-                    if (!(tMax > 0.0f)) tMax = -1.0f;
-                } else if (k >= 0) {
-                    // Stop just short of the light's own surface.
-                    vec4 s = lights[k].centerRadius;
-                    float t = intersectSphere(shadow, s.xyz, s.w, 0.0f, FLOAT_MAX);
-                    tMax = t > 0.0f ? t * (1.0f - 1e-4f) : -1.0f;
-                }
-                ++rays;
-                bool visible = tMax > 0.0f && !occluded(shadow, tMax);
-                if (visible) {
-                    float w = uMis ? powerHeuristic(misPdf, bsdfPdf(bsdf, wo, wiL)) : 1.0f;
-                    RAYLAB_ADD_RADIANCE(radiance, bounce + 1, beta * f * Ll * (w / lightPdf));
-                }
-                RAYLAB_RECORD(recordLight(bounce, k, wiW, k >= 0 ? tMax : -1.0f, Ll, f, abs(wiL.z), lightPdf,
-                                          misPdf, bsdfPdf(bsdf, wo, wiL), visible ? 1 : 0));
-            } else {
-                RAYLAB_RECORD(recordLight(bounce, k, wiW, -1.0f, Ll, f, abs(wiL.z), lightPdf, misPdf, 0.0f, 2));
-            }
-        }
 
-#endif
-        // BSDF sample. Pure Lambert (f0 0, no glass) takes the short path of the foundation: the
-        // same random numbers and f·cos/pdf = ρ exactly, without the general code's cost.
-        vec2 u = rngNext2(rng);
-        BsdfSample bs;
-#if RAYLAB_GENERAL_BSDF
-        if (!bsdfNeedsLobeChoice(bsdf)) {
-#else
-        {   // every material of the scene is Lambertian
-#endif
-            vec3 wi = sampleCosineHemisphere(u);
-            bs = BsdfSample(wo.z < 0.0f ? vec3(wi.x, wi.y, -wi.z) : wi, bsdf.albedo, pdfCosineHemisphere(wi.z),
-                            LOBE_DIFFUSE, false);
-        }
-#if RAYLAB_GENERAL_BSDF
-        else {
-            bs = bsdfSample(bsdf, wo, vec3(u.x, u.y, rngNextFloat(rng)));
-        }
-#endif
-        vec3 dir = frameToWorld(frame, bs.wi);
+        BsdfSample bs = sampleScattering(sp, rng);
+        vec3 dir = frameToWorld(sp.frame, bs.wi);
         // f·|cosθ| as the sampler used it (weight × pdf): a second bsdfEval of a narrow GGX lobe
-        // differs from the sampler's by rounding the peak amplifies (5e-5 at α 0.0025 on llvmpipe),
-        // and the inspector's columns must multiply out to the weight the throughput took.
-        RAYLAB_RECORD(recordBsdfSample(bounce, dir, bs.lobe, bsdfLobeProbability(bsdf, wo, bs.lobe), bs.weight * bs.pdf,
-                                       abs(bs.wi.z), bs.weight, bs.pdf, bs.delta));
-        if (bs.lobe == LOBE_NONE) break;
-        // As for light samples: the geometric surface must agree with the lobe's side.
-        if ((bs.wi.z * wo.z > 0.0f) != (dot(dir, hit.normal) * arrivalSide > 0.0f)) break;
+        // differs from the sampler's by rounding the peak amplifies, and the inspector's columns
+        // must multiply out to the weight the throughput took.
+        RAYLAB_RECORD(recordBsdfSample(bounce, dir, bs.lobe, bsdfLobeProbability(sp.bsdf, sp.wo, bs.lobe),
+                                       bs.weight * bs.pdf, abs(bs.wi.z), bs.weight, bs.pdf, bs.delta));
+        if (bs.lobe == LOBE_NONE || !sidesAgree(sp, bs.wi, dir, hit.normal)) break;
         beta *= bs.weight;
 #if RAYLAB_FEATURE_TEXTURES
-        coneSpread += rayConeBounceSpread(bs.lobe, bs.delta, bsdf.alpha);
+        coneSpread += rayConeBounceSpread(bs.lobe, bs.delta, sp.bsdf.alpha);
 #endif
-        prevPdf = bs.pdf;
-        prevDelta = bs.delta;
-        prevPos = hit.position;
+        prev = PrevBounce(bs.pdf, bs.delta, hit.position);
         RAYLAB_RECORD(recordThroughput(bounce, beta, bs.delta));
-
-        // Russian roulette (pbrt-v4 §14.1.4 style): survive with q = max throughput, at most
-        // 0.95, and divide by q so the estimate stays unbiased.
-        if (bounce + 1 >= uRrDepth) {
-            float q = min(max(beta.r, max(beta.g, beta.b)), 0.95f);
-            bool survived = !(rngNextFloat(rng) >= q);   // a NaN q survives (the NaN guard counts it)
-            RAYLAB_RECORD(recordRoulette(bounce, q, survived));
-            if (!survived) break;
-            beta /= q;
-            RAYLAB_RECORD(recordThroughput(bounce, beta, bs.delta));
-        }
-        vec3 side = dot(dir, hit.normal) > 0.0f ? hit.normal : -hit.normal;
-        ray = Ray(offsetRayOrigin(hit.position, side, hit.error), dir);
+        if (bounce + 1 >= params.rrDepth && !survivesRoulette(bounce, beta, bs.delta, rng)) break;
+        ray = spawnRay(hit, dir);
     }
     return radiance;
 }

@@ -17,17 +17,17 @@
 
 int triangleLightCount() {
 #if RAYLAB_EMISSIVE_TRIANGLES
-    return uTriangleLightCount;
+    return params.triangleLightCount;
 #else
     return 0;
 #endif
 }
 
-int boundedLightCount() { return uLightCount + triangleLightCount(); }
+int boundedLightCount() { return params.lightCount + triangleLightCount(); }
 
 #if RAYLAB_LIGHT_POWER_SELECTION
 float skySelectionPmf() {
-    if (!uSkyIsLight) return 0.0f;
+    if (!params.skyIsLight) return 0.0f;
     return boundedLightCount() > 0 ? 0.5f : 1.0f;
 }
 
@@ -53,8 +53,8 @@ int selectLight(inout Rng rng, out float pmf) {
     return keep ? i : int(entry.y);
 }
 #else
-int uniformLightCount() { return boundedLightCount() + (uSkyIsLight ? 1 : 0); }
-float skySelectionPmf() { return uSkyIsLight ? 1.0f / float(uniformLightCount()) : 0.0f; }
+int uniformLightCount() { return boundedLightCount() + (params.skyIsLight ? 1 : 0); }
+float skySelectionPmf() { return params.skyIsLight ? 1.0f / float(uniformLightCount()) : 0.0f; }
 float boundedLightPmf(int i) { return 1.0f / float(uniformLightCount()); }
 
 int selectLight(inout Rng rng, out float pmf) {

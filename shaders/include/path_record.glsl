@@ -53,7 +53,7 @@ void recordPathEnd(ivec2 pixel, int path, vec3 L) {
     if (!gRecording) return;
     int base = path * PR_PATH_VEC4S;
     inspectPaths[base] = vec4(L, float(gRecordCount));
-    inspectPaths[base + 1] = vec4(float(uSampleStart + uint(path)), float(pixel.x), float(pixel.y),
+    inspectPaths[base + 1] = vec4(float(params.sampleStart + uint(path)), float(pixel.x), float(pixel.y),
                                   gRecordTruncated ? 1.0f : 0.0f);
 }
 
@@ -97,7 +97,7 @@ void recordShadingFrame(int bounce, vec3 ns) {
 // integrator's sum): f·|cosθ| · Le · w / pdf, w the power heuristic when MIS is on.
 void recordLight(int bounce, int light, vec3 dir, float dist, vec3 Le, vec3 fCos, float cosTheta, float lightPdf,
                  float misPdf, float bsdfPdfValue, int status) {
-    float w = status == 2 ? 0.0f : (uMis ? powerHeuristic(misPdf, bsdfPdfValue) : 1.0f);
+    float w = status == 2 ? 0.0f : (params.mis ? powerHeuristic(misPdf, bsdfPdfValue) : 1.0f);
     vec3 contribution = status == 1 ? fCos * Le * (w / lightPdf) : vec3(0.0f);
     recordPut(bounce, PR_LIGHT, vec4(contribution, float(status)));
     recordPut(bounce, PR_LIGHT_DIR, vec4(dir, dist));

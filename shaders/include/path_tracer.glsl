@@ -1,5 +1,5 @@
 // One progressive pass of the path tracer for one pixel, shared by both entry points
-// (trace.frag, trace.comp): uRpp new samples join the pixel's running mean in uAccum. GLSL only.
+// (trace.frag, trace.comp): params.rpp new samples join the pixel's running mean in uAccum. GLSL only.
 #ifndef RAYLAB_PATH_TRACER_GLSL
 #define RAYLAB_PATH_TRACER_GLSL
 #include "compat.glsl"
@@ -13,20 +13,20 @@
 #include "integrator.glsl"
 
 void tracePixelPass(ivec2 pixel) {
-    CameraBasis cam = CameraBasis(uCamOrigin, uCamRight, uCamUp, uCamForward, uCamTanHalfFovY,
-                                  uCamAspect);
+    CameraBasis cam = CameraBasis(params.camOrigin, params.camRight, params.camUp, params.camForward,
+                                  params.camTanHalfFovY, params.camAspect);
     vec3 sum = vec3(0.0f);
     uint rays = 0u;
     uint nonFinite = 0u;
 #if RAYLAB_DEBUG_MOMENTS
     DebugMoments moments = debugMomentsBegin();
 #endif
-    for (int s = 0; s < uRpp; ++s) {
-        Rng rng = rngCreate(uvec2(pixel), uSampleStart + uint(s), uSeed);
+    for (int s = 0; s < params.rpp; ++s) {
+        Rng rng = rngCreate(uvec2(pixel), params.sampleStart + uint(s), params.seed);
         // A fresh jittered position inside the pixel for every sample (box filter).
-        vec2 ndc = (vec2(pixel) + rngNext2(rng)) / vec2(uImageSize) * 2.0f - 1.0f;
+        vec2 ndc = (vec2(pixel) + rngNext2(rng)) / vec2(params.imageSize) * 2.0f - 1.0f;
 #if RAYLAB_FEATURE_DOF
-        Ray cameraPath = cameraRayThinLens(cam, ndc, rngNext2(rng), uCamLensRadius, uCamFocusDistance);
+        Ray cameraPath = cameraRayThinLens(cam, ndc, rngNext2(rng), params.camLensRadius, params.camFocusDistance);
 #else
         Ray cameraPath = cameraRay(cam, ndc);
 #endif
@@ -39,7 +39,7 @@ void tracePixelPass(ivec2 pixel) {
         RAYLAB_RECORD_PATH_END(pixel, s, L);
 #if RAYLAB_INJECT_NONFINITE
         // Tests only: every RAYLAB_INJECT_NONFINITE-th sample of a row becomes NaN or +Inf.
-        uint k = uSampleStart + uint(s) + uint(pixel.x);
+        uint k = params.sampleStart + uint(s) + uint(pixel.x);
         if (k % uint(RAYLAB_INJECT_NONFINITE) == 0u)
             L = vec3(uintBitsToFloat((k & 1u) == 0u ? 0x7fc00000u : 0x7f800000u));
 #endif
@@ -53,10 +53,10 @@ void tracePixelPass(ivec2 pixel) {
         sum += L;
     }
     // Running mean over all samples: mean_n = mean_m + (sum − k·mean_m) / n, with n = m + k.
-    vec3 mean = sum / float(uRpp);
-    if (uSampleStart > 0u) {
+    vec3 mean = sum / float(params.rpp);
+    if (params.sampleStart > 0u) {
         vec3 old = imageLoad(uAccum, pixel).rgb;
-        mean = old + (sum - float(uRpp) * old) / float(uSampleStart + uint(uRpp));
+        mean = old + (sum - float(params.rpp) * old) / float(params.sampleStart + uint(params.rpp));
     }
     imageStore(uAccum, pixel, vec4(mean, 1.0f));
 #if RAYLAB_DEBUG_MOMENTS

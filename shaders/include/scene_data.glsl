@@ -36,33 +36,7 @@ layout(std430, binding = BINDING_TRIANGLE_LIGHT_INDEX) readonly buffer TriangleL
 layout(std430, binding = BINDING_LIGHT_ALIAS) readonly buffer LightAliasBuffer { vec4 lightAlias[]; };
 #endif
 
-uniform ivec2 uImageSize;
-uniform uint uSampleStart;   // samples per pixel already in uAccum
-uniform int uRpp;            // samples per pixel in this pass
-uniform uint uSeed;
-uniform int uMaxBounces;
-uniform int uRrDepth;
-uniform int uSphereCount;
-uniform vec3 uCamOrigin;
-uniform vec3 uCamRight;
-uniform vec3 uCamUp;
-uniform vec3 uCamForward;
-uniform float uCamTanHalfFovY;
-uniform float uCamAspect;
-uniform float uCamLensRadius;      // thin lens (RAYLAB_FEATURE_DOF): lens radius, world units
-uniform float uCamFocusDistance;   // distance of the sharp plane along the view axis
-uniform float uCamPixelSpread;     // angle one pixel subtends (ray-cone texture LOD), radians
-uniform int uSkyType;
-uniform vec3 uSkyColor;
-uniform vec3 uSkyTop;
-uniform vec3 uSkyBottom;
-uniform int uLightCount;     // emissive spheres in lights[]
-uniform int uTriangleLightCount;   // emissive triangles in triangleLights[]
-uniform bool uNee;           // next-event estimation on
-uniform bool uMis;           // with uNee: power-heuristic MIS of light and BSDF samples
-uniform float uSkyMapScale;  // sky.strength for the map
-uniform float uSkyRotation;  // radians about +y
-uniform float uEnvMeanWeight; // mean texel weight of the sky map's distribution; 0 = none
-uniform bool uSkyIsLight;    // with uNee: the sky is sampled too (its radiance is not zero)
+// Every other parameter of the tracer, one uniform block.
+#include "tracer_params.glsl"
 
 #endif

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <vector>
 
@@ -45,6 +46,8 @@ PathTracer::PathTracer(TracerOptions options) : options_(options) {
     const GLuint zeros[2] = {0, 0};
     glNamedBufferStorage(counterBuffer_, sizeof(zeros), zeros,
                          GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+    glCreateBuffers(1, &paramsBuffer_);
+    glNamedBufferStorage(paramsBuffer_, sizeof(params_), &params_, GL_DYNAMIC_STORAGE_BIT);
 }
 
 PathTracer::~PathTracer() {
@@ -52,6 +55,7 @@ PathTracer::~PathTracer() {
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &counterBuffer_);
+    glDeleteBuffers(1, &paramsBuffer_);
     if (traversalBuffer_) glDeleteBuffers(1, &traversalBuffer_);
 }
 
@@ -97,40 +101,44 @@ void PathTracer::updateSettings(const Scene& scene) {
     const Camera& c = scene.camera;
     const auto cam = glsl::cameraBasis(c.position, c.lookAt, c.up, c.fovY,
                                        float(r.width) / float(r.height));
-    const ShaderProgram& p = *program_;
-    p.set("uImageSize", glm::ivec2(r.width, r.height));
-    p.set("uSeed", unsigned(r.seed));
-    p.set("uMaxBounces", r.maxBounces);
-    p.set("uRrDepth", r.rrDepth);
-    p.set("uSphereCount", gpuScene_.sphereCount());
-    p.set("uCamOrigin", cam.origin);
-    p.set("uCamRight", cam.right);
-    p.set("uCamUp", cam.up);
-    p.set("uCamForward", cam.forward);
-    p.set("uCamTanHalfFovY", cam.tanHalfFovY);
-    p.set("uCamAspect", cam.aspect);
-    p.set("uCamLensRadius", c.aperture);
-    // Ray-cone spread of one pixel (Ray Tracing Gems ch. 20, eq. 30).
-    p.set("uCamPixelSpread", std::atan(2.0f * cam.tanHalfFovY / float(r.height)));
-    // focus_distance 0 means "at look_at": its distance along the view axis.
-    p.set("uCamFocusDistance", c.focusDistance > 0.0f ? c.focusDistance
-                                                      : glm::dot(c.lookAt - c.position, cam.forward));
     const Sky& sky = scene.sky;
-    p.set("uSkyType", skyType(sky.type));
-    p.set("uSkyColor", sky.color * sky.strength);
-    p.set("uSkyTop", sky.top * sky.strength);
-    p.set("uSkyBottom", sky.bottom * sky.strength);
-    p.set("uSkyMapScale", sky.strength);
-    p.set("uSkyRotation", glm::radians(sky.rotation));
-    p.set("uEnvMeanWeight", gpuScene_.skyMapMeanWeight());
     glm::vec3 skyMax = sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom);
     if (sky.type == Sky::Type::Map) skyMax = glm::vec3(gpuScene_.skyMapMax());
     const bool skyIsLight = sky.strength * std::max({skyMax.r, skyMax.g, skyMax.b}) > 0.0f;
-    p.set("uLightCount", gpuScene_.lightCount());
-    p.set("uTriangleLightCount", gpuScene_.triangleLightCount());
-    p.set("uNee", int(r.nee));
-    p.set("uMis", int(r.mis));
-    p.set("uSkyIsLight", int(r.nee && skyIsLight));
+    params_ = glsl::TracerParams{
+        .sampleStart = 0,   // sampleStart and rpp: set per band by traceBand
+        .rpp = 0,
+        .imageSize = glm::ivec2(r.width, r.height),
+        .seed = r.seed,
+        .maxBounces = r.maxBounces,
+        .rrDepth = r.rrDepth,
+        .sphereCount = gpuScene_.sphereCount(),
+        .camOrigin = cam.origin,
+        .camTanHalfFovY = cam.tanHalfFovY,
+        .camRight = cam.right,
+        .camAspect = cam.aspect,
+        .camUp = cam.up,
+        .camLensRadius = c.aperture,
+        .camForward = cam.forward,
+        // focus_distance 0 means "at look_at": its distance along the view axis.
+        .camFocusDistance = c.focusDistance > 0.0f ? c.focusDistance : glm::dot(c.lookAt - c.position, cam.forward),
+        .skyColor = sky.color * sky.strength,
+        // Ray-cone spread of one pixel (Ray Tracing Gems ch. 20, eq. 30).
+        .camPixelSpread = std::atan(2.0f * cam.tanHalfFovY / float(r.height)),
+        .skyTop = sky.top * sky.strength,
+        .skyType = skyType(sky.type),
+        .skyBottom = sky.bottom * sky.strength,
+        .skyMapScale = sky.strength,
+        .skyRotation = glm::radians(sky.rotation),
+        .envMeanWeight = gpuScene_.skyMapMeanWeight(),
+        .lightCount = gpuScene_.lightCount(),
+        .triangleLightCount = gpuScene_.triangleLightCount(),
+        .nee = r.nee,
+        .mis = r.mis,
+        .skyIsLight = r.nee && skyIsLight,
+        .pad0 = 0,
+    };
+    glNamedBufferSubData(paramsBuffer_, 0, sizeof(params_), &params_);
     reset();
 }
 
@@ -158,13 +166,16 @@ void PathTracer::renderPass(int rpp) {
 
 void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
     if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
-    program_->set("uSampleStart", unsigned(samplesPerPixel_ + std::uint64_t(sampleOffset)));
-    program_->set("uRpp", rpp);
+    params_.sampleStart = unsigned(samplesPerPixel_ + std::uint64_t(sampleOffset));
+    params_.rpp = rpp;
+    glNamedBufferSubData(paramsBuffer_, offsetof(glsl::TracerParams, sampleStart),
+                         sizeof(params_.sampleStart) + sizeof(params_.rpp), &params_.sampleStart);
 
     const GLuint zeros[2] = {0, 0};
     glNamedBufferSubData(counterBuffer_, 0, sizeof(zeros), zeros);
     glBindImageTexture(BINDING_ACCUM_IMAGE, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     gpuScene_.bind();
+    glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_TRACER_PARAMS_UBO, paramsBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_COUNTERS, counterBuffer_);
     if (traversalBuffer_) {
         glNamedBufferSubData(traversalBuffer_, 0, sizeof(zeros), zeros);

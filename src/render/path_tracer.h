@@ -8,13 +8,14 @@
 #include "render/shader_variant.h"
 #include "render/tracer_defines.h"
 #include "scene/scene.h"
+#include "shaders/include/tracer_params.glsl"
 
 #include <cstdint>
 #include <string>
 
 namespace raylab {
 
-// Which entry point runs the tracer. Fragment measured faster on llvmpipe (README, benchmarks).
+// Which entry point runs the tracer; the fragment entry is the faster on llvmpipe (bench/throughput.md).
 enum class TracerEntry { Fragment, Compute };
 
 struct TracerOptions {
@@ -41,8 +42,8 @@ public:
     // the light list, then as updateSettings.
     void updateMaterials(const Scene& scene);
     // Camera, sky values and render settings changed, with the scene's buffers as uploaded:
-    // selects the variant for the scene's features, sets the uniforms, reallocates the image if
-    // its size changed, and restarts accumulation.
+    // selects the variant for the scene's features, uploads the parameter block, reallocates the
+    // image if its size changed, and restarts accumulation.
     void updateSettings(const Scene& scene);
     // Drops the accumulated samples; the next pass starts a new mean.
     void reset();
@@ -92,6 +93,8 @@ private:
     unsigned framebuffer_ = 0;
     unsigned vertexArray_ = 0;
     unsigned counterBuffer_ = 0;
+    glsl::TracerParams params_{};   // as uploaded to paramsBuffer_
+    unsigned paramsBuffer_ = 0;     // uniform buffer at BINDING_TRACER_PARAMS_UBO
     int width_ = 0;
     int height_ = 0;
     int defaultRpp_ = 1;
@@ -99,7 +102,7 @@ private:
     std::uint64_t passes_ = 0;
     std::uint64_t nonFinite_ = 0;
     std::uint64_t rays_ = 0;
-    unsigned traversalBuffer_ = 0;   // binding 13, only when counting traversal
+    unsigned traversalBuffer_ = 0;   // only when counting traversal
     std::uint64_t boxTests_ = 0;
     std::uint64_t triangleTests_ = 0;
 };

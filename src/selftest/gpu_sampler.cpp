@@ -7,7 +7,12 @@
 
 namespace raylab {
 
-GpuSampler::GpuSampler() : program_(ShaderProgram::compute("entry/bsdf_samples.comp", featureDefines(allFeatures()))) {}
+GpuSampler::GpuSampler() : program_(ShaderProgram::compute("entry/bsdf_samples.comp", featureDefines(allFeatures()))) {
+    glCreateBuffers(1, &paramsBuffer_);
+    glNamedBufferStorage(paramsBuffer_, sizeof(params_), &params_, GL_DYNAMIC_STORAGE_BIT);
+}
+
+GpuSampler::~GpuSampler() { glDeleteBuffers(1, &paramsBuffer_); }
 
 std::vector<GpuSample> GpuSampler::cosineHemisphere(unsigned count, unsigned seed) const { return run(0, count, seed, {}, {}); }
 
@@ -22,8 +27,8 @@ std::vector<GpuSample> GpuSampler::sphereCone(glm::vec3 center, float radius, un
 }
 
 std::vector<GpuSample> GpuSampler::skyMap(float rotationRadians, float meanWeight, unsigned count, unsigned seed) const {
-    program_.set("uSkyRotation", rotationRadians);
-    program_.set("uEnvMeanWeight", meanWeight);
+    params_.skyRotation = rotationRadians;
+    params_.envMeanWeight = meanWeight;
     return run(3, count, seed, {}, {});
 }
 
@@ -37,9 +42,9 @@ std::vector<GpuSample> GpuSampler::triangleLight(glm::vec3 p0, glm::vec3 p1, glm
 
 std::vector<GpuSample> GpuSampler::lightSelection(int sphereLights, int triangleLights, bool skyIsLight,
                                                   unsigned count, unsigned seed) const {
-    program_.set("uLightCount", sphereLights);
-    program_.set("uTriangleLightCount", triangleLights);
-    program_.set("uSkyIsLight", int(skyIsLight));
+    params_.lightCount = sphereLights;
+    params_.triangleLightCount = triangleLights;
+    params_.skyIsLight = skyIsLight;
     return run(5, count, seed, {}, {});
 }
 
@@ -50,7 +55,9 @@ std::vector<GpuSample> GpuSampler::run(int mode, unsigned count, unsigned seed, 
     glNamedBufferStorage(buffer, GLsizeiptr(count * sizeof(GpuSample)), nullptr, GL_MAP_READ_BIT);
     const ShaderProgram& p = program_;
     p.set("uCount", count);
-    p.set("uSeed", seed);
+    params_.seed = seed;
+    glNamedBufferSubData(paramsBuffer_, 0, sizeof(params_), &params_);
+    glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_TRACER_PARAMS_UBO, paramsBuffer_);
     p.set("uMode", mode);
     p.set("uWo", wo);
     p.set("uAlbedo", m.albedo);

@@ -4,6 +4,7 @@
 // self-test on the user's own driver). Needs a current GL 4.5 context.
 #include "gl/shader_program.h"
 #include "shaders/include/bsdf.glsl"
+#include "shaders/include/tracer_params.glsl"
 
 #include <glm/glm.hpp>
 
@@ -24,25 +25,32 @@ struct GpuSample {
 class GpuSampler {
 public:
     GpuSampler();   // throws ShaderError
+    ~GpuSampler();
+    GpuSampler(const GpuSampler&) = delete;
+    GpuSampler& operator=(const GpuSampler&) = delete;
 
     std::vector<GpuSample> cosineHemisphere(unsigned count, unsigned seed) const;
     std::vector<GpuSample> bsdf(const glsl::BsdfParams& m, glm::vec3 wo, unsigned count, unsigned seed) const;
     // Directions towards a sphere (centre, radius) seen from the origin.
     std::vector<GpuSample> sphereCone(glm::vec3 center, float radius, unsigned count, unsigned seed) const;
     // Directions from the sky map of a scene uploaded and bound by a GpuScene, with the rotation
-    // and mean weight uniforms the tracer would set.
+    // and mean weight the tracer would set.
     std::vector<GpuSample> skyMap(float rotationRadians, float meanWeight, unsigned count, unsigned seed) const;
     // Directions towards a triangle light (world-space vertices) seen from the origin, by area.
     std::vector<GpuSample> triangleLight(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, unsigned count, unsigned seed) const;
     // Lights picked by light_selection.glsl from the alias table of a scene uploaded and bound by a
     // GpuScene: wiPdf.x is the index (−1 the sky), .y its probability. The counts and whether the
-    // sky is a light are the uniforms the tracer would set.
+    // sky is a light are the parameters the tracer would set.
     std::vector<GpuSample> lightSelection(int sphereLights, int triangleLights, bool skyIsLight, unsigned count,
                                           unsigned seed) const;
 
 private:
     std::vector<GpuSample> run(int mode, unsigned count, unsigned seed, const glsl::BsdfParams& m, glm::vec3 wo) const;
     ShaderProgram program_;
+    // The tracer's parameter block, of which the harness fills the fields its modes read; it keeps
+    // them from call to call.
+    mutable glsl::TracerParams params_{};
+    unsigned paramsBuffer_ = 0;
 };
 
 } // namespace raylab
