@@ -46,6 +46,8 @@
     X(10, BOXES, Boxes, "boxes", 1, 0, 1, DEBUG_DISPLAY_HEAT_R, "BVH boxes tested by the camera ray (both levels)") \
     X(11, TRIANGLES, Triangles, "triangles", 1, 0, 1, DEBUG_DISPLAY_HEAT_G, "triangles tested by the camera ray") \
     X(12, UV, Uv, "uv", 1, 0, 0, DEBUG_DISPLAY_RAW, \
-      "(u, v) fractional part as red, green; spheres have uv only in textured scenes")
+      "(u, v) fractional part as red, green; spheres have uv only in textured scenes") \
+    X(14, AO, Ao, "ao", 1, 0, 0, DEBUG_DISPLAY_RAW, \
+      "ambient occlusion: the fraction of cosine-weighted rays from the first hit that escape within one world unit")
 
 #endif

@@ -6,8 +6,10 @@
 #include "bindings.glsl"
 #include "compat.glsl"
 #include "debug_view_table.glsl"
+#include "frame.glsl"
 #include "random.glsl"
 #include "ray.glsl"
+#include "sampling.glsl"
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
 
@@ -43,6 +45,24 @@ vec3 debugIdColor(uint id) {
 layout(std430, binding = BINDING_DEBUG_HEAT_MAX) buffer DebugHeatMaxBuffer { uint debugHeatMax[2]; };
 #endif
 
+// Ambient occlusion: the fraction of cosine-weighted rays from the first hit, on the side the
+// camera sees, that travel DEBUG_AO_DISTANCE without hitting anything.
+const float DEBUG_AO_DISTANCE = 1.0f;   // world units
+const int DEBUG_AO_RAYS = 4;            // per camera sample
+
+float debugAmbientOcclusion(Ray ray, Hit hit, inout Rng rng, inout uint rays) {
+    vec3 n = dot(ray.dir, hit.normal) < 0.0f ? hit.normal : -hit.normal;
+    Frame frame = frameFromNormal(n);
+    vec3 origin = offsetRayOrigin(hit.position, n, hit.error);
+    int open = 0;
+    for (int i = 0; i < DEBUG_AO_RAYS; ++i) {
+        vec3 dir = frameToWorld(frame, sampleCosineHemisphere(rngNext2(rng)));
+        ++rays;
+        if (!occluded(Ray(origin, dir), DEBUG_AO_DISTANCE)) ++open;
+    }
+    return float(open) / float(DEBUG_AO_RAYS);
+}
+
 // One sample of the selected view for a camera ray. Depth is the distance along the ray (0 for a
 // miss); the display shader maps it to grey. The heat maps count the tests of this ray only (the
 // primary ray), not of the path's later bounces or shadow rays.
@@ -75,6 +95,7 @@ vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
     if (uDebugView == DEBUG_ALBEDO) return materials[hit.material].albedo.rgb;
     if (uDebugView == DEBUG_DEPTH) return vec3(hit.t);
     if (uDebugView == DEBUG_OBJECT_ID) return debugIdColor(instanceObjectId(instances[hit.instance]));
+    if (uDebugView == DEBUG_AO) return vec3(debugAmbientOcclusion(ray, hit, rng, rays));
     return debugIdColor(hit.material);
 }
 
