@@ -1,40 +1,27 @@
-// Debug views of the viewer. RAYLAB_DEBUG_VIEWS: the view selected by uDebugView (normals, albedo,
-// depth, material id, object id, uv, box and triangle tests of the camera ray) is traced in place of the
-// beauty path. RAYLAB_DEBUG_MOMENTS: the beauty path
-// also keeps per-pixel moments (mean luminance², non-finite count) for the noise and NaN/Inf views.
-// The viewer compiles a tracer variant per need; the plain beauty variant and raylab-render define
-// neither: then this file adds nothing. (Always included: the include expander does not see #if.) Binding points 16-19 belong to the viewer. GLSL only.
+// Debug views. RAYLAB_DEBUG_VIEWS: the view selected by uDebugView (debug_view_table.glsl) is
+// traced in place of the beauty path; RAYLAB_DEBUG_MOMENTS: the beauty path also keeps per-pixel
+// moments for the noise and NaN/Inf views. Without either this file adds only the view ids. GLSL only.
 #ifndef RAYLAB_DEBUG_VIEWS_GLSL
 #define RAYLAB_DEBUG_VIEWS_GLSL
+#include "bindings.glsl"
 #include "compat.glsl"
+#include "debug_view_table.glsl"
+#include "frame.glsl"
 #include "random.glsl"
 #include "ray.glsl"
+#include "sampling.glsl"
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
 
-// Must match ui/app/debug_view.h. Views >= DEBUG_FIRST_DISPLAY_ONLY trace the beauty path and
-// are drawn from the moments by the display shader.
-const int DEBUG_BEAUTY = 0;
-const int DEBUG_NORMALS = 1;
-const int DEBUG_ALBEDO = 2;
-const int DEBUG_DEPTH = 3;
-const int DEBUG_MATERIAL_ID = 4;
-const int DEBUG_FIRST_DISPLAY_ONLY = 5;   // 5 NaN/Inf, 6 noise
-const int DEBUG_BOUNCE_K = 7;             // only light that reached the eye after uDebugBounce bounces
-const int DEBUG_DIRECT = 8;               // emitters and sky seen directly or after one bounce
-const int DEBUG_INDIRECT = 9;             // light after two or more bounces
-// 10, 11: box and triangle tests of the camera ray; both store (boxes, triangles, 0) and need
-// RAYLAB_COUNT_TRAVERSAL (else 0); the display shader picks the channel. 12: fract(uv), 0.
-const int DEBUG_BOXES = 10;
-const int DEBUG_TRIANGLES = 11;
-const int DEBUG_UV = 12;
-const int DEBUG_OBJECT_ID = 13;           // a colour per object: spheres, then meshes (instanceObjectId)
+#define RAYLAB_DEBUG_VIEW_ID(id, NAME, Name, name, traced, moments, counts, display, legend) const int DEBUG_##NAME = id;
+RAYLAB_DEBUG_VIEW_TABLE(RAYLAB_DEBUG_VIEW_ID)
+#undef RAYLAB_DEBUG_VIEW_ID
 
 #if RAYLAB_DEBUG_VIEWS
-uniform int uDebugView;
-uniform int uDebugBounce;
+uniform int uDebugView;     // DEBUG_*, set through render/debug_buffers.h
+uniform int uDebugBounce;   // the k of DEBUG_BOUNCE_K
 
-// The integrator's contributions, filtered by bounce for views 7-9 (bounce 0: the camera ray).
+// The integrator's contributions, filtered by bounce for the bounce views (bounce 0: the camera ray).
 bool debugKeepBounce(int bounce) {
     if (uDebugView == DEBUG_BOUNCE_K) return bounce == uDebugBounce;
     if (uDebugView == DEBUG_DIRECT) return bounce <= 1;
@@ -53,18 +40,37 @@ vec3 debugIdColor(uint id) {
 }
 
 #if RAYLAB_COUNT_TRAVERSAL
-// Binding 17: the largest box (x) and triangle (y) count of one camera ray since the host last
-// cleared it: the heat maps' automatic scale.
+// The largest box (x) and triangle (y) count of one camera ray since the host last cleared it:
+// the heat maps' automatic scale.
 layout(std430, binding = BINDING_DEBUG_HEAT_MAX) buffer DebugHeatMaxBuffer { uint debugHeatMax[2]; };
 #endif
+
+// Ambient occlusion: the fraction of cosine-weighted rays from the first hit, on the side the
+// camera sees, that travel DEBUG_AO_DISTANCE without hitting anything.
+const float DEBUG_AO_DISTANCE = 1.0f;   // world units
+const int DEBUG_AO_RAYS = 4;            // per camera sample
+
+float debugAmbientOcclusion(Ray ray, Hit hit, inout Rng rng, inout uint rays) {
+    vec3 n = dot(ray.dir, hit.normal) < 0.0f ? hit.normal : -hit.normal;
+    Frame frame = frameFromNormal(n);
+    vec3 origin = offsetRayOrigin(hit.position, n, hit.error);
+    int open = 0;
+    for (int i = 0; i < DEBUG_AO_RAYS; ++i) {
+        vec3 dir = frameToWorld(frame, sampleCosineHemisphere(rngNext2(rng)));
+        ++rays;
+        if (!occluded(Ray(origin, dir), DEBUG_AO_DISTANCE)) ++open;
+    }
+    return float(open) / float(DEBUG_AO_RAYS);
+}
 
 // One sample of the selected view for a camera ray. Depth is the distance along the ray (0 for a
 // miss); the display shader maps it to grey. The heat maps count the tests of this ray only (the
 // primary ray), not of the path's later bounces or shadow rays.
 
 vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
-    if (uDebugView == DEBUG_BEAUTY || (uDebugView >= DEBUG_FIRST_DISPLAY_ONLY && uDebugView <= DEBUG_INDIRECT))
-        return traceRadiance(ray, rng, rays);   // views 7-9: filtered by the hook above
+    if (uDebugView == DEBUG_BEAUTY || uDebugView == DEBUG_NON_FINITE || uDebugView == DEBUG_NOISE ||
+        uDebugView == DEBUG_BOUNCE_K || uDebugView == DEBUG_DIRECT || uDebugView == DEBUG_INDIRECT)
+        return traceRadiance(ray, rng, rays);   // the bounce views: filtered by the hook above
     Hit hit;
     ++rays;
 #if RAYLAB_COUNT_TRAVERSAL
@@ -89,6 +95,7 @@ vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
     if (uDebugView == DEBUG_ALBEDO) return materials[hit.material].albedo.rgb;
     if (uDebugView == DEBUG_DEPTH) return vec3(hit.t);
     if (uDebugView == DEBUG_OBJECT_ID) return debugIdColor(instanceObjectId(instances[hit.instance]));
+    if (uDebugView == DEBUG_AO) return vec3(debugAmbientOcclusion(ray, hit, rng, rays));
     return debugIdColor(hit.material);
 }
 

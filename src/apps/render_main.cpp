@@ -6,16 +6,15 @@
 #include "inspect/path_export.h"
 #include "inspect/path_inspector.h"
 #include "io/image_io.h"
-#include "render/debug_view_ids.h"
+#include "render/debug_buffers.h"
+#include "render/debug_views.h"
 #include "render/path_tracer.h"
 #include "render/progressive_render.h"
 #include "render/scene_stats.h"
+#include "render/tracer_variants.h"
 #include "scene/scene_loader.h"
-#include "shaders/include/bindings.glsl"
 
 #include <CLI/CLI.hpp>
-
-#include <glad/gl.h>
 
 #include <atomic>
 #include <chrono>
@@ -145,22 +144,28 @@ int main(int argc, char** argv) {
     app.add_option("--inspect-out", inspectOut, "With --inspect: the output file, .json or .csv (default: inspect.json)")
         ->type_name("FILE");
     std::string debugView;
+    int debugBounce = 1;
     std::vector<std::string> debugViewNames;
-    for (const TracedDebugView& v : kTracedDebugViews) debugViewNames.emplace_back(v.name);
+    for (const DebugViewInfo& v : kDebugViewTable)
+        if (v.traced) debugViewNames.emplace_back(v.name);
+    std::string debugViewList;
+    for (const std::string& name : debugViewNames) debugViewList += (debugViewList.empty() ? "" : ", ") + name;
     app.add_option("--debug-view", debugView,
                    "Trace a debug view of the viewer instead of the image, written as raw per-pixel means "
-                   "(so the output is .exr; default <scene name>-<view>.exr): normals, albedo, depth, uv, "
-                   "material-id, object-id, boxes / triangles (both: R = BVH box tests, G = triangle tests of the "
-                   "pixel's camera ray)")
+                   "(so the output is .exr; default <scene name>-<view>.exr): " + debugViewList +
+                   " (boxes and triangles both write R = BVH box tests, G = triangle tests of the pixel's camera ray)")
         ->check(CLI::IsMember(debugViewNames));
+    app.add_option("--debug-bounce", debugBounce, "With --debug-view bounce: the bounce whose light it shows")
+        ->check(CLI::NonNegativeNumber);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? 0 : 2;
     }
-    const std::optional<TracedDebugView> view = debugView.empty() ? std::nullopt : findTracedDebugView(debugView);
-    if (view && !output.empty() && std::filesystem::path(output).extension() != ".exr") {
+    const bool traceView = !debugView.empty();   // a name the check above accepted
+    const DebugView view = parseDebugView(debugView).value_or(DebugView::Beauty);
+    if (traceView && !output.empty() && std::filesystem::path(output).extension() != ".exr") {
         std::cerr << "raylab-render: error: --debug-view writes raw values: the output must be .exr, not '" << output
                   << "'\n";
         return 2;
@@ -184,7 +189,7 @@ int main(int argc, char** argv) {
             std::cout << std::filesystem::absolute(blenderOut).string() << "\n";
             return 0;
         }
-        const std::string suffix = view ? "-" + std::string(view->name) + ".exr" : ".png";
+        const std::string suffix = traceView ? "-" + std::string(debugViewName(view)) + ".exr" : ".png";
         outPath = output.empty() ? std::filesystem::path(scene.sourcePath.stem().string() + suffix)
                                  : std::filesystem::path(output);
         checkWritable(outPath);
@@ -206,13 +211,9 @@ int main(int argc, char** argv) {
     std::unique_ptr<PathTracer> tracer;
     try {
         context = createHeadlessContext(parseGlBackend(gl));
-        TracerOptions options;
-        options.entry = entry == "compute" ? TracerEntry::Compute : TracerEntry::Fragment;
-        if (view) options.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_VIEWS"), "1");
-        if (view && view->countsTraversal) options.extraDefines.emplace_back(tracerDefine("RAYLAB_COUNT_TRAVERSAL"), "1");
-        tracer = std::make_unique<PathTracer>(options);
-        tracer->setScene(scene);
-        if (view) tracer->program().set("uDebugView", view->id);
+        const TracerVariant variant = traceView ? variantFor(view) : TracerVariant::Beauty;
+        tracer = TracerVariants(entry == "compute" ? TracerEntry::Compute : TracerEntry::Fragment).compile(variant, &scene);
+        if (traceView) setTracedView(tracer->program(), view, debugBounce);
     } catch (const std::exception& e) {
         std::cerr << "raylab-render: error: " << e.what() << "\n";
         return 3;
@@ -223,13 +224,12 @@ int main(int argc, char** argv) {
     if (!quiet)
         std::fprintf(stderr, "%s\n", describeSceneStats(sceneStats(scene, tracer->gpuScene().geometry())).c_str());
 
-    // The heat maps' largest count of one ray (shaders/include/debug_views.glsl).
-    GLuint heatMax = 0;
-    if (view && view->countsTraversal) {
-        const GLuint zeros[2] = {0, 0};
-        glCreateBuffers(1, &heatMax);
-        glNamedBufferStorage(heatMax, sizeof(zeros), zeros, 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_DEBUG_HEAT_MAX, heatMax);
+    // The heat maps' largest count of one ray; no moments (the moment views are the viewer's).
+    std::unique_ptr<DebugBuffers> debugBuffers;
+    if (traceView && heatMapView(view)) {
+        debugBuffers = std::make_unique<DebugBuffers>();
+        debugBuffers->restart(0, 0);
+        debugBuffers->bind();
     }
 
     std::signal(SIGINT, onSigint);
@@ -255,14 +255,13 @@ int main(int argc, char** argv) {
         return 3;
     }
     if (tty && !quiet) std::fputc('\n', stderr);
-    if (heatMax) {
-        GLuint most[2] = {0, 0};
-        glGetNamedBufferSubData(heatMax, 0, sizeof(most), most);
-        glDeleteBuffers(1, &heatMax);
+    if (debugBuffers) {
+        const glm::uvec2 most = debugBuffers->heatMax();
+        debugBuffers.reset();
         const double rays = double(std::max<std::uint64_t>(tracer->pathsTraced(), 1));
         if (!quiet)
             std::fprintf(stderr, "camera rays: %.2f box tests and %.2f triangle tests on average, at most %u and %u\n",
-                         double(tracer->boxTests()) / rays, double(tracer->triangleTests()) / rays, most[0], most[1]);
+                         double(tracer->boxTests()) / rays, double(tracer->triangleTests()) / rays, most.x, most.y);
     }
     if (tracer->nonFiniteSamples() > 0)
         std::cerr << "raylab-render: warning: " << tracer->nonFiniteSamples()

@@ -1,5 +1,6 @@
 #include "inspect/path_inspector.h"
 
+#include "render/debug_buffers.h"
 #include "shaders/include/bindings.glsl"
 #include "shaders/include/path_record_layout.glsl"
 
@@ -76,7 +77,7 @@ BounceRecord decodeBounce(const glm::vec4* s) {
 TracerOptions PathInspector::inspectorOptions() {
     TracerOptions o;
     o.extraDefines.emplace_back(tracerDefine("RAYLAB_INSPECT_PATHS"), "1");
-    o.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_VIEWS"), "1");   // the bounce views' filter (uDebugView)
+    o.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_VIEWS"), "1");   // the bounce views' filter
     return o;
 }
 
@@ -117,8 +118,7 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
     const ShaderProgram& p = tracer_->program();
     p.set("uInspectPixel", glm::ivec2(x, glY));
     p.set("uInspectMaxRecords", maxRecords_);
-    p.set("uDebugView", int(filter_));
-    p.set("uDebugBounce", filterBounce_);
+    setTracedView(p, DebugView(int(filter_)), filterBounce_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_BOUNCES, buffers_[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_PATHS, buffers_[1]);
     tracer_->reset();

@@ -7,6 +7,7 @@
 // bounce views) the values are those of that view, and each term says whether it counts. Needs a
 // current GL 4.5 context.
 #include "inspect/path_record.h"
+#include "render/debug_views.h"
 #include "render/path_tracer.h"
 #include "scene/scene.h"
 
@@ -16,10 +17,14 @@
 
 namespace raylab {
 
-// Which bounces' light the recorded value keeps, as the viewer's bounce views do
-// (shaders/include/debug_views.glsl, whose uDebugView numbers these are): all (the beauty
+// Which bounces' light the recorded value keeps, as the viewer's bounce views do: all (the beauty
 // estimator), bounce k only, direct (bounces 0 and 1), indirect (bounces 2 and more).
-enum class BounceFilter { All = 0, Only = 7, Direct = 8, Indirect = 9 };
+enum class BounceFilter {
+    All = int(DebugView::Beauty),
+    Only = int(DebugView::BounceK),
+    Direct = int(DebugView::Direct),
+    Indirect = int(DebugView::Indirect),
+};
 
 class PathInspector {
 public:
@@ -42,7 +47,7 @@ public:
     const PathTracer& tracer() const { return *tracer_; }
     int maxRecords() const { return maxRecords_; }
     // The defines that turn the recorder on, with the bounce views' filter (for tests that render
-    // with the variant; uDebugView 0 traces the beauty image).
+    // with the variant; it traces the beauty image until told another view).
     static TracerOptions inspectorOptions();
 
 private:

@@ -22,6 +22,13 @@ fs::path temporarySibling(const fs::path& path) {
     return tmp;
 }
 
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+} // namespace
+
 int toneMapOp(ToneMap t) {
     switch (t) {
     case ToneMap::Clamp: return glsl::TONE_MAP_CLAMP;
@@ -30,13 +37,6 @@ int toneMapOp(ToneMap t) {
     }
     return glsl::TONE_MAP_CLAMP;
 }
-
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return s;
-}
-
-} // namespace
 
 ImageFormat imageFormatFor(const fs::path& path) {
     const std::string ext = lower(path.extension().string());

@@ -30,6 +30,10 @@ struct DisplayTransform {
     ToneMap toneMap = ToneMap::AcesFit;
 };
 
+// The shader's TONE_MAP_* (shaders/include/tone_map.glsl) for a scene's tone map: the one mapping
+// the CPU path here and the GPU display pass (render/display_pass.h) share.
+int toneMapOp(ToneMap toneMap);
+
 enum class ImageFormat { Exr, Png };
 
 // From the extension (.exr, .png; case-insensitive); throws ImageIoError naming the path otherwise.

@@ -26,9 +26,9 @@ inline constexpr TracerDefine kTracerDefines[] = {
     {"LOCAL_SIZE_X", "render/path_tracer.cpp", true},
     {"LOCAL_SIZE_Y", "render/path_tracer.cpp", true},
     // Debug variants (TracerOptions::extraDefines).
-    {"RAYLAB_DEBUG_VIEWS", "ui/app/viewer.cpp, apps/render_main.cpp"},
-    {"RAYLAB_DEBUG_MOMENTS", "ui/app/viewer.cpp"},
-    {"RAYLAB_COUNT_TRAVERSAL", "ui/app/viewer.cpp, apps/render_main.cpp"},
+    {"RAYLAB_DEBUG_VIEWS", "render/tracer_variants.cpp"},
+    {"RAYLAB_DEBUG_MOMENTS", "render/tracer_variants.cpp"},
+    {"RAYLAB_COUNT_TRAVERSAL", "render/tracer_variants.cpp"},
     {"RAYLAB_INSPECT_PATHS", "inspect/path_inspector.cpp"},
     {"RAYLAB_INJECT_NONFINITE", "tests only (render/path_tracer_test.cpp)"},
 };

@@ -1,5 +1,6 @@
 #include "script/script.h"
 
+#include "render/debug_views.h"
 #include "script/key_actions.h"
 
 #include <algorithm>
@@ -34,10 +35,18 @@ const std::map<std::string, Arity, std::less<>>& commands() {
     return table;
 }
 
-// The viewer's debug views by name (ui/app/debug_view.h; a viewer test keeps the two in step).
-constexpr std::array<std::string_view, 14> kDebugViews = {"beauty", "normals", "albedo",      "depth",
-                                                          "material-id", "object-id", "nan", "noise", "bounce",
-                                                          "direct", "indirect", "boxes", "triangles", "uv"};
+// The debug views by name, in table order (shaders/include/debug_view_table.glsl).
+constexpr auto kDebugViewNames = [] {
+    std::array<std::string_view, std::size(kDebugViewTable)> names{};
+    for (std::size_t i = 0; i < names.size(); ++i) names[i] = kDebugViewTable[i].name;
+    return names;
+}();
+
+std::string debugViewList() {
+    std::string list;
+    for (std::string_view name : kDebugViewNames) list += (list.empty() ? "" : ", ") + std::string(name);
+    return list;
+}
 
 // The names `key` presses, in the table's order.
 constexpr std::array<std::string_view, kKeyBindings.size()> kKeys = [] {
@@ -64,7 +73,7 @@ bool isNumber(const std::string& s) {
 
 } // namespace
 
-std::span<const std::string_view> scriptDebugViews() { return kDebugViews; }
+std::span<const std::string_view> scriptDebugViews() { return kDebugViewNames; }
 std::span<const std::string_view> scriptKeys() { return kKeys; }
 
 std::string ScriptCommand::text() const {
@@ -111,11 +120,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         if (numeric)
             for (const std::string& a : c.args)
                 if (!isNumber(a)) fail(c.name + ": '" + a + "' is not a number");
-        if (c.name == "debug-view" &&
-            std::find(kDebugViews.begin(), kDebugViews.end(), c.args[0]) == kDebugViews.end())
-            fail("unknown debug view '" + c.args[0] +
-                 "' (beauty, normals, albedo, depth, material-id, nan, noise, bounce, direct, indirect, "
-                 "boxes, triangles, uv)");
+        if (c.name == "debug-view" && !parseDebugView(c.args[0]))
+            fail("unknown debug view '" + c.args[0] + "' (" + debugViewList() + ")");
         const auto onOff = [](const std::string& w) { return w == "on" || w == "off"; };
         if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected" && c.args[0] != "paths" &&
                                      c.args[0] != "bvh" && c.args[0] != "mesh-bvh") ||

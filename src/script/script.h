@@ -13,9 +13,9 @@
 //   focus X Y              click-to-focus at image pixel (X, Y): camera.focus_distance becomes the
 //                          distance of the surface there along the view axis
 //   focus-mode on|off      the Camera panel's "click to focus": the next click focuses, not picks
-//   debug-view NAME        beauty, normals, albedo, depth, material-id, object-id, nan, noise, bounce,
-//                          direct, indirect, boxes, triangles, uv;  debug-bounce K: the bounce
-//                          the "bounce" view shows;  heat-scale auto|N: the count shown red
+//   debug-view NAME        a view of shaders/include/debug_view_table.glsl (beauty, normals, ...);
+//                          debug-bounce K: the bounce the "bounce" view shows;
+//                          heat-scale auto|N: the count shown red
 //   overlay boxes on|off   object bounding boxes;  overlay selected on|off: only the selected one;
 //                          overlay paths on|off: the inspected pixel's paths
 //   overlay bvh on|off     top-level BVH nodes at the chosen depth; overlay mesh-bvh on|off: the

@@ -1,5 +1,6 @@
 // raylab-render as a user runs it: exit codes, messages, outputs, Ctrl-C.
 #include "io/image_io.h"
+#include "render/debug_views.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -161,6 +162,19 @@ TEST(RenderCli, DebugViewsWriteRawPerPixelValues) {
     EXPECT_EQ(png.status, 2);
     EXPECT_NE(png.err.find("must be .exr"), std::string::npos) << png.err;
     EXPECT_EQ(render("scenes/default.json --debug-view heat -o x.exr").status, 2);
+}
+
+TEST(RenderCli, EveryTracedTableViewIsADebugView) {
+    // Parsing stops before rendering with --export-blender: the name is accepted or the exit is 2.
+    const std::string py = (scratchDir() / "v.py").string();
+    for (const raylab::DebugViewInfo& v : raylab::kDebugViewTable) {
+        if (!v.traced) continue;
+        SCOPED_TRACE(std::string(v.name));
+        const CliRun r = render("scenes/default.json -q --debug-view " + std::string(v.name) + " --export-blender '" + py + "'");
+        EXPECT_EQ(r.status, 0) << r.err;
+    }
+    EXPECT_EQ(render("scenes/default.json -q --debug-view noise --export-blender '" + py + "'").status, 2)
+        << "the moment views are drawn by the viewer's display pass, not traced";
 }
 
 TEST(RenderCli, SigintWritesThePartialImageAndExits130) {

@@ -2,7 +2,9 @@
 // variant and must equal what it claims to be, on the same seed: primary = the albedo view,
 // emission = max_bounces 0, lambert = the scene with f0 and transmission zeroed, ggx = the full
 // tracer without textures, textures = the full tracer with a pinhole camera.
+#include "render/debug_buffers.h"
 #include "render/shader_variant.h"
+#include "render/tracer_variants.h"
 #include "render_helpers.h"
 #include "support/gl_test.h"
 
@@ -75,11 +77,9 @@ TEST(RenderStage, IsASceneKeyWithNamedStages) {
 TEST_F(RenderStageTest, PrimaryIsTheAlbedoView) {
     const Scene s = small("materials.json");
     const Image primary = test::render(staged(s, RenderStage::Primary));
-    TracerOptions views;
-    views.extraDefines.emplace_back("RAYLAB_DEBUG_VIEWS", "1");
-    PathTracer tracer(views);
+    PathTracer tracer(variantOptions(TracerVariant::Views, TracerEntry::Fragment));
     tracer.setScene(s);
-    tracer.program().set("uDebugView", 2);   // debug_views.glsl DEBUG_ALBEDO
+    setTracedView(tracer.program(), DebugView::Albedo, 0);
     renderProgressively(tracer, s.render);
     const Image albedo = tracer.readImage();
     EXPECT_LT(worstRelative(primary, albedo), 1e-6);

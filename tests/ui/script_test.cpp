@@ -1,10 +1,11 @@
 // The viewer runs scripts with the core parser (src/script); its debug-view names must be the
 // viewer's own, both ways.
 #include "app/debug_view.h"
-#include "render/debug_view_ids.h"
 #include "script/script.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace raylab::ui {
 namespace {
@@ -18,14 +19,17 @@ TEST(ViewerScript, EveryScriptDebugViewIsAViewerDebugViewAndBack) {
             << debugViewName(v);
 }
 
-TEST(ViewerScript, RaylabRendersTracedDebugViewsAreTheViewersByNameAndId) {
-    for (const TracedDebugView& v : kTracedDebugViews) {
-        const auto mine = parseDebugView(v.name);
-        ASSERT_TRUE(mine.has_value()) << v.name;
-        EXPECT_EQ(int(*mine), v.id) << v.name;
-        EXPECT_TRUE(tracedDebugView(*mine)) << v.name;
-        EXPECT_EQ(heatMapView(*mine), v.countsTraversal) << v.name;
+TEST(ViewerScript, EveryTableViewIsReachableFromTheScriptAndThePanel) {
+    std::size_t listed = 0;
+    for (const DebugViewInfo& v : kDebugViewTable) {
+        SCOPED_TRACE(std::string(v.name));
+        EXPECT_NO_THROW(parseScript("debug-view " + std::string(v.name) + "\n", "s.txt"));
+        // The Debug panel offers a radio button per entry of kDebugViews.
+        EXPECT_NE(std::find(kDebugViews.begin(), kDebugViews.end(), v.view), kDebugViews.end());
+        EXPECT_EQ(parseDebugView(v.name), v.view);
+        ++listed;
     }
+    EXPECT_EQ(listed, kDebugViews.size());
 }
 
 TEST(ViewerScript, DebugBounceTakesANumber) {

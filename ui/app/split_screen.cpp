@@ -3,8 +3,6 @@
 #include "io/image_io.h"
 #include "scene/parameters.h"
 
-#include <glad/gl.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,22 +14,10 @@ double now() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-int toneMapOp(ToneMap t) {   // entry/display.frag's uToneMap (as the viewer sets it)
-    switch (t) {
-    case ToneMap::Clamp: return 0;
-    case ToneMap::Reinhard: return 1;
-    case ToneMap::AcesFit: return 2;
-    }
-    return 2;
-}
-
 } // namespace
 
-SplitScreen::~SplitScreen() {
-    if (displayTextures_[0]) glDeleteTextures(2, displayTextures_);
-    if (framebuffers_[0]) glDeleteFramebuffers(2, framebuffers_);
-    if (vao_) glDeleteVertexArrays(1, &vao_);
-}
+SplitScreen::SplitScreen() = default;
+SplitScreen::~SplitScreen() = default;
 
 void SplitScreen::start(SplitBudget budget) {
     on_ = true;
@@ -138,49 +124,18 @@ void SplitScreen::update(Viewer& viewer, double budgetSeconds) {
 unsigned SplitScreen::displayTexture(int side) {
     side &= 1;
     if (!on_ || !tracers_[side]) return 0;
+    if (!display_[side]) display_[side] = std::make_unique<DisplayPass>();
+    DisplayPass& pass = *display_[side];
     const int w = tracers_[side]->width(), h = tracers_[side]->height();
-    if (!vao_) {
-        display_ = ShaderProgram::graphics("entry/fullscreen.vert", "entry/display.frag");
-        glCreateVertexArrays(1, &vao_);
-        glCreateFramebuffers(2, framebuffers_);
-    }
-    if (!displayTextures_[0] || w != displayW_ || h != displayH_) {
-        if (displayTextures_[0]) glDeleteTextures(2, displayTextures_);
-        glCreateTextures(GL_TEXTURE_2D, 2, displayTextures_);
-        for (int i = 0; i < 2; ++i) {
-            glTextureStorage2D(displayTextures_[i], 1, GL_RGBA8, w, h);
-            glTextureParameteri(displayTextures_[i], GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-            glTextureParameteri(displayTextures_[i], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-            glNamedFramebufferTexture(framebuffers_[i], GL_COLOR_ATTACHMENT0, displayTextures_[i], 0);
-            shownSpp_[i] = ~std::uint64_t(0);
-        }
-        displayW_ = w;
-        displayH_ = h;
-    }
+    if (pass.width() != w || pass.height() != h) shownSpp_[side] = ~std::uint64_t(0);
     const std::uint64_t spp = accounting_.side(side).spp;
-    if (spp == shownSpp_[side]) return displayTextures_[side];
+    if (spp == shownSpp_[side]) return pass.texture();
     const Scene& s = scenes_[side];
-    const ShaderProgram& p = display_;
-    p.set("uImageSize", glm::ivec2(w, h));
-    p.set("uView", 0);
-    p.set("uExposure", s.render.exposure);
-    p.set("uToneMap", toneMapOp(s.render.toneMap));
-    p.set("uSpp", float(spp));
-    p.set("uHasMoments", 0);
-    const unsigned accumulation = tracers_[side]->accumulationTexture();
-    glTextureParameteri(accumulation, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(accumulation, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[side]);
-    glViewport(0, 0, w, h);
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
-    glBindTextureUnit(0, accumulation);
-    glUseProgram(p.id());
-    glBindVertexArray(vao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    DisplayParams p = displayParams(w, h, DebugView::Beauty, DisplayTransform{s.render.exposure, s.render.toneMap});
+    p.spp = float(spp);
+    pass.draw(tracers_[side]->accumulationTexture(), p);
     shownSpp_[side] = spp;
-    return displayTextures_[side];
+    return pass.texture();
 }
 
 Image SplitScreen::image(int side) const {

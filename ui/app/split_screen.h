@@ -8,7 +8,7 @@
 // Needs a current GL 4.5 context once turned on.
 #include "app/split_accounting.h"
 #include "app/viewer.h"
-#include "gl/shader_program.h"
+#include "render/display_pass.h"
 #include "render/path_tracer.h"
 #include "stats/convergence_series.h"
 
@@ -21,7 +21,7 @@ namespace raylab::ui {
 
 class SplitScreen {
 public:
-    SplitScreen() = default;
+    SplitScreen();
     ~SplitScreen();
     SplitScreen(const SplitScreen&) = delete;
     SplitScreen& operator=(const SplitScreen&) = delete;
@@ -67,13 +67,8 @@ private:
     SplitAccounting accounting_;
     stats::ConvergenceSeries series_[2];
     std::string lastError_;
-    // Display pass (entry/display.frag, as the viewer's).
-    ShaderProgram display_;
-    unsigned displayTextures_[2] = {0, 0};
-    unsigned framebuffers_[2] = {0, 0};
-    unsigned vao_ = 0;
+    std::unique_ptr<DisplayPass> display_[2];   // created when first shown (needs GL)
     std::uint64_t shownSpp_[2] = {~std::uint64_t(0), ~std::uint64_t(0)};
-    int displayW_ = 0, displayH_ = 0;
 };
 
 } // namespace raylab::ui

@@ -19,33 +19,11 @@ double now() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-
-int toneMapOp(ToneMap t) {
-    switch (t) {
-    case ToneMap::Clamp: return 0;
-    case ToneMap::Reinhard: return 1;
-    case ToneMap::AcesFit: return 2;
-    }
-    return 2;
-}
-
 } // namespace
 
-Viewer::Viewer(Log& log) : log_(log) {
-    glCreateVertexArrays(1, &displayVao_);
-    glCreateFramebuffers(1, &displayFramebuffer_);
-    glCreateBuffers(1, &heatMaxBuffer_);
-    glNamedBufferStorage(heatMaxBuffer_, 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    reloadShaders();
-}
+Viewer::Viewer(Log& log) : log_(log) { reloadShaders(); }
 
-Viewer::~Viewer() {
-    glDeleteBuffers(1, &momentsBuffer_);
-    glDeleteBuffers(1, &heatMaxBuffer_);
-    glDeleteTextures(1, &displayTexture_);
-    glDeleteFramebuffers(1, &displayFramebuffer_);
-    glDeleteVertexArrays(1, &displayVao_);
-}
+Viewer::~Viewer() = default;
 
 // --- files ---------------------------------------------------------------------------------------
 
@@ -84,32 +62,19 @@ bool Viewer::exportRender(const std::filesystem::path& file) {
     }
 }
 
-Viewer::Variant Viewer::variantFor(DebugView view) {
-    if (heatMapView(view)) return kCounts;
-    if (tracedDebugView(view)) return kViews;
-    if (view == DebugView::NonFinite || view == DebugView::Noise) return kMoments;
-    return kBeauty;
-}
-
-std::unique_ptr<PathTracer> Viewer::compileVariant(Variant v) {
-    TracerOptions o;
-    o.entry = TracerEntry::Fragment;   // bands need the scissor of the fragment entry
-    if (v == kMoments) o.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_MOMENTS"), "1");
-    if (v == kViews || v == kCounts) o.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_VIEWS"), "1");
-    if (v == kCounts) o.extraDefines.emplace_back(tracerDefine("RAYLAB_COUNT_TRAVERSAL"), "1");
-    auto tracer = std::make_unique<PathTracer>(o);
-    // The tracer compiles its program for a scene's features: do it here, so a shader error
-    // surfaces while the previous tracer still runs.
-    if (document_.loaded()) tracer->setScene(tracedScene());
+std::unique_ptr<PathTracer> Viewer::compileVariant(TracerVariant v) {
+    // Given the scene now, so a shader error surfaces while the previous tracer still runs.
+    const Scene scene = document_.loaded() ? tracedScene() : Scene{};
+    auto tracer = variants_.compile(v, document_.loaded() ? &scene : nullptr);
     stats_.shaderCompileSeconds = tracer->compileSeconds();
     return tracer;
 }
 
-bool Viewer::activateVariant(Variant v) {
-    if (!tracers_[v]) {
+bool Viewer::activateVariant(TracerVariant v) {
+    if (!variants_.find(v)) {
         try {
             const double t0 = now();
-            tracers_[v] = compileVariant(v);
+            variants_.keep(v, compileVariant(v));
             // A new variant stalls the UI for its compile: say how long (bench/viewer.md).
             char text[160];
             std::snprintf(text, sizeof text, "compiled the tracer for the %s view in %.2f s (shader %.2f s)",
@@ -121,7 +86,7 @@ bool Viewer::activateVariant(Variant v) {
             return false;
         }
     }
-    tracer_ = tracers_[v].get();
+    tracer_ = variants_.find(v);
     variant_ = v;
     slicer_.forgetCosts();   // another variant, another cost per sample
     if (document_.loaded()) {
@@ -134,11 +99,9 @@ bool Viewer::activateVariant(Variant v) {
 bool Viewer::reloadShaders() {
     try {
         auto tracer = compileVariant(variant_);
-        ShaderProgram display = ShaderProgram::graphics("entry/fullscreen.vert", "entry/display.frag");
-        for (auto& t : tracers_) t.reset();   // the others recompile when next needed
-        tracers_[variant_] = std::move(tracer);
-        tracer_ = tracers_[variant_].get();
-        display_ = std::move(display);
+        display_.reload();
+        variants_.clear();   // the others recompile when next needed
+        tracer_ = &variants_.keep(variant_, std::move(tracer));
     } catch (const std::exception& e) {
         document_.setError(e.what());
         log_.error(document_.lastError() + (tracer_ ? " (the previous shaders stay)" : ""));
@@ -196,23 +159,8 @@ Scene Viewer::traced(Scene s) const {
 void Viewer::restart() {
     const int w = tracer_->width();
     const int h = tracer_->height();
-    const GLsizeiptr bytes = GLsizeiptr(w) * h * 16;
-    GLint64 have = 0;
-    if (momentsBuffer_) glGetNamedBufferParameteri64v(momentsBuffer_, GL_BUFFER_SIZE, &have);
-    if (!momentsBuffer_ || have != bytes) {
-        glDeleteBuffers(1, &momentsBuffer_);
-        glCreateBuffers(1, &momentsBuffer_);
-        glNamedBufferStorage(momentsBuffer_, bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
-    }
-    const float zero = 0.0f;
-    glClearNamedBufferData(momentsBuffer_, GL_R32F, GL_RED, GL_FLOAT, &zero);
-    const GLuint none = 0;
-    glClearNamedBufferData(heatMaxBuffer_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
-    tracer_->program().set("uDebugView", int(view_));
-    tracer_->program().set("uDebugBounce", bounce_);
-    // texelFetch in the display pass needs a complete texture: one level, no mipmap filter.
-    glTextureParameteri(tracer_->accumulationTexture(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(tracer_->accumulationTexture(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    debug_.restart(w, h);
+    setTracedView(tracer_->program(), view_, bounce_);
     slicer_.restart(w, h, scene_.render.rpp);
     stats_.traceSeconds = 0.0;
     passWall_ = 0.0;
@@ -240,13 +188,13 @@ void Viewer::setDebugView(DebugView view) {
     const DebugView previous = view_;
     view_ = view;
     if (!tracer_) return;
-    const Variant v = variantFor(view);
+    const TracerVariant v = variantFor(view);
     if (v != variant_) {
         if (!activateVariant(v)) {
             view_ = previous;   // the variant did not compile: stay with what works
             return;
         }
-    } else if (v == kViews) {
+    } else if (v == TracerVariant::Views) {
         slicer_.forgetCosts();   // a normal costs one ray, a bounce view a path
         resetAccumulation();     // another quantity accumulates
     } else {
@@ -284,8 +232,7 @@ void Viewer::update(double budgetSeconds) {
     stats_.frameTraceMs = 0.0;
     if (!hasScene() || paused_ || converged()) return;
     const double start = now();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 16, momentsBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 17, heatMaxBuffer_);
+    debug_.bind();
     do {
         // The last pass before the target is shortened to land on it exactly (as raylab-render).
         const std::uint64_t left = std::uint64_t(scene_.render.spp) - tracer_->samplesPerPixel();
@@ -312,24 +259,11 @@ void Viewer::update(double budgetSeconds) {
     tracedSinceDisplay_ = true;
 }
 
-void Viewer::ensureDisplayTargets() {
-    const int w = tracer_->width();
-    const int h = tracer_->height();
-    if (displayTexture_ && w == displayWidth_ && h == displayHeight_) return;
-    glDeleteTextures(1, &displayTexture_);
-    glCreateTextures(GL_TEXTURE_2D, 1, &displayTexture_);
-    glTextureStorage2D(displayTexture_, 1, GL_RGBA8, w, h);
-    glTextureParameteri(displayTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(displayTexture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glNamedFramebufferTexture(displayFramebuffer_, GL_COLOR_ATTACHMENT0, displayTexture_, 0);
-    displayWidth_ = w;
-    displayHeight_ = h;
-    displayDirty_ = true;
-}
-
 bool Viewer::needsDisplay() const {
     if (!hasScene()) return false;
-    if (displayDirty_ || !displayTexture_) return true;
+    if (displayDirty_ || !display_.texture() || display_.width() != tracer_->width() ||
+        display_.height() != tracer_->height())
+        return true;
     if (!tracedSinceDisplay_) return false;
     const double t = now();
     const bool firstPassPending = tracer_->samplesPerPixel() == 0 && t - restartTime_ < 0.25;
@@ -340,36 +274,23 @@ bool Viewer::needsDisplay() const {
 unsigned Viewer::displayTexture() {
     stats_.frameDisplayMs = 0.0;
     if (!hasScene()) return 0;
-    ensureDisplayTargets();
     const double t0 = now();
-    if (!needsDisplay()) return displayTexture_;
-    const ShaderProgram& p = display_;
-    p.set("uImageSize", glm::ivec2(displayWidth_, displayHeight_));
-    p.set("uView", int(view_));
-    p.set("uExposure", scene_.render.exposure);
-    p.set("uToneMap", toneMapOp(scene_.render.toneMap));
-    p.set("uDepthScale", depthScale);
-    p.set("uNoiseScale", noiseScale);
-    p.set("uSpp", float(tracer_->samplesPerPixel()));
-    p.set("uHasMoments", variant_ == kMoments && tracer_->samplesPerPixel() > 0 ? 1 : 0);
-    p.set("uHeatScale", heatScaleInUse());
-    glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
-    glViewport(0, 0, displayWidth_, displayHeight_);
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
-    glBindTextureUnit(0, tracer_->accumulationTexture());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 16, momentsBuffer_);
-    glUseProgram(p.id());
-    glBindVertexArray(displayVao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (!needsDisplay()) return display_.texture();
+    DisplayParams p = displayParams(tracer_->width(), tracer_->height(), view_,
+                                    DisplayTransform{scene_.render.exposure, scene_.render.toneMap});
+    p.depthScale = depthScale;
+    p.noiseScale = noiseScale;
+    p.spp = float(tracer_->samplesPerPixel());
+    p.hasMoments = variant_ == TracerVariant::Moments && tracer_->samplesPerPixel() > 0 ? 1 : 0;
+    p.heatScale = heatScaleInUse();
+    display_.draw(tracer_->accumulationTexture(), p, debug_.moments());
     glFinish();   // so the time below is the pass's (llvmpipe runs it at the flush)
     stats_.displayMs = (now() - t0) * 1e3;
     stats_.frameDisplayMs = stats_.displayMs;
     displayDirty_ = false;
     tracedSinceDisplay_ = false;
     lastDisplay_ = now();
-    return displayTexture_;
+    return display_.texture();
 }
 
 glm::vec4 Viewer::pixelValue(int x, int y) const {
@@ -402,14 +323,12 @@ std::optional<float> Viewer::focusAt(float x, float y) {
 
 float Viewer::heatScaleInUse() const {
     if (!heatScaleAuto) return std::max(heatScale, 1e-3f);
-    GLuint max[2] = {0, 0};
-    if (variant_ == kCounts) glGetNamedBufferSubData(heatMaxBuffer_, 0, sizeof(max), max);
-    return float(std::max(1u, view_ == DebugView::Triangles ? max[1] : max[0]));
+    const glm::uvec2 max = variant_ == TracerVariant::Counts ? debug_.heatMax() : glm::uvec2(0);
+    return float(std::max(1u, view_ == DebugView::Triangles ? max.y : max.x));
 }
 
 std::string Viewer::shaderVariant() const {
-    static const char* const extra[] = {"", " + moments", " + debug views", " + debug views + traversal counts"};
-    return tracer_ ? tracer_->variantName() + extra[variant_] : "none (shader error)";
+    return tracer_ ? tracer_->variantName() + std::string(variantSuffix(variant_)) : "none (shader error)";
 }
 
 } // namespace raylab::ui

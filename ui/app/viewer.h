@@ -11,8 +11,10 @@
 #include "app/pass_slicer.h"
 #include "app/scene_document.h"
 #include "app/selection.h"
-#include "gl/shader_program.h"
+#include "render/debug_buffers.h"
+#include "render/display_pass.h"
 #include "render/path_tracer.h"
+#include "render/tracer_variants.h"
 #include "scene/scene.h"
 
 #include <filesystem>
@@ -106,7 +108,7 @@ public:
     // when paused); after a restart the previous picture stays until the first pass is complete,
     // so moving the camera never flashes a half-traced image.
     unsigned displayTexture();
-    void redisplay() override { displayDirty_ = true; }   // after changing depthScale or noiseScale
+    void redisplay() override { displayDirty_ = true; }   // after changing depthScale, noiseScale or the heat scale
     bool needsDisplay() const;   // the next displayTexture() would show something new
     // The linear value of image pixel (x, y), top-left origin, as accumulated.
     glm::vec4 pixelValue(int x, int y) const;
@@ -129,20 +131,15 @@ private:
     bool ready() const override { return tracer_ != nullptr; }
     bool upload(const Scene& next, Trigger trigger) override;
     void restart() override;   // after a scene upload: clear moments, restart the slicer
-    void ensureDisplayTargets();
 
     const Scene& scene_ = document_.scene();   // what the tracer traces
-    // Tracer variants, compiled when first needed: the plain beauty tracer (what raylab-render runs),
-    // one that also keeps per-pixel moments (noise, NaN views), one that traces the debug views,
-    // one that traces them counting traversal (heat maps).
-    enum Variant { kBeauty = 0, kMoments = 1, kViews = 2, kCounts = 3 };
-    static Variant variantFor(DebugView view);
-    std::unique_ptr<PathTracer> compileVariant(Variant v);   // throws ShaderError
-    bool activateVariant(Variant v);
-    std::unique_ptr<PathTracer> tracers_[4];
+    std::unique_ptr<PathTracer> compileVariant(TracerVariant v);   // throws ShaderError
+    bool activateVariant(TracerVariant v);
+    TracerVariants variants_;   // the fragment entry (bands need its scissor), compiled when a view first needs one
     PathTracer* tracer_ = nullptr;
-    Variant variant_ = kBeauty;
-    ShaderProgram display_;
+    TracerVariant variant_ = TracerVariant::Beauty;
+    DebugBuffers debug_;
+    DisplayPass display_;
     PassSlicer slicer_;
     bool paused_ = false;
     float scale_ = 1.0f;
@@ -152,13 +149,6 @@ private:
     ViewerStats stats_;
     double passWall_ = 0.0;
 
-    unsigned momentsBuffer_ = 0;   // binding 16: per-pixel moments (debug_views.glsl)
-    unsigned heatMaxBuffer_ = 0;   // binding 17: largest box / triangle count of one ray
-    unsigned displayTexture_ = 0;
-    unsigned displayFramebuffer_ = 0;
-    unsigned displayVao_ = 0;
-    int displayWidth_ = 0;
-    int displayHeight_ = 0;
     bool displayDirty_ = true;        // display settings or targets changed: show at once
     bool tracedSinceDisplay_ = false; // samples traced that the display texture does not show yet
     double lastDisplay_ = 0.0;        // when the display pass last ran (seconds)

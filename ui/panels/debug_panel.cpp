@@ -31,37 +31,36 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
         if (column++ % 3 != 0) ImGui::SameLine(float((column - 1) % 3) * 105.0f + 8.0f);
         if (ImGui::RadioButton(name.c_str(), viewer.debugView() == v)) viewer.setDebugView(v);
     }
+    // The view's own controls, its legend line from the view table, then what follows the legend.
     switch (viewer.debugView()) {
     case DebugView::Depth:
         if (ImGui::DragFloat("black at distance", &viewer.depthScale, 0.1f, 0.01f, 1e5f)) viewer.redisplay();
-        ImGui::TextDisabled("white = at the eye, black = this far or a miss");
         break;
-    case DebugView::Noise: {
+    case DebugView::Noise:
         if (ImGui::DragFloat("red at rel. error", &viewer.noiseScale, 0.005f, 0.001f, 10.0f)) viewer.redisplay();
-        ImGui::TextDisabled("standard error of the mean luminance / mean");
-        const std::string hi = std::to_string(viewer.noiseScale).substr(0, 5);
-        legend("0", hi.c_str());
-        break;
-    }
-    case DebugView::NonFinite:
-        ImGui::TextDisabled("magenta: a NaN or Inf sample was replaced by 0 there");
         break;
     case DebugView::BounceK: {
         int k = viewer.debugBounce();
         if (ImGui::SliderInt("bounce k", &k, 0, std::max(1, viewer.scene().render.maxBounces))) viewer.setDebugBounce(k);
-        ImGui::TextDisabled("k = 0: emitters and sky seen directly; k = 1: direct lighting");
         break;
     }
-    case DebugView::Direct:
-        ImGui::TextDisabled("bounces 0 and 1 (emitters, sky, direct lighting)");
+    default:
         break;
-    case DebugView::Indirect:
-        ImGui::TextDisabled("bounces 2 and more: direct + indirect = beauty");
+    }
+    const std::string legendText(debugViewInfo(viewer.debugView()).legend);
+    if (!legendText.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", legendText.c_str());
+        ImGui::PopStyleColor();
+    }
+    switch (viewer.debugView()) {
+    case DebugView::Noise: {
+        const std::string hi = std::to_string(viewer.noiseScale).substr(0, 5);
+        legend("0", hi.c_str());
         break;
+    }
     case DebugView::Boxes:
     case DebugView::Triangles: {
-        const bool boxes = viewer.debugView() == DebugView::Boxes;
-        ImGui::TextDisabled(boxes ? "BVH boxes tested by the camera ray (both levels)" : "triangles tested by the camera ray");
         if (ImGui::Checkbox("auto scale", &viewer.heatScaleAuto)) viewer.redisplay();
         if (!viewer.heatScaleAuto) {
             ImGui::SameLine();
@@ -73,15 +72,6 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
                             "spheres cost no box tests there.");
         break;
     }
-    case DebugView::Uv:
-        ImGui::TextDisabled("(u, v) fractional part as red, green; spheres have uv only in\ntextured scenes");
-        break;
-    case DebugView::MaterialId:
-        ImGui::TextDisabled("one colour per material (hover for its name)");
-        break;
-    case DebugView::ObjectId:
-        ImGui::TextDisabled("one colour per object: spheres, then mesh instances, numbered\nas in the outliner (hover for it)");
-        break;
     default:
         break;
     }
