@@ -399,6 +399,8 @@ GltfAsset loadGltfAsset(const std::filesystem::path& file) {
     }
     if (!ok) {
         err = withoutTrailingNewlines(err);
+        if (err.rfind("[json.exception.", 0) == 0 && err.find("] ") != std::string::npos)
+            err.erase(0, err.find("] ") + 2);   // nlohmann's exception id, not for readers
         throw GltfError(name + ": " + (err.empty() ? std::string("cannot parse") : err));
     }
     GltfAsset asset;
