@@ -252,10 +252,10 @@ def buffer_view_image(g):
 
 
 gltf("image_view_past_buffer", buffer_view_image, "images[0].bufferView: bufferViews[3] (byteOffset 64, byteLength 4000)")
-write("gltf_not_json.gltf", "this is not JSON\n", "gltf_not_json.gltf: ")
-write("gltf_truncated.gltf", json.dumps(base_gltf(), indent=1)[:300], "gltf_truncated.gltf: ")
-write("gltf_empty.gltf", "", "gltf_empty.gltf: ")
-write("gltf_array.gltf", "[1, 2, 3]\n", "gltf_array.gltf: ")
+write("gltf_not_json.gltf", "this is not JSON\n", "gltf_not_json.gltf: parse error at line 1, column 2")
+write("gltf_truncated.gltf", json.dumps(base_gltf(), indent=1)[:300], "gltf_truncated.gltf: parse error at line 32")
+write("gltf_empty.gltf", "", "File is empty")
+write("gltf_array.gltf", "[1, 2, 3]\n", "gltf_array.gltf: Root element is not a JSON object")
 write("gltf_nul_after_json.gltf", json.dumps(base_gltf()) + "\0garbage", "is a NUL byte (a .gltf file is JSON text)")
 
 # External .bin buffers (the .bin files sit beside the .gltf and are not manifest entries).
@@ -296,20 +296,20 @@ def glb_model(edit=None):
     return g
 
 
-write("glb_bad_magic.glb", b"glTX" + glb(glb_model(), BUFFER)[4:], "glb_bad_magic.glb: ")
-write("glb_truncated_header.glb", glb(glb_model(), BUFFER)[:10], "glb_truncated_header.glb: ")
+write("glb_bad_magic.glb", b"glTX" + glb(glb_model(), BUFFER)[4:], "glb_bad_magic.glb: Invalid magic")
+write("glb_truncated_header.glb", glb(glb_model(), BUFFER)[:10], "glb_truncated_header.glb: Too short data size for glTF Binary")
 write("glb_length_past_end.glb", glb(glb_model(), BUFFER)[:8] + struct.pack("<I", 1 << 30) + glb(glb_model(), BUFFER)[12:],
-      "glb_length_past_end.glb: ")
+      "glb_length_past_end.glb: Invalid glTF binary")
 whole = glb(glb_model(), BUFFER)
 chunk_len_past = whole[:12] + struct.pack("<I", 1 << 30) + whole[16:]
-write("glb_chunk_past_end.glb", chunk_len_past, "glb_chunk_past_end.glb: ")
+write("glb_chunk_past_end.glb", chunk_len_past, "glb_chunk_past_end.glb: Invalid glTF binary")
 write("glb_accessor_wraps.glb", glb(glb_model(setter(["accessors", 0, "byteOffset"], U64 - 12)), BUFFER),
       "accessors[0]: byteOffset 18446744073709551604")
 write("glb_view_missing_buffer.glb", glb(glb_model(setter(["bufferViews", 2, "buffer"], 2)), BUFFER),
       "bufferViews[2].buffer: 2 is not a buffer")
 write("glb_index_past_vertices.glb", glb(glb_model(), POSITIONS + NORMALS + struct.pack("<3H", 0, 9, 2) + b"\0\0"),
       "accessors[2][1]: index 9 is out of range (3 vertices)")
-write("glb_empty.glb", b"", "glb_empty.glb: ")
+write("glb_empty.glb", b"", "File is empty")
 
 
 # --- Images (as a material's albedo_texture) ------------------------------------------------------
@@ -322,20 +322,20 @@ image("png_wide.png", png(40000, 1, b"\0" * 64), "40000x1 is larger than raylab 
 image("png_too_many_pixels.png", png(16000, 16800, b"\0" * 64), "16000x16800 is larger than raylab reads (at most 268435456 pixels)")
 image("png_zero_width.png", png(0, 4, b"\0" * 64), "image_png_zero_width.png: ")
 image("png_truncated_idat.png", png(4, 4, b"\0" * 3), "image_png_truncated_idat.png: ")
-image("png_bad_crc.png", png(4, 4, b"\0" * 52, crc_ok=False), "image_png_bad_crc.png: ")
+image("png_bad_crc.png", png(4, 4, b"\0" * 52, crc_ok=False), "image_png_bad_crc.png: PNG read error: IHDR: CRC error")
 image("png_bad_depth.png", png(4, 4, b"\0" * 52, depth=7), "image_png_bad_depth.png: ")
 image("png_signature_only.png", b"\x89PNG\r\n\x1a\n", "image_png_signature_only.png: ")
-image("png_empty.png", b"", "image_png_empty.png: ")
-image("png_text.png", "hello, I am not a PNG\n", "image_png_text.png: ")
+image("png_empty.png", b"", "image_png_empty.png: Not a PNG file")
+image("png_text.png", "hello, I am not a PNG\n", "image_png_text.png: Not a PNG file")
 image("png_cut_in_header.png", PNG_BOMB[:20], "image_png_cut_in_header.png: ")
 HDR_HEAD = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n"
 image("hdr_huge.hdr", HDR_HEAD + "-Y 100000 +X 100000\n" + "\0" * 16, "100000x100000 is larger than raylab reads")
 image("hdr_tall.hdr", HDR_HEAD + "-Y 40000 +X 2\n" + "\0" * 16, "2x40000 is larger than raylab reads")
 image("hdr_panorama_too_many_pixels.hdr", HDR_HEAD + "-Y 16385 +X 32768\n" + "\0" * 16,
       "32768x16385 is larger than raylab reads (at most 268435456 pixels)")
-image("hdr_int_overflow.hdr", HDR_HEAD + "-Y 99999999999 +X 99999999999\n", "image_hdr_int_overflow.hdr: ")
+image("hdr_int_overflow.hdr", HDR_HEAD + "-Y 99999999999 +X 99999999999\n", "is larger than raylab reads")
 image("hdr_truncated_pixels.hdr", HDR_HEAD + "-Y 8 +X 8\n" + "\x80" * 10, "image_hdr_truncated_pixels.hdr: ")
-image("hdr_bad_resolution.hdr", HDR_HEAD + "-Y eight +X 8\n", "image_hdr_bad_resolution.hdr: ")
+image("hdr_bad_resolution.hdr", HDR_HEAD + "-Y eight +X 8\n", "image_hdr_bad_resolution.hdr: missing image size specifier")
 image("hdr_garbage.hdr", bytes(range(256)), "image_hdr_garbage.hdr: ")
 image("hdr_empty.hdr", b"", "image_hdr_empty.hdr: ")
 image("hdr_header_only.hdr", "#?RADIANCE\n", "image_hdr_header_only.hdr: ")
@@ -359,14 +359,14 @@ def exr(xmax, ymax, xmin=0, ymin=0, offsets=True):
     return header
 
 
-image("exr_huge.exr", exr(65534, 65534, offsets=False), "image_exr_huge.exr: ")
+image("exr_huge.exr", exr(65534, 65534, offsets=False), "image_exr_huge.exr\". Unexpected end of file")
 image("exr_wide.exr", exr(99999, 0), "100000x1 is larger than raylab reads")
-image("exr_inverted_window.exr", exr(-5, 3, offsets=False), "image_exr_inverted_window.exr: ")
+image("exr_inverted_window.exr", exr(-5, 3, offsets=False), "Invalid display window in image header")
 image("exr_truncated_pixels.exr", exr(3, 3), "image_exr_truncated_pixels.exr: ")
-image("exr_bad_magic.exr", b"\0\0\0\0" + exr(3, 3)[4:], "image_exr_bad_magic.exr: ")
+image("exr_bad_magic.exr", b"\0\0\0\0" + exr(3, 3)[4:], "image_exr_bad_magic.exr\" is not an OpenEXR file")
 image("exr_cut_in_header.exr", exr(3, 3)[:40], "image_exr_cut_in_header.exr: ")
 image("exr_empty.exr", b"", "image_exr_empty.exr: ")
-image("exr_text.exr", "just text\n", "image_exr_text.exr: ")
+image("exr_text.exr", "just text\n", "image_exr_text.exr\" is not an OpenEXR file")
 image("ppm_huge.ppm", "P6\n65535 65535\n255\n" + "\0" * 12, "65535x65535 is larger than raylab reads")
 image("ppm_truncated.ppm", "P6\n4 4\n255\n" + "\0" * 5, "image_ppm_truncated.ppm: ")
 
