@@ -1,6 +1,7 @@
 // raylab-bench: throughput of the path tracer (Mpaths/s, Mrays/s) on a scene at a fixed size,
 // for each tracer entry point, median of several runs; appends the figures, the machine and the
 // command to a Markdown results file. A benchmark, not a test: nothing here passes or fails.
+#include "apps/scene_key_option.h"
 #include "bench/convergence_suite.h"
 #include "bench/scaling.h"
 #include "gl/gl_context.h"
@@ -53,10 +54,10 @@ int main(int argc, char** argv) {
     std::string specialise = "on";
     int width = 640, height = 360, spp = 8, repeat = 5;
     app.add_option("--scene", scenePath, "Scene file")->capture_default_str();
-    app.add_option("--width", width, "Image width")->check(CLI::Range(1, 16384))->capture_default_str();
-    app.add_option("--height", height, "Image height")->check(CLI::Range(1, 16384))->capture_default_str();
+    app.add_option("--width", width, "Image width")->check(sceneKeyRange("render.width"))->capture_default_str();
+    app.add_option("--height", height, "Image height")->check(sceneKeyRange("render.height"))->capture_default_str();
     app.add_option("--spp", spp, "Samples per pixel per run (rpp from the scene)")
-        ->check(CLI::PositiveNumber)->capture_default_str();
+        ->check(sceneKeyRange("render.spp"))->capture_default_str();
     app.add_option("--repeat", repeat, "Runs per variant; the median is reported")
         ->check(CLI::Range(1, 100))->capture_default_str();
     app.add_option("--variants", variants,
@@ -85,7 +86,8 @@ int main(int argc, char** argv) {
     convergence->add_option("--peer", conv.peer, "Cycles comparison: auto (when blender is installed), on, off")
         ->check(CLI::IsMember({"auto", "on", "off"}))->capture_default_str();
     convergence->add_option("--only", conv.only, "Run only the suite scene with this name");
-    convergence->add_option("--threads", conv.threads, "Cycles render threads")->capture_default_str();
+    convergence->add_option("--threads", conv.threads, "Cycles render threads")
+        ->check(CLI::PositiveNumber)->capture_default_str();
     ScalingOptions scaling;
     CLI::App* scalingCmd = app.add_subcommand(
         "scaling", "Cost growth: ms per sample per pixel against sphere count and resolution, and startup.\n"

@@ -1,6 +1,7 @@
 // raylab-render: renders a scene file headlessly to EXR (linear) or PNG (display-ready).
 // Exit status: 0 done, 1 bad input (scene file, output path), 2 bad command line,
 // 3 no usable OpenGL or a shader failure, 130 interrupted by SIGINT (partial image written).
+#include "apps/scene_key_option.h"
 #include "bench/blender_export.h"
 #include "gl/gl_context.h"
 #include "inspect/path_export.h"
@@ -106,19 +107,19 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", output,
                    "Output image, .exr or .png (default: <scene name>.png in the current directory)");
     app.add_option("--spp", spp, "Target samples per pixel (overrides render.spp)")
-        ->check(CLI::PositiveNumber);
+        ->check(sceneKeyRange("render.spp"));
     app.add_option("--time", timeBudget,
                    "Time budget in seconds; stops at --spp or --time, whichever comes first "
                    "(overrides render.time; 0 = no limit)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(sceneKeyRange("render.time"));
     app.add_option("--width", width, "Image width in pixels (overrides render.width)")
-        ->check(CLI::Range(1, 16384));
+        ->check(sceneKeyRange("render.width"));
     app.add_option("--height", height, "Image height in pixels (overrides render.height)")
-        ->check(CLI::Range(1, 16384));
+        ->check(sceneKeyRange("render.height"));
     app.add_option("--rpp", rpp, "Samples per pixel per pass (overrides render.rpp)")
-        ->check(CLI::Range(1, 1024));
+        ->check(sceneKeyRange("render.rpp"));
     app.add_option("--seed", seed, "Sampler seed, 0 to 4294967295 (overrides render.seed)")
-        ->check(CLI::Range(0LL, 4294967295LL));
+        ->check(sceneKeyRange("render.seed"));
     app.add_option("--set", overrides,
                    "Override any scene key, e.g. --set camera.fov=30 --set render.tone_map=reinhard "
                    "--set materials.red.albedo=[1,0,0] (repeatable)")
@@ -173,7 +174,7 @@ int main(int argc, char** argv) {
 
     // Command-line flags are overrides too, applied after --set so they win.
     if (spp > 0) overrides.push_back("render.spp=" + std::to_string(spp));
-    if (timeBudget >= 0.0) overrides.push_back("render.time=" + std::to_string(timeBudget));
+    if (timeBudget >= 0.0) overrides.push_back("render.time=" + formatNumber(timeBudget));
     if (width > 0) overrides.push_back("render.width=" + std::to_string(width));
     if (height > 0) overrides.push_back("render.height=" + std::to_string(height));
     if (rpp > 0) overrides.push_back("render.rpp=" + std::to_string(rpp));

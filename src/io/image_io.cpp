@@ -1,6 +1,7 @@
 #include "io/image_io.h"
 
 #include "shaders/include/tone_map.glsl"
+#include "texture/image_size.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -115,15 +116,20 @@ Image readImage(const fs::path& path) {
     auto in = ImageInput::open(path.string());
     if (!in) throw ImageIoError(path.string() + ": error: cannot read: " + OIIO::geterror());
     const ImageSpec& spec = in->spec();
-    std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, TypeDesc::FLOAT, pixels.data()))
+    if (const auto problem = imageSizeProblem(spec.width, spec.height))
+        throw ImageIoError(path.string() + ": error: cannot read: " + *problem);
+    if (spec.nchannels <= 0 || spec.depth > 1 || spec.deep)
+        throw ImageIoError(path.string() + ": error: cannot read: not a flat image with channels");
+    const int channels = std::min(spec.nchannels, 4);   // rgba: further channels are never used
+    std::vector<float> pixels(size_t(spec.width) * spec.height * size_t(channels));
+    if (!in->read_image(0, 0, 0, channels, TypeDesc::FLOAT, pixels.data()))
         throw ImageIoError(path.string() + ": error: cannot read: " + in->geterror());
     Image image(spec.width, spec.height);
     for (size_t i = 0, n = size_t(spec.width) * spec.height; i < n; ++i)
         for (int c = 0; c < 4; ++c) {
             float v = c == 3 ? 1.0f : 0.0f;
-            if (c < spec.nchannels) v = pixels[i * size_t(spec.nchannels) + size_t(c)];
-            else if (c < 3 && spec.nchannels < 3) v = pixels[i * size_t(spec.nchannels)];
+            if (c < channels) v = pixels[i * size_t(channels) + size_t(c)];
+            else if (c < 3 && channels < 3) v = pixels[i * size_t(channels)];
             image.rgba[i * 4 + size_t(c)] = v;
         }
     return image;

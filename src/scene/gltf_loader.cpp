@@ -1,5 +1,7 @@
 #include "scene/gltf_loader.h"
 
+#include "texture/image_size.h"
+
 #include <tiny_gltf.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -8,51 +10,107 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <new>
+#include <optional>
 
 namespace raylab {
 namespace {
+
+std::string at(const char* array, std::size_t index) { return std::string(array) + "[" + std::to_string(index) + "]"; }
+
+// "7 is not a node (3 in the file)" unless 0 <= index < size.
+std::optional<std::string> badIndex(long long index, std::size_t size, const char* what) {
+    if (index >= 0 && std::size_t(index) < size) return std::nullopt;
+    return std::to_string(index) + " is not " + what + " (" + std::to_string(size) + " in the file)";
+}
+
+// An accessor whose every element was checked to lie inside its buffer view and buffer.
+struct AccessorView {
+    std::string path;                     // "accessors[k]", for messages
+    const unsigned char* data = nullptr;  // element 0
+    std::size_t stride = 0;
+    std::size_t count = 0;
+    int components = 0;
+    int componentType = 0;
+    bool normalized = false;
+
+    // Component k of element i (normalised integers are scaled to [0, 1]).
+    double get(std::size_t i, int k) const {
+        const unsigned char* p = data + i * stride + std::size_t(k) * std::size_t(componentSize());
+        switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p, 4); return f; }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0 : double(*p);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { std::uint16_t s; std::memcpy(&s, p, 2); return normalized ? s / 65535.0 : double(s); }
+        default: { std::uint32_t u; std::memcpy(&u, p, 4); return u; }
+        }
+    }
+    int componentSize() const { return tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(componentType)); }
+};
 
 struct Reader {
     const tinygltf::Model& model;
     const std::string& name;
     Mesh& mesh;
-    bool anyMaterial = false;   // some primitive names a material
+    bool anyMaterial = false;        // some primitive names a material
+    std::vector<bool> onPath;        // nodes visited from the current root (glTF nodes form a tree)
 
     [[noreturn]] void fail(const std::string& what) const { throw GltfError(name + ": " + what); }
 
-    // Element i of an accessor as up to 4 doubles (normalised integers are scaled to [0, 1]).
-    std::vector<double> read(int accessorIndex, std::size_t i) const {
-        if (accessorIndex < 0 || std::size_t(accessorIndex) >= model.accessors.size()) fail("bad accessor index");
-        const tinygltf::Accessor& a = model.accessors[std::size_t(accessorIndex)];
-        if (a.sparse.isSparse) fail("sparse accessors are not supported");
-        if (a.bufferView < 0 || std::size_t(a.bufferView) >= model.bufferViews.size()) fail("accessor without data");
-        const tinygltf::BufferView& v = model.bufferViews[std::size_t(a.bufferView)];
-        const tinygltf::Buffer& b = model.buffers.at(std::size_t(v.buffer));
-        const int stride = a.ByteStride(v);
-        const int n = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
-        const int size = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
-        if (stride <= 0 || n <= 0 || size <= 0) fail("malformed accessor");
-        const std::size_t start = v.byteOffset + a.byteOffset + i * std::size_t(stride);
-        if (start + std::size_t(n * size) > b.data.size()) fail("accessor reads past the end of its buffer");
-        std::vector<double> out(static_cast<std::size_t>(n));
-        for (int k = 0; k < n; ++k) {
-            const unsigned char* p = b.data.data() + start + std::size_t(k * size);
-            double x = 0.0;
-            switch (a.componentType) {
-            case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p, 4); x = f; break; }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: x = *p; if (a.normalized) x /= 255.0; break;
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { std::uint16_t s; std::memcpy(&s, p, 2); x = s; if (a.normalized) x /= 65535.0; break; }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { std::uint32_t u; std::memcpy(&u, p, 4); x = u; break; }
-            default: fail("unsupported component type " + std::to_string(a.componentType));
-            }
-            out[std::size_t(k)] = x;
+    // The accessor `where` names (e.g. meshes[0].primitives[1].attributes.NORMAL), checked for the
+    // number of components `components` (1 scalar, 2 VEC2, 3 VEC3) and that every byte it reads lies
+    // inside its buffer view and buffer, without overflow.
+    AccessorView view(int index, const std::string& where, int components, bool integersOnly) const {
+        if (auto bad = badIndex(index, model.accessors.size(), "an accessor")) fail(where + ": " + *bad);
+        const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
+        AccessorView out;
+        out.path = at("accessors", std::size_t(index));
+        const std::string& ap = out.path;
+        if (a.sparse.isSparse) fail(ap + ".sparse: sparse accessors are not supported");
+        switch (a.componentType) {
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: break;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            if (integersOnly) fail(ap + ".componentType: " + where + " needs unsigned integers, got 5126 (float)");
+            break;
+        default: fail(ap + ".componentType: unsupported component type " + std::to_string(a.componentType));
         }
+        const int n = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
+        if (n != components)
+            fail(ap + ".type: " + where + " needs " + std::to_string(components) + " component" +
+                 (components == 1 ? "" : "s") + " per element, got " + std::to_string(n));
+        out.components = n;
+        out.componentType = a.componentType;
+        out.normalized = a.normalized;
+        out.count = a.count;
+        if (a.bufferView < 0) fail(ap + ".bufferView: the accessor has no data");
+        if (auto bad = badIndex(a.bufferView, model.bufferViews.size(), "a bufferView")) fail(ap + ".bufferView: " + *bad);
+        const tinygltf::BufferView& v = model.bufferViews[std::size_t(a.bufferView)];
+        const std::string vp = at("bufferViews", std::size_t(a.bufferView));
+        if (auto bad = badIndex(v.buffer, model.buffers.size(), "a buffer")) fail(vp + ".buffer: " + *bad);
+        const tinygltf::Buffer& b = model.buffers[std::size_t(v.buffer)];
+        if (v.byteOffset > b.data.size() || v.byteLength > b.data.size() - v.byteOffset)
+            fail(vp + ": byteOffset " + std::to_string(v.byteOffset) + " + byteLength " + std::to_string(v.byteLength) +
+                 " is past the end of " + at("buffers", std::size_t(v.buffer)) + " (" + std::to_string(b.data.size()) +
+                 " bytes)");
+        const std::size_t element = std::size_t(n) * std::size_t(out.componentSize());
+        out.stride = v.byteStride == 0 ? element : v.byteStride;
+        if (out.stride < element)
+            fail(vp + ".byteStride: " + std::to_string(v.byteStride) + " is smaller than an element of " + ap + " (" +
+                 std::to_string(element) + " bytes)");
+        if (out.count == 0) return out;
+        // byteOffset + (count - 1) * stride + element <= byteLength, evaluated without wrapping.
+        const bool fits = a.byteOffset <= v.byteLength && element <= v.byteLength - a.byteOffset &&
+                          out.count - 1 <= (v.byteLength - a.byteOffset - element) / out.stride;
+        if (!fits)
+            fail(ap + ": byteOffset " + std::to_string(a.byteOffset) + " + count " + std::to_string(a.count) +
+                 " x stride " + std::to_string(out.stride) + " is past the end of " + vp + " (byteLength " +
+                 std::to_string(v.byteLength) + ")");
+        out.data = b.data.data() + v.byteOffset + a.byteOffset;
         return out;
-    }
-
-    std::size_t count(int accessorIndex) const {
-        if (accessorIndex < 0 || std::size_t(accessorIndex) >= model.accessors.size()) fail("bad accessor index");
-        return model.accessors[std::size_t(accessorIndex)].count;
     }
 
     static glm::mat4 localMatrix(const tinygltf::Node& n) {
@@ -72,47 +130,87 @@ struct Reader {
         return m;
     }
 
-    void node(int index, const glm::mat4& parent, int depth) {
-        if (index < 0 || std::size_t(index) >= model.nodes.size()) fail("bad node index");
-        if (depth > 64) fail("the node hierarchy is deeper than 64 (a cycle?)");
-        const tinygltf::Node& n = model.nodes[std::size_t(index)];
-        const glm::mat4 world = parent * localMatrix(n);
-        if (n.mesh >= 0) {
-            if (std::size_t(n.mesh) >= model.meshes.size()) fail("bad mesh index");
-            for (const tinygltf::Primitive& p : model.meshes[std::size_t(n.mesh)].primitives) primitive(p, world);
-        }
-        for (int c : n.children) node(c, world, depth + 1);
+    void finite(const std::vector<double>& values, const std::string& where) const {
+        for (std::size_t i = 0; i < values.size(); ++i)
+            if (!std::isfinite(values[i]) || std::abs(values[i]) > double(std::numeric_limits<float>::max()))
+                fail(where + "[" + std::to_string(i) + "]: not a finite 32-bit float");
     }
 
-    void primitive(const tinygltf::Primitive& p, const glm::mat4& world) {
+    void node(int index, const glm::mat4& parent, int depth, const std::string& where) {
+        if (auto bad = badIndex(index, model.nodes.size(), "a node")) fail(where + ": " + *bad);
+        const std::string np = at("nodes", std::size_t(index));
+        if (depth > 64) fail(np + ": the node hierarchy is deeper than 64 (a cycle?)");
+        if (onPath[std::size_t(index)]) fail(np + ": the node is reached twice (glTF nodes form a tree)");
+        onPath[std::size_t(index)] = true;
+        const tinygltf::Node& n = model.nodes[std::size_t(index)];
+        finite(n.matrix, np + ".matrix");
+        finite(n.translation, np + ".translation");
+        finite(n.rotation, np + ".rotation");
+        finite(n.scale, np + ".scale");
+        const glm::mat4 world = parent * localMatrix(n);
+        if (n.mesh >= 0) {
+            if (auto bad = badIndex(n.mesh, model.meshes.size(), "a mesh")) fail(np + ".mesh: " + *bad);
+            const auto& primitives = model.meshes[std::size_t(n.mesh)].primitives;
+            for (std::size_t k = 0; k < primitives.size(); ++k)
+                primitive(primitives[k], world, at("meshes", std::size_t(n.mesh)) + "." + at("primitives", k));
+        }
+        for (std::size_t c = 0; c < n.children.size(); ++c) node(n.children[c], world, depth + 1, np + "." + at("children", c));
+    }
+
+    // A tree of nodes (a scene's, or one node's when the file has no scene).
+    void tree(const std::vector<int>& roots, const std::string& where) {
+        onPath.assign(model.nodes.size(), false);
+        for (std::size_t i = 0; i < roots.size(); ++i) node(roots[i], glm::mat4(1.0f), 0, where + "[" + std::to_string(i) + "]");
+    }
+
+    void primitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& pp) {
         if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != -1) return;   // points and lines: skipped
         const auto pos = p.attributes.find("POSITION");
-        if (pos == p.attributes.end()) fail("a primitive has no POSITION");
+        if (pos == p.attributes.end()) fail(pp + ".attributes: a primitive has no POSITION");
         const auto nrm = p.attributes.find("NORMAL");
         const auto uv = p.attributes.find("TEXCOORD_0");
+        const AccessorView positions = view(pos->second, pp + ".attributes.POSITION", 3, false);
+        const std::size_t n = positions.count;
+        std::optional<AccessorView> normals, uvs;
+        if (nrm != p.attributes.end()) normals = view(nrm->second, pp + ".attributes.NORMAL", 3, false);
+        if (uv != p.attributes.end()) uvs = view(uv->second, pp + ".attributes.TEXCOORD_0", 2, false);
+        for (const std::optional<AccessorView>& a : {normals, uvs})
+            if (a && a->count < n)
+                fail(a->path + ".count: " + std::to_string(a->count) + " elements, fewer than the " + std::to_string(n) +
+                     " positions of " + positions.path);
+        if (n > std::numeric_limits<unsigned>::max() - mesh.positions.size())
+            fail(positions.path + ".count: too many vertices");
         const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
         const unsigned base = unsigned(mesh.positions.size());
-        const std::size_t n = count(pos->second);
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::vector<double> v = read(pos->second, i);
-            mesh.positions.push_back(glm::vec3(world * glm::vec4(float(v[0]), float(v[1]), float(v[2]), 1.0f)));
-            if (nrm != p.attributes.end()) {
-                const std::vector<double> w = read(nrm->second, i);
-                mesh.normals.push_back(glm::normalize(normalMatrix * glm::vec3(float(w[0]), float(w[1]), float(w[2]))));
+        auto element = [this](const AccessorView& a, std::size_t i) {
+            glm::vec3 v(0.0f);
+            for (int k = 0; k < a.components; ++k) {
+                const double x = a.get(i, k);
+                if (!std::isfinite(x) || std::abs(x) > double(std::numeric_limits<float>::max()))
+                    fail(a.path + "[" + std::to_string(i) + "]: not a finite 32-bit float");
+                v[k] = float(x);
             }
-            if (uv != p.attributes.end()) {
-                const std::vector<double> t = read(uv->second, i);
-                mesh.uvs.emplace_back(float(t[0]), 1.0f - float(t[1]));   // glTF's v runs downwards
+            return v;
+        };
+        for (std::size_t i = 0; i < n; ++i) {
+            const glm::vec3 v = element(positions, i);
+            mesh.positions.push_back(glm::vec3(world * glm::vec4(v, 1.0f)));
+            if (normals) mesh.normals.push_back(glm::normalize(normalMatrix * element(*normals, i)));
+            if (uvs) {
+                const glm::vec3 t = element(*uvs, i);
+                mesh.uvs.emplace_back(t.x, 1.0f - t.y);   // glTF's v runs downwards
             }
         }
         const std::size_t firstTriangle = mesh.triangles.size();
         if (p.indices >= 0) {
-            const std::size_t m = count(p.indices);
-            for (std::size_t i = 0; i + 2 < m; i += 3) {
+            const AccessorView indices = view(p.indices, pp + ".indices", 1, true);
+            for (std::size_t i = 0; i + 2 < indices.count; i += 3) {
                 glm::uvec3 t;
                 for (int k = 0; k < 3; ++k) {
-                    const double index = read(p.indices, i + std::size_t(k))[0];
-                    if (index >= double(n)) fail("a triangle index is out of range");
+                    const double index = indices.get(i + std::size_t(k), 0);
+                    if (index >= double(n))
+                        fail(indices.path + "[" + std::to_string(i + std::size_t(k)) + "]: index " +
+                             std::to_string(std::uint64_t(index)) + " is out of range (" + std::to_string(n) + " vertices)");
                     t[k] = base + unsigned(index);
                 }
                 mesh.triangles.push_back(t);
@@ -120,7 +218,8 @@ struct Reader {
         } else {
             for (unsigned i = 0; i + 2 < n; i += 3) mesh.triangles.emplace_back(base + i, base + i + 1, base + i + 2);
         }
-        if (p.material >= 0 && std::size_t(p.material) >= model.materials.size()) fail("bad material index");
+        if (p.material >= 0)
+            if (auto bad = badIndex(p.material, model.materials.size(), "a material")) fail(pp + ".material: " + *bad);
         anyMaterial |= p.material >= 0;
         mesh.triangleMaterials.resize(firstTriangle, -1);
         mesh.triangleMaterials.resize(mesh.triangles.size(), p.material);
@@ -238,6 +337,41 @@ struct MaterialReader {
     }
 };
 
+// tinygltf's image decoding, after checking what it cannot: that an image's buffer view lies
+// inside its buffer and that the header's size is within raylab's limits.
+struct ImageLoad {
+    const tinygltf::Model* model;   // filled by tinygltf before it reads images
+};
+
+bool loadImageChecked(tinygltf::Image* image, int index, std::string* err, std::string* warn, int width, int height,
+                      const unsigned char* bytes, int size, void* user) {
+    const tinygltf::Model& model = *static_cast<ImageLoad*>(user)->model;
+    const std::string ip = at("images", std::size_t(index));
+    auto refuse = [err](const std::string& what) {
+        if (err) *err += what + "\n";
+        return false;
+    };
+    if (image->bufferView >= 0) {   // tinygltf has checked both indices, not the byte range
+        const tinygltf::BufferView& v = model.bufferViews[std::size_t(image->bufferView)];
+        const tinygltf::Buffer& b = model.buffers[std::size_t(v.buffer)];
+        if (v.byteOffset > b.data.size() || v.byteLength > b.data.size() - v.byteOffset)
+            return refuse(ip + ".bufferView: " + at("bufferViews", std::size_t(image->bufferView)) + " (byteOffset " +
+                          std::to_string(v.byteOffset) + ", byteLength " + std::to_string(v.byteLength) +
+                          ") is past the end of " + at("buffers", std::size_t(v.buffer)) + " (" +
+                          std::to_string(b.data.size()) + " bytes)");
+    }
+    if (size <= 0) return refuse(ip + ": the image is empty");
+    if (const auto header = encodedImageSize(bytes, std::size_t(size)))
+        if (const auto problem = imageSizeProblem(header->width, header->height)) return refuse(ip + ": " + *problem);
+    // No user data: tinygltf's default decoding (rgba, 8 or 16 bits).
+    return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
+}
+
+std::string withoutTrailingNewlines(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+    return s;
+}
+
 } // namespace
 
 GltfAsset loadGltfAsset(const std::filesystem::path& file) {
@@ -245,23 +379,39 @@ GltfAsset loadGltfAsset(const std::filesystem::path& file) {
     if (!std::filesystem::is_regular_file(file)) throw GltfError(name + ": cannot read: no such file");
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
+    ImageLoad images{&model};
+    loader.SetImageLoader(&loadImageChecked, &images);
     std::string err, warn;
     const bool binary = file.extension() == ".glb" || file.extension() == ".GLB";
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+    if (!binary) {   // tinygltf accepts a NUL byte, and anything after it, behind the JSON document
+        std::ifstream in(file, std::ios::binary);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+            throw GltfError(name + ": byte " + std::to_string(nul) + " is a NUL byte (a .gltf file is JSON text)");
+    }
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name) : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+    } catch (const std::bad_alloc&) {
+        throw GltfError(name + ": cannot parse: not enough memory");
+    } catch (const std::exception& e) {
+        throw GltfError(name + ": cannot parse: " + e.what());
+    }
     if (!ok) {
-        while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
+        err = withoutTrailingNewlines(err);
+        if (err.rfind("[json.exception.", 0) == 0 && err.find("] ") != std::string::npos)
+            err.erase(0, err.find("] ") + 2);   // nlohmann's exception id, not for readers
         throw GltfError(name + ": " + (err.empty() ? std::string("cannot parse") : err));
     }
     GltfAsset asset;
     Mesh& mesh = asset.mesh;
-    Reader reader{model, name, mesh};
+    Reader reader{model, name, mesh, false, {}};
     if (model.scenes.empty()) {
-        for (std::size_t i = 0; i < model.nodes.size(); ++i) reader.node(int(i), glm::mat4(1.0f), 0);
+        for (std::size_t i = 0; i < model.nodes.size(); ++i) reader.tree({int(i)}, "nodes");
     } else {
-        const std::size_t s = model.defaultScene >= 0 ? std::size_t(model.defaultScene) : 0;
-        if (s >= model.scenes.size()) throw GltfError(name + ": bad default scene");
-        for (int n : model.scenes[s].nodes) reader.node(n, glm::mat4(1.0f), 0);
+        const int s = model.defaultScene >= 0 ? model.defaultScene : 0;
+        if (auto bad = badIndex(s, model.scenes.size(), "a scene")) throw GltfError(name + ": scene: " + *bad);
+        reader.tree(model.scenes[std::size_t(s)].nodes, at("scenes", std::size_t(s)) + ".nodes");
     }
     // Normals and uvs are all-or-nothing per mesh (a primitive without them drops them all).
     if (mesh.normals.size() != mesh.positions.size()) mesh.normals.clear();
@@ -285,10 +435,8 @@ GltfAsset loadGltfAsset(const std::filesystem::path& file) {
     for (const std::string& e : model.extensionsRequired)
         if (e != "KHR_materials_emissive_strength")
             asset.warnings.push_back(name + ": extensionsRequired: " + e + " is not supported; the file may look different");
-    if (!warn.empty()) {
-        while (!warn.empty() && (warn.back() == '\n' || warn.back() == '\r')) warn.pop_back();
-        asset.warnings.push_back(name + ": " + warn);
-    }
+    warn = withoutTrailingNewlines(warn);
+    if (!warn.empty()) asset.warnings.push_back(name + ": " + warn);
     return asset;
 }
 

@@ -1,11 +1,14 @@
 #include "texture/texture.h"
 
+#include "texture/image_size.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <new>
 #include <string>
 
 namespace raylab {
@@ -53,19 +56,30 @@ Texture loadTexture(const std::filesystem::path& path, bool linearData) {
     }
     const ImageSpec& spec = in->spec();
     const int w = spec.width, h = spec.height, c = spec.nchannels;
-    if (w <= 0 || h <= 0 || c <= 0) throw TextureError(name + ": empty image");
-    std::vector<float> raw(std::size_t(w) * std::size_t(h) * std::size_t(c));
-    if (!in->read_image(0, 0, 0, c, TypeDesc::FLOAT, raw.data()))
-        throw TextureError(name + ": " + in->geterror());
-    const bool encoded = !linearData && !spec.format.is_floating_point();
+    if (const auto problem = imageSizeProblem(w, h)) throw TextureError(name + ": " + *problem);
+    if (c <= 0) throw TextureError(name + ": the image has no channels");
+    if (spec.depth > 1 || spec.deep) throw TextureError(name + ": volume and deep images are not supported");
+    const int read = std::min(c, 4);   // rgba: further channels are never used
     MipLevel base;
     base.width = w;
     base.height = h;
-    base.texels.resize(std::size_t(w) * std::size_t(h));
+    std::vector<float> raw;
+    try {
+        raw.resize(std::size_t(w) * std::size_t(h) * std::size_t(read));
+        base.texels.resize(std::size_t(w) * std::size_t(h));
+    } catch (const std::bad_alloc&) {
+        throw TextureError(name + ": not enough memory for a " + std::to_string(w) + "x" + std::to_string(h) + " image");
+    }
+    if (!in->read_image(0, 0, 0, read, TypeDesc::FLOAT, raw.data())) {
+        std::string err = in->geterror();
+        if (err.empty()) err = "cannot read the pixels";
+        throw TextureError(name + ": " + err);
+    }
+    const bool encoded = !linearData && !spec.format.is_floating_point();
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const float* p = &raw[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * std::size_t(c)];
-            glm::vec4 v(p[0], c > 1 ? p[1] : p[0], c > 2 ? p[2] : p[0], c > 3 ? p[3] : 1.0f);
+            const float* p = &raw[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * std::size_t(read)];
+            glm::vec4 v(p[0], read > 1 ? p[1] : p[0], read > 2 ? p[2] : p[0], read > 3 ? p[3] : 1.0f);
             if (encoded)
                 for (int k = 0; k < 3; ++k) v[k] = srgbDecode(v[k]);
             // Files store the top row first; v = 0 is the bottom (OpenGL convention).
@@ -80,6 +94,7 @@ Texture textureFromPixels(const unsigned char* pixels, int width, int height, in
     if (width <= 0 || height <= 0 || channels <= 0 || (bits != 8 && bits != 16))
         throw TextureError("unsupported image layout (" + std::to_string(width) + "x" + std::to_string(height) + ", " +
                            std::to_string(channels) + " channels, " + std::to_string(bits) + " bits)");
+    if (const auto problem = imageSizeProblem(width, height)) throw TextureError(*problem);
     const std::size_t bytes = std::size_t(bits / 8);
     auto value = [&](std::size_t i) {
         if (bytes == 1) return float(pixels[i]) / 255.0f;

@@ -30,3 +30,19 @@ TEST(BenchCli, WritesTheFiguresTheMachineAndTheCommand) {
         EXPECT_NE(s.find(needle), std::string::npos) << needle << "\n" << s;
     fs::remove_all(dir);
 }
+
+TEST(BenchCli, NonFiniteAndOutOfRangeNumbersAreRefused) {
+    const fs::path dir = fs::temp_directory_path() / ("raylab_bench_args_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    for (const std::string args : {"--spp nan", "--spp 0", "--width 0", "--height 99999", "--repeat 0"}) {
+        const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE + "' " + args +
+                                " --results '' > '" + (dir / "out.txt").string() + "' 2>&1";
+        const int raw = std::system(cmd.c_str());
+        ASSERT_TRUE(WIFEXITED(raw)) << args;
+        std::stringstream log;
+        log << std::ifstream(dir / "out.txt").rdbuf();
+        EXPECT_EQ(WEXITSTATUS(raw), 2) << args << "\n" << log.str();
+        EXPECT_NE(log.str().find(args.substr(0, args.find(' ')) + ":"), std::string::npos) << args << "\n" << log.str();
+    }
+    fs::remove_all(dir);
+}

@@ -212,3 +212,50 @@ TEST(RenderCli, SigintWritesThePartialImageAndExits130) {
     EXPECT_GT(spp, 0);
     EXPECT_LT(spp, 1000000);
 }
+
+TEST(RenderCli, NonFiniteAndOutOfRangeNumbersAreRefusedAsTheSceneFileWould) {
+    const struct {
+        const char* args;
+        const char* message;
+    } cases[] = {
+        {"--time nan", "--time: as render.time, must be finite, got nan"},
+        {"--time inf", "--time: as render.time, must be finite, got inf"},
+        {"--time -1", "--time: as render.time, must be >= 0, got -1"},
+        {"--time 1e300", "--time: as render.time, "},
+        {"--time 0x10", "--time: expected a number, got '0x10'"},
+        {"--spp 0", "--spp: as render.spp, must be >= 1, got 0"},
+        {"--width 16385", "--width: as render.width, must be in [1, 16384], got 16385"},
+        {"--height -4", "--height: as render.height, must be in [1, 16384], got -4"},
+        {"--rpp 2000", "--rpp: as render.rpp, must be in [1, 1024], got 2000"},
+        {"--seed 4294967296", "--seed: as render.seed, must be in [0, 4294967295], got 4294967296"},
+        {"--seed nan", "--seed: as render.seed, must be finite, got nan"},
+    };
+    for (const auto& c : cases) {
+        const CliRun r = render(std::string("scenes/default.json -q -o /tmp/raylab_never_written.png ") + c.args);
+        EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+        EXPECT_LT(r.err.size(), 400u) << c.args << ": " << r.err;
+    }
+    EXPECT_FALSE(fs::exists("/tmp/raylab_never_written.png"));
+}
+
+TEST(RenderCli, MalformedMeshesAndImagesExitOneWithALocatedErrorAndNoImage) {
+    const fs::path corpus = fs::path(RAYLAB_SOURCE_DIR) / "tests" / "data" / "malformed";
+    const fs::path png = scratchDir() / "never.png";
+    for (const char* file : {"obj_normal_index_past_end.obj", "gltf_view_names_missing_buffer.gltf",
+                             "gltf_accessor_offset_wraps.gltf", "image_png_65535_square.png"}) {
+        const bool image = std::string(file).rfind("image_", 0) == 0;
+        const fs::path scene = writeScene(
+            "malformed.json", image ? R"({ "materials": { "m": { "albedo_texture": ")" + (corpus / file).string() +
+                                          R"(" } }, "objects": [ { "material": "m" } ] })"
+                                    : R"({ "objects": [ { "type": "mesh", "file": ")" + (corpus / file).string() + R"(" } ] })");
+        const CliRun r = render("'" + scene.string() + "' -q -o '" + png.string() + "'");
+        EXPECT_EQ(r.status, 1) << file << "\n" << r.err;
+        EXPECT_EQ(r.err.rfind(scene.string() + ":1:", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find(std::string(image ? "materials.m.albedo_texture: " : "objects[0].file: ") +
+                             (corpus / file).string() + ":"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_FALSE(fs::exists(png)) << file;
+    }
+}

@@ -5,6 +5,8 @@
 
 #include <unistd.h>
 
+#include <fstream>
+
 using namespace raylab;
 namespace fs = std::filesystem;
 
@@ -88,4 +90,24 @@ TEST(ImageIo, BadPathsAndFormatsFailWithTheFileNamed) {
         EXPECT_NE(std::string(e.what()).find("unsupported output format '.bmpx'"), std::string::npos) << e.what();
     }
     EXPECT_THROW(readImage("/nonexistent_dir_raylab/in.exr"), ImageIoError);
+}
+
+TEST(ImageIo, ReadsRefuseForgedSizesBeforeAllocatingAndNameTheFile) {
+    const fs::path wide = scratch("wide.hdr");
+    std::ofstream(wide, std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 40000\n" << std::string(16, '\0');
+    try {
+        readImage(wide);
+        FAIL() << "no error";
+    } catch (const ImageIoError& e) {
+        EXPECT_EQ(std::string(e.what()), wide.string() + ": error: cannot read: 40000x2 is larger than raylab reads "
+                                                          "(at most 32768 pixels per side)");
+    }
+    const fs::path garbage = scratch("garbage.exr");
+    std::ofstream(garbage, std::ios::binary) << "not an image";
+    try {
+        readImage(garbage);
+        FAIL() << "no error";
+    } catch (const ImageIoError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(garbage.string() + ": error: cannot read: ", 0), 0u) << e.what();
+    }
 }

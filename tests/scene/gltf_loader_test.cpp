@@ -1,5 +1,6 @@
 // glTF 2.0 meshes: a small file written here (embedded base64 buffer, a two-level node
 // hierarchy), loaded through the scene's "file" key.
+#include "scene/gltf_loader.h"
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -98,4 +99,48 @@ TEST(GltfLoader, NodeTransformsAttributesAndIndices) {
             << msg;
     }
     fs::remove_all(dir);
+}
+
+namespace {
+
+// What loadGltf says about the triangle file with `from` replaced by `to`, after the file's name.
+std::string gltfErrorOf(const std::string& from, const std::string& to) {
+    std::string text = triangleGltf();
+    const std::size_t at = text.find(from);
+    if (at == std::string::npos) return "<'" + from + "' not in the file>";
+    text.replace(at, from.size(), to);
+    const fs::path dir = fs::temp_directory_path() / ("raylab_gltf_bad_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "bad.gltf";
+    std::ofstream(file) << text;
+    try {
+        loadGltf(file);
+    } catch (const GltfError& e) {
+        const std::string msg = e.what();
+        return msg.rfind(file.string() + ": ", 0) == 0 ? msg.substr(file.string().size() + 2) : "(file not named) " + msg;
+    }
+    return "<no error>";
+}
+
+} // namespace
+
+TEST(GltfLoader, AccessorsAndIndicesAreCheckedWithoutOverflow) {
+    const std::string view0 = R"({ "buffer": 0, "byteOffset": 0, "byteLength": 36 })";
+    EXPECT_EQ(gltfErrorOf(R"("count": 3, "type": "VEC2")", R"("count": 3, "type": "VEC2", "byteOffset": 18446744073709551608)"),
+              "accessors[2]: byteOffset 18446744073709551608 + count 3 x stride 8 is past the end of bufferViews[2] "
+              "(byteLength 24)");
+    EXPECT_EQ(gltfErrorOf(R"("count": 3, "type": "VEC3", "min")", R"("count": 4611686018427387905, "type": "VEC3", "min")"),
+              "accessors[0]: byteOffset 0 + count 4611686018427387905 x stride 12 is past the end of bufferViews[0] "
+              "(byteLength 36)");
+    EXPECT_EQ(gltfErrorOf(view0, R"({ "buffer": 3, "byteOffset": 0, "byteLength": 36 })"),
+              "bufferViews[0].buffer: 3 is not a buffer (1 in the file)");
+    EXPECT_EQ(gltfErrorOf(view0, R"({ "buffer": 0, "byteOffset": 100, "byteLength": 36 })"),
+              "bufferViews[0]: byteOffset 100 + byteLength 36 is past the end of buffers[0] (104 bytes)");
+    EXPECT_EQ(gltfErrorOf(R"("TEXCOORD_0": 2)", R"("TEXCOORD_0": 7)"),
+              "meshes[0].primitives[0].attributes.TEXCOORD_0: 7 is not an accessor (4 in the file)");
+    EXPECT_EQ(gltfErrorOf(R"("componentType": 5123, "count": 3, "type": "SCALAR")",
+                          R"("componentType": 5123, "count": 3, "type": "VEC2")"),
+              "accessors[3].type: meshes[0].primitives[0].indices needs 1 component per element, got 2");
+    EXPECT_EQ(gltfErrorOf(R"("scale": [2, 2, 2])", R"("scale": [2, 1e39, 2])"), "nodes[1].scale[1]: not a finite 32-bit float");
+    EXPECT_EQ(gltfErrorOf(R"("children": [1])", R"("children": [0])"), "nodes[0]: the node is reached twice (glTF nodes form a tree)");
 }

@@ -1,5 +1,6 @@
 // Meshes and transforms in scene files: inline arrays, OBJ files (relative to the scene), errors
 // that name the place (and the OBJ file), and the round trip through sceneToJson.
+#include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
 #include "scene/transform.h"
 
@@ -155,4 +156,48 @@ TEST(MeshLoader, InlineMeshesAndTransformsRoundTrip) {
     EXPECT_EQ(again.meshes[0].uvs, s.meshes[0].uvs);
     EXPECT_EQ(again.meshes[0].transform, s.meshes[0].transform);
     EXPECT_EQ(again.materials[size_t(again.meshes[0].material)].name, "m");
+}
+
+namespace {
+
+// What loadObj says about an OBJ text, or "<no error>".
+std::string objErrorOf(const std::string& text) {
+    const fs::path file = scratch("objtext") / "m.obj";
+    std::ofstream(file, std::ios::binary) << text;
+    try {
+        loadObj(file);
+    } catch (const ObjError& e) {
+        const std::string msg = e.what();
+        return msg.rfind(file.string(), 0) == 0 ? msg.substr(file.string().size()) : "(file not named) " + msg;
+    }
+    return "<no error>";
+}
+
+} // namespace
+
+TEST(MeshLoader, ObjProblemsNameTheLineAndWhatIsWrong) {
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    EXPECT_EQ(objErrorOf(tri + "vn 0 0 1\nf 1//1 2//1 3//2\n"),
+              ":5: face vertex '3//2': normal index 2 is out of range (1 normals)");
+    EXPECT_EQ(objErrorOf(tri + "vt 0 0\nf 1/1 2/1 3/3\n"),
+              ":5: face vertex '3/3': texture coordinate index 3 is out of range (1 texture coordinates)");
+    EXPECT_EQ(objErrorOf(tri + "f 1 2\n"), ":4: a face needs at least 3 vertices, got 2");
+    EXPECT_EQ(objErrorOf(tri + "f 1 2 4\n"), ":4: face vertex '4': position index 4 is out of range (3 positions)");
+    EXPECT_EQ(objErrorOf("v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"),
+              ":2: a vertex position: 'nan' is not a finite 32-bit float");
+    EXPECT_EQ(objErrorOf("v 0 0 0\nv 1 zero 0\nv 0 1 0\nf 1 2 3\n"), ":2: a vertex position: 'zero' is not a number");
+    EXPECT_EQ(objErrorOf(tri + "f 1 2 3\nf 3 2 1/"), ":5: face vertex '1/' is incomplete (expected v, v/vt, v//vn or v/vt/vn)");
+    EXPECT_EQ(objErrorOf(tri + "f -1 -2 -4\n"), ":4: face vertex '-4': position index -4 is out of range (3 positions so far)");
+}
+
+TEST(MeshLoader, ObjMaterialsGroupsAndCommentsAreIgnored) {
+    const Mesh m = [] {
+        const fs::path file = scratch("objok") / "m.obj";
+        std::ofstream(file) << "mtllib missing.mtl\no thing\ng\nusemtl red\nv 0 0 0 # origin\nv 1 0 0\n"
+                               "v 0 1 0\nv 1 1 0\r\nvt 0.5\nf 1/1 2/1 3/1\ns off\nf -3/1 -2/1 -1/1\nl 1 2\n";
+        return loadObj(file);
+    }();
+    EXPECT_EQ(m.triangles.size(), 2u);
+    EXPECT_EQ(m.positions.size(), 4u);
+    EXPECT_EQ(m.uvs.size(), 4u);
 }

@@ -2,6 +2,7 @@
 // files written here through OpenImageIO, named by a scene file, loaded by the scene loader, and
 // their texels checked. PNG and EXR are also covered through the GPU (render/texture_render_test).
 #include "scene/scene_loader.h"
+#include "texture/texture.h"
 #include "shaders/include/tone_map.glsl"
 
 #include <OpenImageIO/imageio.h>
@@ -119,4 +120,22 @@ TEST(TextureFormats, JpegTiffAndHdrLoadThroughTheSceneFile) {
                 }
     EXPECT_EQ(probes, 4 * 64);
     fs::remove_all(dir);
+}
+
+TEST(TextureFormats, ForgedSizesAreRefusedFromTheHeaderWithTheFileNamed) {
+    // Headers that claim more pixels than raylab reads, with next to no pixel data behind them.
+    const fs::path corpus = fs::path(RAYLAB_SOURCE_DIR) / "tests" / "data" / "malformed";
+    for (const auto& [file, expected] :
+         {std::pair<std::string, std::string>{"image_png_too_many_pixels.png",
+                                              ": 16000x16800 is larger than raylab reads (at most 268435456 pixels)"},
+          {"image_hdr_huge.hdr", ": 100000x100000 is larger than raylab reads (at most 32768 pixels per side)"},
+          {"image_exr_wide.exr", ": 100000x1 is larger than raylab reads (at most 32768 pixels per side)"},
+          {"image_exr_text.exr", ": "}}) {
+        try {
+            loadTexture(corpus / file);
+            ADD_FAILURE() << file << ": no error";
+        } catch (const TextureError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind((corpus / file).string() + expected, 0), 0u) << e.what();
+        }
+    }
 }
