@@ -62,6 +62,7 @@ using PathInspectorTest = GlTest;
 
 // Every scene case and every render stage: the recorded terms multiply out to the sample's value,
 // and the throughput chains through the bounces (path_checks.h).
+// ctest: slow
 TEST_F(PathInspectorTest, RecordedTermsMultiplyOutToTheSampleValue) {
     struct Case {
         const char* scene;

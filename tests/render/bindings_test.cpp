@@ -52,7 +52,7 @@ const std::regex kLiteralPoint(
 TEST(Bindings, NoShaderOrHostFileWritesABindingPointAsANumber) {
     const fs::path root = RAYLAB_SOURCE_DIR;
     int files = 0;
-    for (const char* top : {"shaders", "src", "tests/support"})
+    for (const char* top : {"shaders", "src", "ui", "tests/support"})
         for (const auto& e : fs::recursive_directory_iterator(root / top)) {
             const std::string ext = e.path().extension().string();
             if (ext != ".glsl" && ext != ".comp" && ext != ".frag" && ext != ".vert" && ext != ".cpp" && ext != ".h")
@@ -66,4 +66,19 @@ TEST(Bindings, NoShaderOrHostFileWritesABindingPointAsANumber) {
                     << "name of shaders/include/bindings.glsl\n    " << line;
         }
     EXPECT_GT(files, 50);
+}
+
+// The GPU belongs to src/render: the viewer binds no buffer, image or texture unit itself.
+TEST(Bindings, TheViewerBindsNoBufferOfItsOwn) {
+    const fs::path root = RAYLAB_SOURCE_DIR;
+    const std::regex bind(R"(glBind(BufferBase|BufferRange|TextureUnit|ImageTexture)\s*\()");
+    for (const auto& e : fs::recursive_directory_iterator(root / "ui")) {
+        if (e.path().extension() != ".cpp" && e.path().extension() != ".h") continue;
+        std::ifstream in(e.path());
+        std::string line;
+        for (int n = 1; std::getline(in, line); ++n)
+            EXPECT_FALSE(std::regex_search(line, bind))
+                << fs::relative(e.path(), root).string() << ":" << n << ": binds a GPU resource; that is src/render's job\n    "
+                << line;
+    }
 }

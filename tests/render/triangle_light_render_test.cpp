@@ -61,6 +61,7 @@ Scene lampScene(std::vector<std::string> overrides) { return parseScene(kLampSce
 // its per-pixel batch means are far from normal (most batches 0 or one hit in dim pixels) and a
 // per-pixel z-test would reject a correct estimator; it is compared on 4 × 4 pixel blocks
 // (z-test at α = 0.01, Šidák over blocks and channels), every block must agree.
+// ctest: slow
 TEST_F(TriangleLightRenderTest, CornellBoxNeeBsdfAndMisAgree) {
     constexpr int batches = 32;
     const BatchStats bsdf = renderBatches(cornell({"render.nee=false"}), batches);
@@ -89,6 +90,7 @@ TEST_F(TriangleLightRenderTest, TwoSidedTransformedTriangleLampAgreesAcrossStrat
     EXPECT_LT(test::fractionOfBlocksAgreeing(bsdf, dimmer, 16, 4), 0.75);
 }
 
+// ctest: slow
 TEST_F(TriangleLightRenderTest, MisHasLowerErrorThanBsdfSamplingOnTheCornellBox) {
     // Equal samples per pixel (16), 32×32; the reference is MIS at 1024 spp (another seed).
     auto with = [](std::vector<std::string> more) {

@@ -72,6 +72,7 @@ SweepResult chiSquareOfBsdf(const BsdfParams& m, vec3 wo, float lobeWidth, int n
 
 } // namespace
 
+// ctest: slow
 TEST(ShaderBsdf, GgxVisibleNormalAndPlasticSamplersMatchTheirPdfAcrossTheSweep) {
     // Metal (F = 1, specular only) and plastic (f0 0.04 over albedo 0.5: both lobes), over the
     // α × cosθ sweep: 40 tests, Šidák-corrected α = 0.01, 10^6 samples each.
@@ -95,6 +96,7 @@ TEST(ShaderBsdf, GgxVisibleNormalAndPlasticSamplersMatchTheirPdfAcrossTheSweep) 
             }
 }
 
+// ctest: slow
 TEST(ShaderBsdf, RoughDielectricSamplerMatchesItsPdfAcrossTheSweep) {
     // Walter et al. 2007 glass (transmission 1) with visible normals: α × cosθ × IOR {1.5, 1/1.5}
     // (IOR 1/1.5 = leaving glass of index 1.5: wo inside). Cells centred on the smooth refraction

@@ -55,6 +55,7 @@ TEST_F(GpuSamplingTest, CosineHemisphereFromTheShaderMatchesItsPdf) {
     EXPECT_GT(chi.pValue, 0.01) << "chi2 " << chi.statistic << " dof " << chi.dof;
 }
 
+// ctest: slow
 TEST_F(GpuSamplingTest, GgxVisibleNormalsAndPlasticFromTheShaderMatchTheirPdfAcrossTheSweep) {
     // Same sweep as the CPU test (ShaderBsdf.*Sweep): metal F = 1 and plastic, α × cosθ,
     // 40 tests, Šidák-corrected α = 0.01, 10^6 GPU samples each. The pdf each sample reports
@@ -104,6 +105,7 @@ TEST_F(GpuSamplingTest, GgxVisibleNormalsAndPlasticFromTheShaderMatchTheirPdfAcr
             }
 }
 
+// ctest: slow
 TEST_F(GpuSamplingTest, RoughGlassFromTheShaderMatchesItsPdfAcrossTheSweep) {
     // Walter et al. 2007 glass (transmission 1: rough reflection and refraction) sampled by the
     // shader over the whole sweep of the CPU test (ShaderBsdf.RoughDielectric*): 5 α × 4 cosθ ×

@@ -81,8 +81,8 @@ TEST_P(EveryLessonStep, AppliesInTheViewer) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Lessons, EveryLessonStep, testing::ValuesIn(lessonFiles()),
-                         [](const testing::TestParamInfo<std::string>& info) {
-                             std::string n = info.param.substr(0, info.param.size() - 3);
+                         [](const testing::TestParamInfo<std::string>& step) {
+                             std::string n = step.param.substr(0, step.param.size() - 3);
                              for (char& ch : n)
                                  if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
                              return n;
