@@ -4,6 +4,8 @@
 #   window  the test file runs the viewer program under Xvfb;
 #   cpu     neither of those;
 #   slow    the test is marked with a `// ctest: slow` line right above its TEST line.
+# A test has one label, its kind with `-slow` appended when marked (gtest_discover_tests flattens
+# a list of labels); ctest's -L and -LE take regular expressions, so `-L gl` also selects gl-slow.
 # `ctest -LE 'gl|window|slow'` is the quick subset. Tests the scan does not recognise are still
 # registered, unlabelled, so none is ever dropped.
 
@@ -37,6 +39,8 @@ endfunction()
 #                                PROPERTIES test properties...): gtest_discover_tests once per group.
 function(raylab_discover_labelled_tests target)
   cmake_parse_arguments(ARG "" "" "SOURCES;OPTIONS;PROPERTIES" ${ARGN})
+  # The labels are read from the sources: an edited test file re-runs the scan.
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${ARG_SOURCES})
   _raylab_gl_headers("${CMAKE_CURRENT_SOURCE_DIR}" gl_headers)
   set(groups "")
   set(all "")
@@ -67,7 +71,7 @@ function(raylab_discover_labelled_tests target)
       if(t MATCHES "TEST_P\\(")
         set(name "*/${name}/*")
       endif()
-      list(JOIN labels "+" group)
+      list(JOIN labels "-" group)
       if(NOT group IN_LIST groups)
         list(APPEND groups "${group}")
         set(patterns_${group} "")
@@ -78,8 +82,7 @@ function(raylab_discover_labelled_tests target)
   endforeach()
   foreach(group IN LISTS groups)
     list(JOIN patterns_${group} ":" filter)
-    string(REPLACE "+" ";" labels "${group}")
-    gtest_discover_tests(${target} TEST_FILTER "${filter}" ${ARG_OPTIONS} PROPERTIES LABELS "${labels}" ${ARG_PROPERTIES})
+    gtest_discover_tests(${target} TEST_FILTER "${filter}" ${ARG_OPTIONS} PROPERTIES LABELS "${group}" ${ARG_PROPERTIES})
   endforeach()
   list(JOIN all ":" every)
   gtest_discover_tests(${target} TEST_FILTER "-${every}" ${ARG_OPTIONS} PROPERTIES ${ARG_PROPERTIES})
