@@ -7,7 +7,7 @@
 #ifndef RAYLAB_DEBUG_VIEWS_GLSL
 #define RAYLAB_DEBUG_VIEWS_GLSL
 #include "compat.glsl"
-#include "random.glsl"
+#include "sampler.glsl"
 #include "ray.glsl"
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
@@ -43,7 +43,7 @@ bool debugKeepBounce(int bounce) {
 }
 #define RAYLAB_KEEP_BOUNCE(bounce) debugKeepBounce(bounce)
 
-vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays);   // integrator.glsl, included after this file
+vec3 traceRadiance(Ray ray, inout Sampler smp, inout uint rays);   // integrator.glsl, included after this file
 
 // A colour per id that neighbouring ids do not share (golden-ratio hue steps).
 vec3 debugIdColor(uint id) {
@@ -62,9 +62,9 @@ layout(std430, binding = BINDING_DEBUG_HEAT_MAX) buffer DebugHeatMaxBuffer { uin
 // miss); the display shader maps it to grey. The heat maps count the tests of this ray only (the
 // primary ray), not of the path's later bounces or shadow rays.
 
-vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
+vec3 debugSample(Ray ray, inout Sampler smp, inout uint rays) {
     if (uDebugView == DEBUG_BEAUTY || (uDebugView >= DEBUG_FIRST_DISPLAY_ONLY && uDebugView <= DEBUG_INDIRECT))
-        return traceRadiance(ray, rng, rays);   // views 7-9: filtered by the hook above
+        return traceRadiance(ray, smp, rays);   // views 7-9: filtered by the hook above
     Hit hit;
     ++rays;
 #if RAYLAB_COUNT_TRAVERSAL

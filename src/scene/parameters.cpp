@@ -162,6 +162,15 @@ std::vector<ParamSpec> buildSceneTable() {
               {"textures", static_cast<int>(RenderStage::Textures)},
               {"full", static_cast<int>(RenderStage::Full)}}),
         [](auto& s) -> auto& { return s.render.stage; });
+    add(spec("render.sampler", T::Enum, kAny, kAny, "",
+             "How each path's random numbers are made: independent (hashed PCG), stratified (jittered "
+             "strata, in a random order per pixel and dimension) or sobol (Owen-scrambled Sobol, Burley "
+             "2020). Dimensions: pixel 0-1, lens 2-3, then 8 per bounce from 4 (sampler.glsl).",
+             G::RecompileShader,
+             {{"independent", static_cast<int>(SamplerKind::Independent)},
+              {"stratified", static_cast<int>(SamplerKind::Stratified)},
+              {"sobol", static_cast<int>(SamplerKind::Sobol)}}),
+        [](auto& s) -> auto& { return s.render.sampler; });
 
     // --- sky ---
     add(spec("sky.type", T::Enum, kAny, kAny, "",
