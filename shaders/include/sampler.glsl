@@ -133,14 +133,6 @@ RL_FN float sobolSample1D(uvec2 pixel, uint index, uint dim, uint seed) {
     return sampleUnitFloat(nestedUniformScramble(sobolBits(i, dim & 3u), hashCombine(h.y, dim & 3u)));
 }
 
-RL_FN vec2 sobolSample2D(uvec2 pixel, uint index, uint dim, uint seed) {
-    uvec4 h = pcg4d(uvec4(pixel.x, pixel.y, dim >> 2u, seed));
-    uint i = nestedUniformScramble(index, h.x);
-    uint d = dim & 3u;
-    return vec2(sampleUnitFloat(nestedUniformScramble(sobolBits(i, d), hashCombine(h.y, d))),
-                sampleUnitFloat(nestedUniformScramble(sobolBits(i, d + 1u), hashCombine(h.y, d + 1u))));
-}
-
 // --- the sampler the tracer was compiled with ---
 
 struct Sampler {
@@ -166,13 +158,14 @@ RL_FN float sample1D(RL_INOUT(Sampler) s, uint dim) {
 #endif
 }
 
+// Dimensions dim and dim + 1; stratified's cells are 2D, the others' pairs are two 1D numbers.
 RL_FN vec2 sample2D(RL_INOUT(Sampler) s, uint dim) {
-#if RAYLAB_SAMPLER == RAYLAB_SAMPLER_SOBOL
-    return sobolSample2D(s.pixel, s.index, dim, s.seed);
-#elif RAYLAB_SAMPLER == RAYLAB_SAMPLER_STRATIFIED
+#if RAYLAB_SAMPLER == RAYLAB_SAMPLER_STRATIFIED
     return stratifiedSample2D(s.pixel, s.index, dim, s.seed, s.count);
 #else
-    return rngNext2(s.rng);
+    float a = sample1D(s, dim);
+    float b = sample1D(s, dim + 1u);
+    return vec2(a, b);
 #endif
 }
 

@@ -22,7 +22,7 @@ const char* name(Kind k) { return k == Kind::Independent ? "independent" : k == 
 vec2 point2D(Kind kind, uvec2 pixel, uint index, uint dim, uint seed, uint count) {
     switch (kind) {
     case Kind::Stratified: return stratifiedSample2D(pixel, index, dim, seed, count);
-    case Kind::Sobol: return sobolSample2D(pixel, index, dim, seed);
+    case Kind::Sobol: return vec2(sobolSample1D(pixel, index, dim, seed), sobolSample1D(pixel, index, dim + 1u, seed));
     default: {
         Rng rng = rngCreate(pixel, index, seed);
         for (uint d = 0; d < dim; ++d) rngNextFloat(rng);
@@ -118,7 +118,7 @@ TEST(Sampler, SobolIsAZeroTwoNetInEachPixel) {
     for (uint px = 0; px < 4; ++px) {
         std::vector<int> cells(256, 0);
         for (uint s = 0; s < 256; ++s) {
-            const vec2 u = sobolSample2D(uvec2(px, 2u), s, SAMPLE_DIM_PIXEL, 1u);
+            const vec2 u = point2D(Kind::Sobol, uvec2(px, 2u), s, SAMPLE_DIM_PIXEL, 1u, 256u);
             ++cells[size_t(u.x * 16.0f) + 16 * size_t(u.y * 16.0f)];
         }
         EXPECT_EQ(*std::min_element(cells.begin(), cells.end()), 1) << "pixel " << px;
