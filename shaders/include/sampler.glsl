@@ -154,6 +154,9 @@ RL_FN float sample1D(RL_INOUT(Sampler) s, uint dim) {
 #elif RAYLAB_SAMPLER == RAYLAB_SAMPLER_STRATIFIED
     return stratifiedSample1D(s.pixel, s.index, dim, s.seed, s.count);
 #else
+#ifdef __cplusplus
+    (void)dim;
+#endif
     return rngNextFloat(s.rng);
 #endif
 }
