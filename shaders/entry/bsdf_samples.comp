@@ -73,8 +73,8 @@ void main() {
     if (uMode == 5) {
         // x: the light picked (-1 the sky), y: its probability, z: boundedLightPmf of it.
         float pmf;
-        Rng pick = rngCreate(uvec2(i, 1u), 0u, params.seed);
-        int k = selectLight(pick, pmf);
+        Sampler pick = samplerCreate(uvec2(i, 1u), 0u, params.seed, 1u);
+        int k = selectLight(pick, 0u, pmf);
         samples[i] = SampleRecord(vec4(float(k), pmf, k >= 0 ? boundedLightPmf(k) : 0.0, 0.0), vec4(0.0));
         return;
     }

@@ -7,7 +7,7 @@
 #include "compat.glsl"
 #include "debug_view_table.glsl"
 #include "frame.glsl"
-#include "random.glsl"
+#include "sampler.glsl"
 #include "ray.glsl"
 #include "sampling.glsl"
 #include "scene_data.glsl"
@@ -30,7 +30,7 @@ bool debugKeepBounce(int bounce) {
 }
 #define RAYLAB_KEEP_BOUNCE(bounce) debugKeepBounce(bounce)
 
-vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays);   // integrator.glsl, included after this file
+vec3 traceRadiance(Ray ray, inout Sampler smp, inout uint rays);   // integrator.glsl, included after this file
 
 // A colour per id that neighbouring ids do not share (golden-ratio hue steps).
 vec3 debugIdColor(uint id) {
@@ -67,10 +67,10 @@ float debugAmbientOcclusion(Ray ray, Hit hit, inout Rng rng, inout uint rays) {
 // miss); the display shader maps it to grey. The heat maps count the tests of this ray only (the
 // primary ray), not of the path's later bounces or shadow rays.
 
-vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
+vec3 debugSample(Ray ray, inout Sampler smp, inout uint rays) {
     if (uDebugView == DEBUG_BEAUTY || uDebugView == DEBUG_NON_FINITE || uDebugView == DEBUG_NOISE ||
         uDebugView == DEBUG_BOUNCE_K || uDebugView == DEBUG_DIRECT || uDebugView == DEBUG_INDIRECT)
-        return traceRadiance(ray, rng, rays);   // the bounce views: filtered by the hook above
+        return traceRadiance(ray, smp, rays);   // the bounce views: filtered by the hook above
     Hit hit;
     ++rays;
 #if RAYLAB_COUNT_TRAVERSAL
@@ -95,7 +95,7 @@ vec3 debugSample(Ray ray, inout Rng rng, inout uint rays) {
     if (uDebugView == DEBUG_ALBEDO) return materials[hit.material].albedo.rgb;
     if (uDebugView == DEBUG_DEPTH) return vec3(hit.t);
     if (uDebugView == DEBUG_OBJECT_ID) return debugIdColor(instanceObjectId(instances[hit.instance]));
-    if (uDebugView == DEBUG_AO) return vec3(debugAmbientOcclusion(ray, hit, rng, rays));
+    if (uDebugView == DEBUG_AO) return vec3(debugAmbientOcclusion(ray, hit, smp.rng, rays));
     return debugIdColor(hit.material);
 }
 

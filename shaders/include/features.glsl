@@ -61,4 +61,13 @@
 #define RAYLAB_STAGE RAYLAB_STAGE_FULL
 #endif
 
+// How a path's random numbers are made (render.sampler, scene.h SamplerKind; sampler.glsl). The
+// host sets RAYLAB_SAMPLER to one of them, so a variant holds only its own sampler's code.
+#define RAYLAB_SAMPLER_INDEPENDENT 0   // hashed PCG streams, numbers taken in call order
+#define RAYLAB_SAMPLER_STRATIFIED 1    // jittered strata in a per-pixel random order
+#define RAYLAB_SAMPLER_SOBOL 2         // Owen-scrambled Sobol (Burley 2020)
+#if !RAYLAB_SAMPLER
+#define RAYLAB_SAMPLER RAYLAB_SAMPLER_INDEPENDENT
+#endif
+
 #endif

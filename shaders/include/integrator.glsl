@@ -2,7 +2,7 @@
 #ifndef RAYLAB_INTEGRATOR_GLSL
 #define RAYLAB_INTEGRATOR_GLSL
 #include "compat.glsl"
-#include "random.glsl"
+#include "sampler.glsl"
 #include "frame.glsl"
 #include "sampling.glsl"
 #include "ray.glsl"
@@ -244,12 +244,12 @@ float shadowRayEnd(int k, Ray shadow, vec3 lightPoint) {
 // (light_selection.glsl), a direction towards it, the shadow ray, and the MIS weight against the
 // BSDF sample that could have found the same light (Veach 1997, §9.2). True when the light is seen;
 // Ld is then the path's contribution through it, beta included.
-bool sampleLd(Hit hit, ShadingPoint sp, SkyParams sky, vec3 beta, int bounce, inout Rng rng, inout uint rays,
+bool sampleLd(Hit hit, ShadingPoint sp, SkyParams sky, vec3 beta, int bounce, inout Sampler smp, inout uint rays,
               out vec3 Ld) {
     Ld = vec3(0.0f);
     float selectPmf;
-    int k = selectLight(rng, selectPmf);
-    LightSample ls = sampleLight(k, hit.position, rngNext2(rng), sky);
+    int k = selectLight(smp, sampleDim(bounce, SAMPLE_BOUNCE_LIGHT_CHOICE), selectPmf);
+    LightSample ls = sampleLight(k, hit.position, sample2D(smp, sampleDim(bounce, SAMPLE_BOUNCE_LIGHT)), sky);
     float lightPdf = ls.pdf * selectPmf;
     float misPdf = ls.misPdf * selectPmf;
     vec3 wiL = frameToLocal(sp.frame, ls.wi);
@@ -274,10 +274,11 @@ bool sampleLd(Hit hit, ShadingPoint sp, SkyParams sky, vec3 beta, int bounce, in
 
 // A direction from the BSDF. Pure Lambert (f0 0, no glass) takes the short path of the foundation:
 // the same random numbers and f·cos/pdf = ρ exactly, without the general code's cost.
-BsdfSample sampleScattering(ShadingPoint sp, inout Rng rng) {
-    vec2 u = rngNext2(rng);
+BsdfSample sampleScattering(ShadingPoint sp, int bounce, inout Sampler smp) {
+    vec2 u = sample2D(smp, sampleDim(bounce, SAMPLE_BOUNCE_BSDF));
 #if RAYLAB_GENERAL_BSDF
-    if (bsdfNeedsLobeChoice(sp.bsdf)) return bsdfSample(sp.bsdf, sp.wo, vec3(u.x, u.y, rngNextFloat(rng)));
+    if (bsdfNeedsLobeChoice(sp.bsdf))
+        return bsdfSample(sp.bsdf, sp.wo, vec3(u.x, u.y, sample1D(smp, sampleDim(bounce, SAMPLE_BOUNCE_LOBE))));
 #endif
     vec3 wi = sampleCosineHemisphere(u);
     return BsdfSample(sp.wo.z < 0.0f ? vec3(wi.x, wi.y, -wi.z) : wi, sp.bsdf.albedo, pdfCosineHemisphere(wi.z),
@@ -287,9 +288,9 @@ BsdfSample sampleScattering(ShadingPoint sp, inout Rng rng) {
 // Russian roulette (pbrt-v3 §13.7, as its PathIntegrator::Li applies it): the path survives with
 // q = its largest throughput component, at most 0.95, and is divided by q so the estimate stays
 // unbiased. pbrt-v4 takes max(beta·etaScale) without the cap.
-bool survivesRoulette(int bounce, inout vec3 beta, bool delta, inout Rng rng) {
+bool survivesRoulette(int bounce, inout vec3 beta, bool delta, inout Sampler smp) {
     float q = min(max(beta.r, max(beta.g, beta.b)), 0.95f);
-    bool survived = !(rngNextFloat(rng) >= q);   // a NaN q survives (the NaN guard counts it)
+    bool survived = !(sample1D(smp, sampleDim(bounce, SAMPLE_BOUNCE_ROULETTE)) >= q);   // a NaN q survives (the NaN guard counts it)
     RAYLAB_RECORD(recordRoulette(bounce, q, survived));
     if (!survived) return false;
     beta /= q;
@@ -300,7 +301,7 @@ bool survivesRoulette(int bounce, inout vec3 beta, bool delta, inout Rng rng) {
 // Radiance along one camera path (Kajiya 1986). beta is the path throughput: the product of
 // f·|cosθ|/pdf over the bounces so far. With params.nee, each bounce also adds a light sample;
 // emission that a BSDF sample reaches is then weighted so nothing is counted twice.
-vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
+vec3 traceRadiance(Ray ray, inout Sampler smp, inout uint rays) {
     SkyParams sky = SkyParams(params.skyType, params.skyColor, params.skyTop, params.skyBottom);
     int lightCount = neeLightCount();
     vec3 radiance = vec3(0.0f);
@@ -355,11 +356,11 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
         RAYLAB_RECORD(recordShadingFrame(bounce, sp.frame.n));
 #if RAYLAB_NEE
         vec3 Ld;
-        if (lightCount > 0 && sampleLd(hit, sp, sky, beta, bounce, rng, rays, Ld))
+        if (lightCount > 0 && sampleLd(hit, sp, sky, beta, bounce, smp, rays, Ld))
             RAYLAB_ADD_RADIANCE(radiance, bounce + 1, Ld);
 #endif
 
-        BsdfSample bs = sampleScattering(sp, rng);
+        BsdfSample bs = sampleScattering(sp, bounce, smp);
         vec3 dir = frameToWorld(sp.frame, bs.wi);
         // f·|cosθ| as the sampler used it (weight × pdf): a second bsdfEval of a narrow GGX lobe
         // differs from the sampler's by rounding the peak amplifies, and the inspector's columns
@@ -373,7 +374,7 @@ vec3 traceRadiance(Ray ray, inout Rng rng, inout uint rays) {
 #endif
         prev = PrevBounce(bs.pdf, bs.delta, hit.position);
         RAYLAB_RECORD(recordThroughput(bounce, beta, bs.delta));
-        if (bounce + 1 >= params.rrDepth && !survivesRoulette(bounce, beta, bs.delta, rng)) break;
+        if (bounce + 1 >= params.rrDepth && !survivesRoulette(bounce, beta, bs.delta, smp)) break;
         ray = spawnRay(hit, dir);
     }
     return radiance;

@@ -11,7 +11,7 @@
 // bench/materials.md.)
 #ifndef RAYLAB_LIGHT_SELECTION_GLSL
 #define RAYLAB_LIGHT_SELECTION_GLSL
-#include "random.glsl"
+#include "sampler.glsl"
 #include "scene_data.glsl"
 #include "features.glsl"
 
@@ -35,11 +35,11 @@ float skySelectionPmf() {
 float boundedLightPmf(int i) { return (1.0f - skySelectionPmf()) * lightAlias[i].z; }
 
 // A light: -1 for the sky, else the bounded light's index; pmf is the probability of the pick.
-// One number decides sky or not and the alias table's column, a second its coin; one read of
-// the table (an entry holds the pmf of its column and of its alias).
-int selectLight(inout Rng rng, out float pmf) {
-    float u = rngNextFloat(rng);
-    float v = rngNextFloat(rng);
+// Dimension dim decides sky or not and the alias table's column, a coin the column or its alias;
+// one read of the table (an entry holds the pmf of its column and of its alias).
+int selectLight(inout Sampler smp, uint dim, out float pmf) {
+    float u = sample1D(smp, dim);
+    float v = sampleCoin(smp);
     float pSky = skySelectionPmf();
     if (u < pSky) {
         pmf = pSky;
@@ -57,9 +57,9 @@ int uniformLightCount() { return boundedLightCount() + (params.skyIsLight ? 1 : 
 float skySelectionPmf() { return params.skyIsLight ? 1.0f / float(uniformLightCount()) : 0.0f; }
 float boundedLightPmf(int i) { return 1.0f / float(uniformLightCount()); }
 
-int selectLight(inout Rng rng, out float pmf) {
+int selectLight(inout Sampler smp, uint dim, out float pmf) {
     int n = uniformLightCount();
-    int k = min(int(rngNextFloat(rng) * float(n)), n - 1);
+    int k = min(int(sample1D(smp, dim) * float(n)), n - 1);
     pmf = 1.0f / float(n);
     return k < boundedLightCount() ? k : -1;
 }

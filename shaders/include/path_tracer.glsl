@@ -4,7 +4,7 @@
 #define RAYLAB_PATH_TRACER_GLSL
 #include "compat.glsl"
 #include "features.glsl"
-#include "random.glsl"
+#include "sampler.glsl"
 #include "camera.glsl"
 #include "scene_data.glsl"
 // The viewer's debug views and moments; empty unless the host defines RAYLAB_DEBUG_VIEWS or
@@ -22,19 +22,20 @@ void tracePixelPass(ivec2 pixel) {
     DebugMoments moments = debugMomentsBegin();
 #endif
     for (int s = 0; s < params.rpp; ++s) {
-        Rng rng = rngCreate(uvec2(pixel), params.sampleStart + uint(s), params.seed);
-        // A fresh jittered position inside the pixel for every sample (box filter).
-        vec2 ndc = (vec2(pixel) + rngNext2(rng)) / vec2(params.imageSize) * 2.0f - 1.0f;
+        Sampler smp = samplerCreate(uvec2(pixel), params.sampleStart + uint(s), params.seed, params.sampleCount);
+        // A fresh position inside the pixel for every sample (box filter).
+        vec2 ndc = (vec2(pixel) + sample2D(smp, SAMPLE_DIM_PIXEL)) / vec2(params.imageSize) * 2.0f - 1.0f;
 #if RAYLAB_FEATURE_DOF
-        Ray cameraPath = cameraRayThinLens(cam, ndc, rngNext2(rng), params.camLensRadius, params.camFocusDistance);
+        Ray cameraPath = cameraRayThinLens(cam, ndc, sample2D(smp, SAMPLE_DIM_LENS), params.camLensRadius,
+                                           params.camFocusDistance);
 #else
         Ray cameraPath = cameraRay(cam, ndc);
 #endif
         RAYLAB_RECORD_PATH_BEGIN(pixel, s, cameraPath);
 #if RAYLAB_DEBUG_VIEWS
-        vec3 L = debugSample(cameraPath, rng, rays);
+        vec3 L = debugSample(cameraPath, smp, rays);
 #else
-        vec3 L = traceRadiance(cameraPath, rng, rays);
+        vec3 L = traceRadiance(cameraPath, smp, rays);
 #endif
         RAYLAB_RECORD_PATH_END(pixel, s, L);
 #if RAYLAB_INJECT_NONFINITE

@@ -47,7 +47,7 @@ layout(std140, binding = BINDING_TRACER_PARAMS_UBO) uniform TracerParams {
     RL_BLOCK_BOOL nee;         // next-event estimation on
     RL_BLOCK_BOOL mis;         // with nee: power-heuristic MIS of light and BSDF samples
     RL_BLOCK_BOOL skyIsLight;  // with nee: the sky is sampled too (its radiance is not zero)
-    int pad0;                  // rounds the block up to a whole vec4
+    uint sampleCount;          // render.spp: samples per pixel of the whole render (stratified strata)
 #ifdef __cplusplus
 };
 

@@ -13,6 +13,7 @@
 #include "render/progressive_render.h"
 #include "render/scene_stats.h"
 #include "render/tracer_variants.h"
+#include "scene/parameters.h"
 #include "scene/scene_loader.h"
 
 #include <CLI/CLI.hpp>
@@ -275,6 +276,7 @@ int main(int argc, char** argv) {
         meta.seed = scene.render.seed;
         meta.sceneFile = scene.sourcePath.string();
         meta.nonFiniteSamples = tracer->nonFiniteSamples();
+        meta.sampler = formatValue(*findParameter("render.sampler"), std::int64_t(scene.render.sampler));
         writeImage(outPath, tracer->readImage(), meta,
                    DisplayTransform{scene.render.exposure, scene.render.toneMap});
     } catch (const std::exception& e) {

@@ -82,6 +82,7 @@ void writeImage(const fs::path& path, const Image& image, const RenderMetadata& 
     spec.attribute("raylab:render_seconds", float(meta.renderSeconds));
     spec.attribute("raylab:seed", unsigned(meta.seed));
     spec.attribute("raylab:scene", meta.sceneFile);
+    spec.attribute("raylab:sampler", meta.sampler);
     spec.attribute("raylab:nonfinite_samples", int(std::min<std::uint64_t>(meta.nonFiniteSamples, 0x7fffffff)));
     if (format == ImageFormat::Exr) spec.attribute("compression", "zip");
 

@@ -23,6 +23,7 @@ struct RenderMetadata {
     std::uint32_t seed = 0;
     std::string sceneFile;
     std::uint64_t nonFiniteSamples = 0;
+    std::string sampler = "independent";   // render.sampler, as the scene writes it
 };
 
 struct DisplayTransform {

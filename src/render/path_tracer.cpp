@@ -136,7 +136,7 @@ void PathTracer::updateSettings(const Scene& scene) {
         .nee = r.nee,
         .mis = r.mis,
         .skyIsLight = r.nee && skyIsLight,
-        .pad0 = 0,
+        .sampleCount = std::uint32_t(std::max(r.spp, 1)),
     };
     glNamedBufferSubData(paramsBuffer_, 0, sizeof(params_), &params_);
     reset();

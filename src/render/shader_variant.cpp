@@ -34,6 +34,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.skyMap = scene.sky.type == Sky::Type::Map;
     // Teaching stages leave out what comes later: the variant has none of its code.
     f.stage = scene.render.stage;
+    f.sampler = scene.render.sampler;
     if (f.stage < RenderStage::Ggx) f.generalBsdf = false;
     if (f.stage < RenderStage::Textures) f.textures = f.showMipLevel = false;
     if (f.stage < RenderStage::Full) f.depthOfField = false;
@@ -52,6 +53,7 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     RAYLAB_FEATURE_LIST(RL_FEATURE_DEFINE)
 #undef RL_FEATURE_DEFINE
     d.emplace_back(tracerDefine("RAYLAB_STAGE"), std::to_string(int(f.stage)));
+    d.emplace_back(tracerDefine("RAYLAB_SAMPLER"), std::to_string(int(f.sampler)));
     return d;
 }
 
@@ -67,6 +69,8 @@ std::string featureName(const SceneFeatures& f) {
 #undef RL_FEATURE_NAME
     static const char* const stages[] = {"stage-primary", "stage-emission", "stage-lambert", "stage-ggx", "stage-textures"};
     add(f.stage != RenderStage::Full, stages[std::min(int(f.stage), 4)]);
+    add(f.sampler == SamplerKind::Stratified, "stratified");
+    add(f.sampler == SamplerKind::Sobol, "sobol");
     return name.empty() ? "none" : name;
 }
 

@@ -18,6 +18,7 @@ struct SceneFeatures {
     RAYLAB_FEATURE_LIST(RL_FEATURE_FIELD)
 #undef RL_FEATURE_FIELD
     RenderStage stage = RenderStage(RAYLAB_STAGE);   // render.stage below full: RAYLAB_STAGE (teaching)
+    SamplerKind sampler = SamplerKind(RAYLAB_SAMPLER);   // render.sampler: RAYLAB_SAMPLER
     static constexpr bool always = true;   // the `needs` of a feature without a prerequisite
     bool operator==(const SceneFeatures&) const = default;
 };
@@ -27,9 +28,9 @@ constexpr std::size_t kLinearTopLevelMax = 16;
 
 SceneFeatures sceneFeatures(const Scene& scene);   // what this scene needs
 SceneFeatures allFeatures();                       // the unspecialised tracer
-// RAYLAB_FEATURES_SPECIALISED, every feature of the list as 0 or 1, and RAYLAB_STAGE.
+// RAYLAB_FEATURES_SPECIALISED, every feature of the list as 0 or 1, RAYLAB_STAGE and RAYLAB_SAMPLER.
 ShaderDefines featureDefines(const SceneFeatures& features);
-// "spheres+meshes+dof", "none" when nothing is on.
+// "spheres+meshes+dof", "none" when nothing is on; a sampler other than independent is named too.
 std::string featureName(const SceneFeatures& features);
 
 // Compiled programs by define set. Needs a current GL context; programs live as long as the cache.

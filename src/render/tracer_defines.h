@@ -22,6 +22,7 @@ inline constexpr TracerDefine kTracerDefines[] = {
     RAYLAB_FEATURE_LIST(RL_FEATURE_ENTRY)
 #undef RL_FEATURE_ENTRY
     {"RAYLAB_STAGE", "render/shader_variant.cpp"},
+    {"RAYLAB_SAMPLER", "render/shader_variant.cpp"},
     // The compute entry's work-group size (render/path_tracer.cpp).
     {"LOCAL_SIZE_X", "render/path_tracer.cpp", true},
     {"LOCAL_SIZE_Y", "render/path_tracer.cpp", true},

@@ -103,6 +103,9 @@ std::vector<ParamSpec> buildSceneTable() {
         [](auto& s) -> auto& { return s.camera.focusDistance; });
 
     // --- render ---
+    const std::vector<EnumName> samplerNames = {{"independent", static_cast<int>(SamplerKind::Independent)},
+                                                {"stratified", static_cast<int>(SamplerKind::Stratified)},
+                                                {"sobol", static_cast<int>(SamplerKind::Sobol)}};
     add(spec("render.width", T::Int, atLeast(1), atMost(16384), "pixels",
              "Image width (changing it reallocates the image).", G::ReloadScene),
         [](auto& s) -> auto& { return s.render.width; });
@@ -162,6 +165,12 @@ std::vector<ParamSpec> buildSceneTable() {
               {"textures", static_cast<int>(RenderStage::Textures)},
               {"full", static_cast<int>(RenderStage::Full)}}),
         [](auto& s) -> auto& { return s.render.stage; });
+    add(spec("render.sampler", T::Enum, kAny, kAny, "",
+             "How each path's random numbers are made: independent (hashed PCG), stratified (jittered "
+             "strata, in a random order per pixel and dimension) or sobol (Owen-scrambled Sobol, Burley "
+             "2020). Dimensions: pixel 0-1, lens 2-3, then 8 per bounce from 4 (sampler.glsl).",
+             G::RecompileShader, samplerNames),
+        [](auto& s) -> auto& { return s.render.sampler; });
 
     // --- sky ---
     add(spec("sky.type", T::Enum, kAny, kAny, "",

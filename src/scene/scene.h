@@ -36,6 +36,14 @@ enum class RenderStage {
     Full = 5,       // + depth of field: everything
 };
 
+// How a path's random numbers are made (render.sampler; shaders/include/sampler.glsl). The numbers
+// are RAYLAB_SAMPLER_* of features.glsl.
+enum class SamplerKind {
+    Independent = 0,   // hashed PCG: every number independent
+    Stratified = 1,    // jittered strata per dimension, in a per-pixel random order
+    Sobol = 2,         // Owen-scrambled Sobol (Burley 2020)
+};
+
 struct RenderSettings {
     int width = 640;             // pixels
     int height = 360;            // pixels
@@ -51,6 +59,7 @@ struct RenderSettings {
     ToneMap toneMap = ToneMap::AcesFit;
     int showMipLevel = 0;        // 1: textured surfaces show their mip level as colours (debug)
     RenderStage stage = RenderStage::Full;   // teaching: build the renderer up stage by stage
+    SamplerKind sampler = SamplerKind::Independent;
 };
 
 struct Material {

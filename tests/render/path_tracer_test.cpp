@@ -32,17 +32,20 @@ TEST_F(PathTracerTest, ClosedFurnaceConvergesToEmissionOverOneMinusAlbedo) {
     // Inside a closed sphere of albedo a emitting Le everywhere, radiance is Le / (1 − a)
     // (geometric series of bounces). With Russian roulette on, the mean over pixels (independent
     // estimates) must be within 3 standard errors of it.
-    const Scene scene = loadScene(test::scenePath("closed_furnace.json"));
-    const Material& m = scene.materials[size_t(scene.spheres.at(0).material)];
-    ASSERT_LT(scene.render.rrDepth, scene.render.maxBounces) << "the test should exercise roulette";
-    const Image image = test::render(scene);
-    for (int c = 0; c < 3; ++c) {
-        const double expected = m.radiance()[c] / (1.0 - m.albedo[c]);
-        const auto values = test::channel(image, c);
-        const double se = test::standardError(values);
-        EXPECT_GT(se, 0.0);
-        EXPECT_NEAR(test::mean(values), expected, 3.0 * se) << "channel " << c;
-        EXPECT_LT(se, 0.01 * expected) << "too noisy to mean anything";
+    // Every sampler: each pixel has its own scrambles, so pixels stay independent estimates.
+    for (const char* sampler : {"independent", "stratified", "sobol"}) {
+        const Scene scene = loadScene(test::scenePath("closed_furnace.json"), {std::string("render.sampler=") + sampler});
+        const Material& m = scene.materials[size_t(scene.spheres.at(0).material)];
+        ASSERT_LT(scene.render.rrDepth, scene.render.maxBounces) << "the test should exercise roulette";
+        const Image image = test::render(scene);
+        for (int c = 0; c < 3; ++c) {
+            const double expected = m.radiance()[c] / (1.0 - m.albedo[c]);
+            const auto values = test::channel(image, c);
+            const double se = test::standardError(values);
+            EXPECT_GT(se, 0.0);
+            EXPECT_NEAR(test::mean(values), expected, 3.0 * se) << sampler << " channel " << c;
+            EXPECT_LT(se, 0.01 * expected) << "too noisy to mean anything";
+        }
     }
 }
 
