@@ -310,7 +310,7 @@ void readSkyMap(const Json& root, Scene& scene) {
         if (file.is_relative()) file = scene.sourcePath.parent_path() / file;
         std::error_code ec;
         if (!std::filesystem::is_regular_file(file, ec))
-            fail(sky.key("map"), "cannot read " + inQuotes(file.string()) + ": no such file");
+            fail(sky.key("map"), "cannot read '" + file.string() + "': no such file");
         scene.sky.map = file;
     }
     if (scene.sky.type == Sky::Type::Map && scene.sky.map.empty())
