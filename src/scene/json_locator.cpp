@@ -1,12 +1,12 @@
 #include "scene/json_locator.h"
 
+#include "scene/json_parse.h"
+
 #include <algorithm>
 #include <cstdint>
 
 namespace raylab {
 namespace {
-
-constexpr int kMaxDepth = 512;  // deeper values are not located (complete() turns false)
 
 bool startsWithBom(std::string_view t) {
     return t.size() >= 3 && static_cast<unsigned char>(t[0]) == 0xEF &&
@@ -41,7 +41,7 @@ public:
     Scanner(JsonLocator& out, std::string_view text) : out_(out), t_(text) {}
 
     bool run() {
-        if (startsWithBom(t_)) pos_ = 3;
+        if (startsWithBom(t_)) pos_ = cursor_ = 3;   // the BOM takes no column
         if (!skipSpace()) return false;
         if (!value("", SourcePos{}, 0)) return false;
         if (!skipSpace()) return false;
@@ -71,15 +71,29 @@ private:
         return true;
     }
 
+    // Line and column of an offset at or after the last one asked for: each byte is counted once,
+    // so a long single-line file is located in linear time.
+    SourcePos at(std::size_t offset) {
+        for (; cursor_ < offset && cursor_ < t_.size(); ++cursor_) {
+            if (t_[cursor_] == '\n') {
+                ++cursorPos_.line;
+                cursorPos_.column = 1;
+            } else if ((static_cast<unsigned char>(t_[cursor_]) & 0xC0) != 0x80) {
+                ++cursorPos_.column;   // UTF-8 continuation bytes take no column
+            }
+        }
+        return cursorPos_;
+    }
+
     void record(const std::string& pointer, SourcePos key, std::size_t valueOffset) {
-        ValueLocation loc{out_.position(valueOffset), key};
+        ValueLocation loc{at(valueOffset), key};
         auto [it, inserted] = out_.locations_.emplace(pointer, loc);
         if (!inserted) out_.duplicates_.push_back(Duplicate{pointer, it->second.key, key});
     }
 
     bool value(const std::string& pointer, SourcePos key, int depth) {
         if (atEnd()) return false;
-        if (depth > kMaxDepth) return false;
+        if (depth > int(scenefmt::kMaxJsonDepth)) return false;   // the parser refuses it too
         record(pointer, key, pos_);
         switch (peek()) {
         case '{': return object(pointer, depth);
@@ -98,7 +112,7 @@ private:
         }
         while (true) {
             if (!skipSpace() || peek() != '"') return false;
-            const SourcePos keyPos = out_.position(pos_);
+            const SourcePos keyPos = at(pos_);
             std::string name;
             if (!string(&name)) return false;
             if (!skipSpace() || peek() != ':') return false;
@@ -224,6 +238,8 @@ private:
     JsonLocator& out_;
     std::string_view t_;
     std::size_t pos_ = 0;
+    std::size_t cursor_ = 0;             // at(): the offset cursorPos_ belongs to
+    SourcePos cursorPos_{1, 1};
 };
 
 JsonLocator::JsonLocator(std::string_view text) : text_(text) {

@@ -1,5 +1,6 @@
 #include "scene/json_parse.h"
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -9,6 +10,7 @@ namespace {
 class DomBuilder : public nlohmann::json_sax<Json> {
 public:
     ParseResult result;
+    bool tooDeep = false;   // the parse stopped at a container past kMaxJsonDepth
 
     bool null() override { return add(Json(nullptr)); }
     bool boolean(bool v) override { return add(Json(v)); }
@@ -35,8 +37,10 @@ public:
             result.errorOffset = position >= lastToken.size() ? position - lastToken.size() : 0;
             result.reason = "must be finite, got " + lastToken + " (too large for a double)";
             result.errorPath = currentPath();
+        } else if (std::string_view(ex.what()).ends_with("expected end of input")) {
+            result.reason = "unexpected text after the end of the document (only whitespace and comments may follow it)";
         } else {
-            result.reason = stripPrefix(ex.what());
+            result.reason = shortenLastRead(stripPrefix(ex.what()));
         }
         return false;
     }
@@ -66,6 +70,14 @@ private:
         return true;
     }
     bool open(Json&& v) {
+        if (stack_.size() >= kMaxJsonDepth) {
+            tooDeep = true;
+            result.ok = false;
+            result.reason = "nested too deeply: more than " + std::to_string(kMaxJsonDepth) +
+                            " levels of arrays and objects";
+            result.errorPath = currentPath();
+            return false;
+        }
         stack_.push_back(Level{place(std::move(v)), {}});
         return true;
     }
@@ -77,12 +89,26 @@ private:
         // Enclosing arrays already hold the element being filled (the last one); the innermost
         // container has not received the offending value yet.
         JsonPath p;
+        p.segments.reserve(stack_.size());
         for (std::size_t i = 0; i < stack_.size(); ++i) {
             const Json& c = *stack_[i].container;
-            if (!c.is_array()) p = p.key(stack_[i].key);
-            else p = p.index(i + 1 < stack_.size() ? c.size() - 1 : c.size());
+            if (!c.is_array()) p.segments.push_back({stack_[i].key, false});
+            else p.segments.push_back({std::to_string(i + 1 < stack_.size() ? c.size() - 1 : c.size()), true});
         }
         return p;
+    }
+    // "last read: '<everything since the previous token>'" keeps only its end, where the error is.
+    static std::string shortenLastRead(std::string what) {
+        constexpr std::string_view open = "last read: '";
+        constexpr std::size_t kShown = 40;
+        const std::size_t start = what.find(open);
+        if (start == std::string::npos) return what;
+        const std::size_t from = start + open.size();
+        const std::size_t close = what.find("'; ", from);
+        if (close == std::string::npos || close - from <= kShown) return what;
+        std::size_t keep = close - kShown;
+        while (keep < close && (static_cast<unsigned char>(what[keep]) & 0xC0) == 0x80) ++keep;   // whole characters
+        return what.substr(0, from) + "..." + what.substr(keep);
     }
     // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ..." -> "syntax error ..."
     static std::string stripPrefix(std::string_view what) {
@@ -97,6 +123,30 @@ private:
     std::vector<Level> stack_;
 };
 
+// Offset of the first '[' or '{' that opens level `depth` + 1, skipping strings and comments; the
+// text up to there has been accepted by the parser, so this simple scan agrees with it.
+std::size_t openingPastDepth(std::string_view text, std::size_t depth) {
+    std::size_t level = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '"') {
+            for (++i; i < text.size() && text[i] != '"'; ++i)
+                if (text[i] == '\\') ++i;
+        } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
+            while (i < text.size() && text[i] != '\n' && text[i] != '\r' && text[i] != '\0') ++i;
+        } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+            const std::size_t close = text.find("*/", i + 2);
+            if (close == std::string_view::npos) break;
+            i = close + 1;
+        } else if (c == '[' || c == '{') {
+            if (++level > depth) return i;
+        } else if (c == ']' || c == '}') {
+            --level;
+        }
+    }
+    return text.size();
+}
+
 } // namespace
 
 ParseResult parseJson(std::string_view text) {
@@ -104,8 +154,23 @@ ParseResult parseJson(std::string_view text) {
     builder.result.ok = true;
     const bool ok = Json::sax_parse(text.begin(), text.end(), &builder, nlohmann::json::input_format_t::json,
                                     /*strict=*/true, /*ignore_comments=*/true);
-    builder.result.ok = ok && builder.result.ok;
-    return std::move(builder.result);
+    ParseResult result = std::move(builder.result);
+    result.ok = ok && result.ok;
+    if (builder.tooDeep) {
+        result.errorOffset = openingPastDepth(text, kMaxJsonDepth);
+        return result;
+    }
+    // nlohmann takes a NUL byte for the end of the input, so text after one would pass unread.
+    const std::size_t nul = text.find('\0');
+    if (nul == std::string_view::npos) return result;
+    const bool endedAtNul = nul == result.errorOffset && result.reason.find("end of input") != std::string::npos;
+    if (result.ok || nul < result.errorOffset || endedAtNul) {
+        result.ok = false;
+        result.errorOffset = nul;
+        result.reason = "unexpected NUL byte (a scene file is text)";
+        result.errorPath.reset();
+    }
+    return result;
 }
 
 } // namespace raylab::scenefmt

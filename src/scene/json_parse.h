@@ -11,14 +11,20 @@
 
 namespace raylab::scenefmt {
 
+// Arrays and objects nested deeper than this are an error: a scene needs six levels, and the limit
+// keeps every later recursive walk (the locator, the document's destructor, printing) shallow.
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
 struct ParseResult {
     Json doc;
     bool ok = false;
     std::size_t errorOffset = 0;
     std::string reason;                 // the parser's explanation
-    std::optional<JsonPath> errorPath;  // set for out-of-range numbers (known value position)
+    std::optional<JsonPath> errorPath;  // set where the value's place is known (too large, too deep)
 };
 
+// The whole text must be one document: anything but whitespace and comments after it, a NUL byte
+// included, is an error at its offset.
 ParseResult parseJson(std::string_view text);
 
 } // namespace raylab::scenefmt

@@ -8,6 +8,9 @@
 namespace raylab::scenefmt {
 namespace {
 
+// Messages stay short whatever the document holds: deep paths are cut in the middle.
+constexpr std::size_t kShownSegments = 12;   // half before the cut, half after
+
 bool isPlainName(std::string_view s) {
     if (s.empty()) return false;
     return std::all_of(s.begin(), s.end(), [](char c) {
@@ -16,6 +19,14 @@ bool isPlainName(std::string_view s) {
 }
 
 } // namespace
+
+std::string shortText(std::string_view text) {
+    constexpr std::size_t kShown = 40;
+    if (text.size() <= kShown) return std::string(text);
+    std::size_t cut = kShown - 3;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;   // whole UTF-8 characters
+    return std::string(text.substr(0, cut)) + "...";
+}
 
 JsonPath JsonPath::key(std::string_view k) const {
     JsonPath p = *this;
@@ -38,14 +49,23 @@ std::string JsonPath::pointer() const {
 std::string JsonPath::display() const {
     if (segments.empty()) return "(top level)";
     std::string out;
-    for (const Segment& s : segments) {
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        if (segments.size() > kShownSegments && i == kShownSegments / 2) {
+            const std::size_t skipped = segments.size() - kShownSegments;
+            out += "...(" + std::to_string(skipped) + " levels)...";
+            i += skipped - 1;
+            continue;
+        }
+        const Segment& s = segments[i];
+        const std::string token = shortText(s.token);
         if (s.index) {
-            out += "[" + s.token + "]";
-        } else if (isPlainName(s.token)) {
-            if (!out.empty()) out += ".";
-            out += s.token;
+            out += "[" + token + "]";
+        } else if (isPlainName(token)) {
+            if (!out.empty() && out.back() != '.') out += ".";
+            out += token;
         } else {
-            out += "[" + Json(s.token).dump() + "]";  // quoted, e.g. materials["my lamp"]
+            // Quoted, e.g. materials["my lamp"]; bytes that are not UTF-8 (from a --set) become U+FFFD.
+            out += "[" + Json(token).dump(-1, ' ', false, Json::error_handler_t::replace) + "]";
         }
     }
     return out;

@@ -32,6 +32,9 @@ JsonPath pathFromPointer(const Json& doc, std::string_view pointer);
 // True when `pointer` is `prefix` or lies inside it.
 bool isPointerPrefix(std::string_view prefix, std::string_view pointer);
 
+// A name from a document as messages show it: past 40 bytes, cut with "...".
+std::string shortText(std::string_view text);
+
 // "number", "string", "array", ...: the JSON type of a value, for messages.
 std::string typeOf(const Json& v);
 

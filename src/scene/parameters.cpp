@@ -353,6 +353,15 @@ const std::vector<std::string_view>& materialFileKeys() {
     return keys;
 }
 
+const std::vector<PathKey>& pathKeys() {
+    static const std::vector<PathKey> keys = [] {
+        std::vector<PathKey> k = {{PathScope::Scene, "sky.map"}, {PathScope::Object, "file"}};
+        for (const TextureSlot& s : textureSlots()) k.push_back({PathScope::Material, s.key});
+        return k;
+    }();
+    return keys;
+}
+
 const std::vector<SphereParamSpec>& sphereParameters() {
     static const std::vector<SphereParamSpec> table = buildSphereTable();
     return table;

@@ -108,6 +108,22 @@ struct TextureSlot {
 // The slots in materialFileKeys() order.
 const std::vector<TextureSlot>& textureSlots();
 
+// Where a key that names a file sits in a scene document.
+enum class PathScope {
+    Scene,      // a section's key: "sky.map"
+    Material,   // a key of each entry of "materials": "albedo_texture"
+    Object,     // a key of each entry of "objects": "file"
+};
+
+// A key whose value is a file path, read relative to the scene file's directory (unless absolute);
+// a saved scene writes it relative to the saved file's directory.
+struct PathKey {
+    PathScope scope = PathScope::Scene;
+    std::string_view key;
+};
+// sky.map, the texture slots, a mesh's file.
+const std::vector<PathKey>& pathKeys();
+
 // Range/finiteness check of one number (one component for Vec3/Rgb). Returns the complaint without
 // location, e.g. "must be > 0, got -1", or nullopt when the value is acceptable. Integer types also
 // check that the value is whole and fits 32 bits.

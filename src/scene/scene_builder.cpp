@@ -3,6 +3,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_error.h"
+#include "scene/sky_map.h"
 
 #include <glm/geometric.hpp>
 
@@ -310,7 +311,8 @@ void readSkyMap(const Json& root, Scene& scene) {
         if (file.is_relative()) file = scene.sourcePath.parent_path() / file;
         std::error_code ec;
         if (!std::filesystem::is_regular_file(file, ec))
-            fail(sky.key("map"), "cannot read " + inQuotes(file.string()) + ": no such file");
+            fail(sky.key("map"), "cannot read '" + file.string() + "': no such file");
+        if (const auto problem = skyMapProblem(file)) fail(sky.key("map"), file.string() + ": " + *problem);
         scene.sky.map = file;
     }
     if (scene.sky.type == Sky::Type::Map && scene.sky.map.empty())

@@ -22,8 +22,8 @@ void readTextureSlot(const TextureSlot& slot, const Json& v, const JsonPath& p, 
 // camera.look_at must differ from camera.position, and camera.up must be a direction across the view.
 void checkCamera(const Camera& camera);
 
-// sky.map: a file name, relative to the scene file's directory; it must exist. sky.type "map"
-// needs one.
+// sky.map: a file name, relative to the scene file's directory; it must be an image whose pixels
+// read (sky_map.h). sky.type "map" needs one.
 void readSkyMap(const Json& root, Scene& scene);
 
 } // namespace raylab::scenefmt

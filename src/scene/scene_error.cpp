@@ -11,7 +11,7 @@ void fail(const JsonPath& path, std::string message, bool atKey) {
     throw ValidationFailure{path, std::move(message), atKey};
 }
 
-std::string inQuotes(std::string_view s) { return "'" + std::string(s) + "'"; }
+std::string inQuotes(std::string_view s) { return "'" + shortText(s) + "'"; }
 
 std::string joinNames(const std::vector<std::string_view>& names) {
     std::string out;

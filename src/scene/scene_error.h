@@ -33,7 +33,7 @@ struct ValidationFailure {
 [[noreturn]] void fail(const JsonPath& path, std::string message, bool atKey = false);
 
 // Pieces of messages.
-std::string inQuotes(std::string_view s);                      // 'radius'
+std::string inQuotes(std::string_view s);                      // 'radius', long names cut short
 std::string joinNames(const std::vector<std::string_view>& names);   // a, b, c
 std::string inWhere(const JsonPath& p);                        // "in render", "at the top level"
 // "; did you mean 'radius'?" when a candidate is close, else the full list.

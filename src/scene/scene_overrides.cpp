@@ -36,6 +36,9 @@ AppliedOverride applyOverride(Json& root, const std::string& text) {
     } catch (const EditError& e) {
         throw error(nullptr, e.what());
     }
+    if (segments.size() > kMaxJsonDepth)
+        throw error(nullptr, "the key has " + std::to_string(segments.size()) + " parts; a scene nests at most " +
+                                 std::to_string(kMaxJsonDepth) + " levels");
 
     Json value;
     ParseResult parsed = parseJson(valueText);

@@ -10,6 +10,51 @@
 namespace raylab {
 namespace {
 
+namespace fs = std::filesystem;
+
+fs::path absoluteDirectory(const fs::path& dir) {
+    fs::path d = fs::absolute(dir.empty() ? fs::path(".") : dir).lexically_normal();
+    if (d.filename().empty() && d.has_relative_path()) d = d.parent_path();   // "/a/b/" -> "/a/b"
+    return d;
+}
+
+// `given` (relative to `from`) as a path relative to `to`; absolute when no relative path exists.
+std::string rebased(const std::string& given, const fs::path& from, const fs::path& to) {
+    const fs::path file = (from / given).lexically_normal();   // an absolute `given` stays itself
+    const fs::path relative = file.lexically_relative(to);
+    return (relative.empty() ? file : relative).string();
+}
+
+// Calls `visit` on each string value of a path key of `scope` in `doc`.
+template <class Visit>
+void forEachPath(nlohmann::json& doc, const PathKey& key, Visit visit) {
+    auto at = [&visit](nlohmann::json& holder, std::string_view name) {
+        if (!holder.is_object()) return;
+        const auto it = holder.find(std::string(name));
+        if (it != holder.end() && it->is_string()) visit(*it);
+    };
+    auto each = [&](std::string_view list) {
+        const auto it = doc.find(std::string(list));
+        if (it == doc.end()) return;
+        if (it->is_object()) {
+            for (auto& [name, item] : it->items()) at(item, key.key);
+        } else if (it->is_array()) {
+            for (nlohmann::json& item : *it) at(item, key.key);
+        }
+    };
+    switch (key.scope) {
+    case PathScope::Scene: {
+        const std::string_view dotted = key.key;
+        const std::size_t dot = dotted.find('.');
+        const auto section = doc.find(std::string(dotted.substr(0, dot)));
+        if (section != doc.end()) at(*section, dotted.substr(dot + 1));
+        break;
+    }
+    case PathScope::Material: each("materials"); break;
+    case PathScope::Object: each("objects"); break;
+    }
+}
+
 // JSON number for a value as it will be read back: the shortest text that gives back the same field.
 double shortestText(double value) {
     const std::string text = formatNumber(value);
@@ -81,7 +126,13 @@ nlohmann::json meshJson(const Mesh& m, const std::string& material) {
 
 } // namespace
 
-nlohmann::json sceneToJson(const Scene& scene) {
+void rebasePaths(nlohmann::json& doc, const fs::path& from, const fs::path& to) {
+    const fs::path fromDir = absoluteDirectory(from), toDir = absoluteDirectory(to);
+    for (const PathKey& key : pathKeys())
+        forEachPath(doc, key, [&](nlohmann::json& v) { v = rebased(v.get<std::string>(), fromDir, toDir); });
+}
+
+nlohmann::json sceneToJson(const Scene& scene, const fs::path& savedFile) {
     nlohmann::json j = nlohmann::json::object();
     for (const ParamSpec& spec : sceneParameters())
         j[std::string(spec.section())][std::string(spec.name())] = valueJson(spec, scene);
@@ -92,7 +143,8 @@ nlohmann::json sceneToJson(const Scene& scene) {
         materials[m.name] = materialJson(m);
     }
     j["materials"] = materials;
-    if (!scene.sky.map.empty()) j["sky"]["map"] = scene.sky.map.string();
+    // The loader keeps sky.map resolved, and textures and mesh files as written in the scene.
+    if (!scene.sky.map.empty()) j["sky"]["map"] = fs::absolute(scene.sky.map).string();
 
     nlohmann::json objects = nlohmann::json::array();
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
@@ -119,6 +171,8 @@ nlohmann::json sceneToJson(const Scene& scene) {
         objects.push_back(meshJson(m, scene.materials[static_cast<std::size_t>(m.material)].name));
     }
     j["objects"] = objects;
+    const fs::path sceneDir = scene.sourcePath.parent_path();
+    rebasePaths(j, sceneDir, savedFile.empty() ? sceneDir : savedFile.parent_path());
     return j;
 }
 

@@ -126,3 +126,13 @@ TEST(SceneFormatDoc, TheExampleParsesAndTheSetMessageIsReal) {
     ASSERT_FALSE(message.empty());
     EXPECT_NE(doc.find(message), std::string::npos) << "FORMAT.md should show: " << message;
 }
+
+TEST(SceneFormatDoc, EveryPathKeyIsDocumentedAsAPath) {
+    const auto rows = keyRows(readDoc());
+    for (const PathKey& p : pathKeys()) {
+        const auto it = rows.find(std::string(p.key));
+        ASSERT_TRUE(it != rows.end()) << "`" << p.key << "` undocumented";
+        ASSERT_GE(it->second.size(), 3u) << p.key;
+        EXPECT_EQ(it->second[2], "path") << p.key << ": unit column";
+    }
+}
