@@ -1,5 +1,7 @@
 #include "scene/sky_map.h"
 
+#include "texture/image_size.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -9,9 +11,6 @@
 namespace raylab::scenefmt {
 namespace {
 
-// The sizes image readers accept: 32768 per side holds a 2:1 panorama, 2^28 texels bound memory.
-constexpr std::int64_t kMaxSide = 32768;
-constexpr std::int64_t kMaxTexels = std::int64_t(1) << 28;
 constexpr int kStripRows = 64;   // rows decoded at once while checking
 
 std::string oiioError(const std::string& error, const char* otherwise) {
@@ -26,12 +25,8 @@ std::optional<std::string> skyMapProblem(const std::filesystem::path& file) {
     if (!in) return "cannot read: " + oiioError(OIIO::geterror(), "not an image file OpenImageIO knows");
     const ImageSpec spec = in->spec();
     const std::int64_t w = spec.width, h = spec.height;
-    const std::string size = std::to_string(w) + "x" + std::to_string(h);
-    if (w <= 0 || h <= 0) return "cannot read: " + size + " is not an image size";
-    if (w > kMaxSide || h > kMaxSide)
-        return size + " is larger than raylab reads (at most " + std::to_string(kMaxSide) + " pixels per side)";
-    if (w * h > kMaxTexels)
-        return size + " is larger than raylab reads (at most " + std::to_string(kMaxTexels) + " pixels)";
+    if (w <= 0 || h <= 0) return "cannot read: " + std::to_string(w) + "x" + std::to_string(h) + " is not an image size";
+    if (std::optional<std::string> tooLarge = imageSizeProblem(w, h)) return *tooLarge;
     if (spec.nchannels <= 0 || spec.depth > 1 || spec.deep) return "cannot read: not a flat image with channels";
     const int channels = std::min(spec.nchannels, 4);
     const int strip = spec.tile_height > 0 ? std::min(spec.tile_height, spec.height) : kStripRows;

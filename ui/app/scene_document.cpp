@@ -4,6 +4,7 @@
 #include "app/scene_object.h"
 #include "scene/scene_keys.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_save.h"
 
 #include <fstream>
 
@@ -43,16 +44,7 @@ bool SceneDocument::reloadIfChanged() {
 
 bool SceneDocument::save(const std::filesystem::path& file) {
     try {
-        const std::string text = sceneToJson(scene_).dump(2) + "\n";
-        std::filesystem::path tmp = file;
-        tmp.replace_filename("." + file.filename().string() + ".tmp");
-        {
-            std::ofstream out(tmp, std::ios::binary);
-            out << text;
-            out.close();
-            if (!out) throw std::runtime_error(file.string() + ": error: cannot write");
-        }
-        std::filesystem::rename(tmp, file);
+        saveSceneFile(scene_, file);   // paths relative to `file`, atomic, a backup until complete
         log_.info("saved the scene to " + file.string());
         return true;
     } catch (const std::exception& e) {
