@@ -99,7 +99,9 @@ void expectSameScene(const Scene& a, const Scene& b) {
         expectSameFields(materialParameters(), ma, mb, where);
         for (const TextureSlot& slot : textureSlots()) {
             const std::string what = where + std::string(slot.key);
-            if (!ma.fromGltf) EXPECT_EQ(resolved(a, ma.*slot.file), resolved(b, mb.*slot.file)) << what;
+            if (!ma.fromGltf) {
+                EXPECT_EQ(resolved(a, ma.*slot.file), resolved(b, mb.*slot.file)) << what;
+            }
             ASSERT_EQ(ma.*slot.index < 0, mb.*slot.index < 0) << what;
             if (ma.*slot.index >= 0)
                 expectSameTexture(a.textures.at(std::size_t(ma.*slot.index)), b.textures.at(std::size_t(mb.*slot.index)),
@@ -276,7 +278,9 @@ TEST(SceneSave, EveryKeyOfTheFormatSurvivesASaveAtANonDefaultValue) {
         ASSERT_TRUE(set) << "no other value passes the checks";
         const Scene again = saveAndReload(changed, dir / "saved" / "scene.json", dir);
         expectSameScene(changed, again);
-        if (param.spec) EXPECT_FALSE(param.get(again) == param.get(base)) << "the new value was lost";
+        if (param.spec) {
+            EXPECT_FALSE(param.get(again) == param.get(base)) << "the new value was lost";
+        }
     }
 }
 
