@@ -35,12 +35,16 @@ const std::map<std::string, Arity, std::less<>>& commands() {
     return table;
 }
 
-// The debug views by name, in table order (shaders/include/debug_view_table.glsl).
-constexpr auto kDebugViewNames = [] {
-    std::array<std::string_view, std::size(kDebugViewTable)> names{};
-    for (std::size_t i = 0; i < names.size(); ++i) names[i] = kDebugViewTable[i].name;
+// The `name` of each of a table's first N rows, in its order.
+template <std::size_t N, typename Row>
+constexpr std::array<std::string_view, N> namesOf(const Row* rows) {
+    std::array<std::string_view, N> names{};
+    for (std::size_t i = 0; i < N; ++i) names[i] = rows[i].name;
     return names;
-}();
+}
+
+// The debug views by name, in table order (shaders/include/debug_view_table.glsl).
+constexpr auto kDebugViewNames = namesOf<std::size(kDebugViewTable)>(kDebugViewTable);
 
 std::string debugViewList() {
     std::string list;
@@ -49,11 +53,7 @@ std::string debugViewList() {
 }
 
 // The names `key` presses, in the table's order.
-constexpr std::array<std::string_view, kKeyBindings.size()> kKeys = [] {
-    std::array<std::string_view, kKeyBindings.size()> names{};
-    for (std::size_t i = 0; i < names.size(); ++i) names[i] = kKeyBindings[i].name;
-    return names;
-}();
+constexpr auto kKeys = namesOf<kKeyBindings.size()>(kKeyBindings.data());
 
 std::string keyChoices() {
     std::string text;
