@@ -1,8 +1,10 @@
 #include "bench/blender_export.h"
 
+#include "io/image_io.h"
 #include "shaders/include/ggx.glsl"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +13,7 @@
 #include <system_error>
 
 namespace raylab {
+namespace fs = std::filesystem;
 namespace {
 
 std::string num(double v) {
@@ -48,80 +51,194 @@ from mathutils import Matrix, Vector
 def clear_scene():
     bpy.ops.wm.read_factory_settings(use_empty=True)
 
-# raylab's material (scenes/FORMAT.md) as Cycles nodes:
-#   opaque = Diffuse(albedo * (1 - F)) + Glossy(GGX, colour F), F = Schlick f0 + (f90 - f0)(1 - cos)^5
-#            with f90 = min(1, 50 max(f0)) and cos taken at the shading normal and view direction
-#            (Layer Weight "Facing" with blend 0.5 is 1 - |N.I|). Blender's Glossy BSDF has no
-#            Fresnel of its own, so its colour is this F.
-#   surface = Mix(opaque, Glass(IOR ior), fac = transmission) + Emission(radiance).
+# A node input fed either by a node's output (linked) or by a constant (set; a scalar fills
+# every channel of a colour or vector input).
+def feed(tree, socket, x):
+    if isinstance(x, bpy.types.NodeSocket):
+        tree.links.new(x, socket)
+        return
+    if isinstance(x, (int, float)) and socket.type in ("RGBA", "VECTOR"):
+        x = (x, x, x, 1.0) if socket.type == "RGBA" else (x, x, x)
+    elif socket.type == "VECTOR":
+        x = tuple(x)[:3]
+    elif socket.type == "RGBA" and len(x) == 3:
+        x = tuple(x) + (1.0,)
+    socket.default_value = x
+
+def is_socket(x):
+    return isinstance(x, bpy.types.NodeSocket)
+
+def vmath(tree, op, a, b=None, scale=None):
+    n = tree.nodes.new("ShaderNodeVectorMath")
+    n.operation = op
+    feed(tree, n.inputs[0], a)
+    if b is not None:
+        feed(tree, n.inputs[1], b)
+    if scale is not None:
+        feed(tree, n.inputs["Scale"], scale)
+    return n.outputs[0]
+
+def smath(tree, op, a, b=None):
+    n = tree.nodes.new("ShaderNodeMath")
+    n.operation = op
+    n.use_clamp = False
+    feed(tree, n.inputs[0], a)
+    if b is not None:
+        feed(tree, n.inputs[1], b)
+    return n.outputs[0]
+
+def channel(tree, colour, axis):
+    n = tree.nodes.new("ShaderNodeSeparateXYZ")
+    feed(tree, n.inputs[0], colour)
+    return n.outputs[axis]
+
+# A texture as raylab reads it: texture = (path, colour space, wrap u, wrap v); colour space
+# "sRGB" decodes 8- and 16-bit images as raylab does, "Non-Color" takes the stored values (data
+# maps, and the linear EXRs the export writes for images embedded in glTF files); wraps are
+# REPEAT, EXTEND (glTF clamp to edge) or MIRROR. Cycles 3.4's Image Texture has one extension for
+# both axes and no mirroring, so other combinations fold uv in nodes first. Linear filtering:
+# Cycles has no mip maps, raylab filters trilinearly at the ray cone's level.
+def image(tree, texture):
+    path, colour_space, wrap_u, wrap_v = texture
+    node = tree.nodes.new("ShaderNodeTexImage")
+    node.image = bpy.data.images.load(path, check_existing=True)
+    node.image.colorspace_settings.name = colour_space
+    node.interpolation = "Linear"
+    uv = tree.nodes.new("ShaderNodeTexCoord").outputs["UV"]
+    if wrap_u == wrap_v and wrap_u != "MIRROR":
+        node.extension = wrap_u
+    else:
+        node.extension = "EXTEND"
+        split = tree.nodes.new("ShaderNodeSeparateXYZ")
+        feed(tree, split.inputs[0], uv)
+        folded = []
+        for axis, wrap in ((0, wrap_u), (1, wrap_v)):
+            x = split.outputs[axis]
+            if wrap == "REPEAT":
+                x = smath(tree, "FRACT", x)
+            elif wrap == "MIRROR":
+                x = smath(tree, "PINGPONG", x, 1.0)
+            folded.append(x)
+        join = tree.nodes.new("ShaderNodeCombineXYZ")
+        feed(tree, join.inputs[0], folded[0])
+        feed(tree, join.inputs[1], folded[1])
+        uv = join.outputs[0]
+    feed(tree, node.inputs["Vector"], uv)
+    return node.outputs["Color"]
+
+# raylab's material (scenes/FORMAT.md, shaders/include/bsdf.glsl) as Cycles nodes:
+#   opaque  = Diffuse(albedo (1 - F(view))) + Principled specular lobe (metallic 1, base colour f0,
+#             GGX), F = Schlick f0 + (f90 - f0)(1 - cos)^5, f90 = min(1, 50 max(f0))
+#   surface = Mix(opaque, Glass(IOR ior), fac = transmission) + Emission(radiance)
+# The diffuse part is raylab's exactly: Lambert weighted by 1 - F at the view angle (Layer Weight
+# "Facing" with blend 0.5 is 1 - |N.I|). The Principled BSDF with metallic 1 is Cycles' only GGX
+# lobe with Fresnel at the half vector as raylab's Cook-Torrance has it: F = f0 + (1 - f0) FH, FH
+# the dielectric Fresnel of IOR 1.5 (Specular 0.5) rescaled to [0, 1], against raylab's Schlick
+# (1 - cos)^5. The "GGX" distribution, not the multiscatter default: raylab is single scattering.
+# Metallic workflow (textured): f0 = mix(f0, base, m), albedo = base (1 - m), base = albedo x
+# albedo texture, m = metallic x the metallic texture's blue; roughness x the roughness texture's
+# green; a tangent-space normal map through a Normal Map node (Strength = raylab's normal scale,
+# equal at 1).
 # Roughness: Cycles squares the Roughness input (alpha = Roughness^2) as raylab does with its
 # perceptual roughness, so Blender Roughness = raylab roughness; below 0.0316 (alpha < 0.001) both
-# are perfect mirrors / smooth glass ("SHARP").
-# Known mismatches: raylab applies F at the half vector inside Cook-Torrance, here F at the view
-# angle multiplies the whole lobe (equal for mirrors, close for glossy, off by a few percent at
-# grazing angles for rough metals); Cycles 3.4's GGX uses the separable Smith G1 * G1 where raylab
-# uses the height-correlated G2 (slightly darker here at high roughness); raylab's 1/eta^2 radiance
-# scaling across glass does not change camera-path images.
-def material(name, albedo, emission, f0=(0.0, 0.0, 0.0, 1.0), roughness=1.0, transmission=0.0, ior=1.5):
+# are perfect mirrors / smooth glass.
+# Known mismatches: Cycles 3.4's GGX uses the separable Smith G1 * G1 where raylab uses the
+# height-correlated G2 (slightly darker here at high roughness); FH above against Schlick; raylab's
+# 1/eta^2 radiance scaling across glass does not change camera-path images.
+def material(name, albedo, emission, f0=(0.0, 0.0, 0.0, 1.0), roughness=1.0, transmission=0.0, ior=1.5,
+             metallic=0.0, albedo_map=None, roughness_map=None, metallic_map=None, normal_map=None,
+             normal_scale=1.0, emission_map=None):
     m = bpy.data.materials.new(name)
     m.use_nodes = True
-    nodes, links = m.node_tree.nodes, m.node_tree.links
-    nodes.clear()
-    out = nodes.new("ShaderNodeOutputMaterial")
-    sharp = roughness < 0.0316
-    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
-    diffuse.inputs["Color"].default_value = albedo
+    tree = m.node_tree
+    tree.nodes.clear()
+    out = tree.nodes.new("ShaderNodeOutputMaterial")
+    sharp = roughness < 0.0316 and roughness_map is None
+    base = albedo if albedo_map is None else vmath(tree, "MULTIPLY", albedo[:3], image(tree, albedo_map))
+    if roughness_map is not None:
+        roughness = smath(tree, "MULTIPLY", roughness, channel(tree, image(tree, roughness_map), "Y"))
+    elif sharp:
+        roughness = 0.0
+    if metallic_map is not None:
+        metallic = smath(tree, "MULTIPLY", metallic, channel(tree, image(tree, metallic_map), "Z"))
+    if is_socket(metallic) or metallic > 0.0:
+        mix = tree.nodes.new("ShaderNodeMixRGB")       # f0 = mix(f0, base, m)
+        feed(tree, mix.inputs["Fac"], metallic)
+        feed(tree, mix.inputs["Color1"], f0)
+        feed(tree, mix.inputs["Color2"], base)
+        f0 = mix.outputs[0]
+        base = vmath(tree, "SCALE", base, scale=smath(tree, "SUBTRACT", 1.0, metallic))
+    normal = None
+    if normal_map is not None:
+        nm = tree.nodes.new("ShaderNodeNormalMap")
+        nm.space = "TANGENT"
+        nm.inputs["Strength"].default_value = normal_scale
+        feed(tree, nm.inputs["Color"], image(tree, normal_map))
+        normal = nm.outputs["Normal"]
+    def bent(node):
+        if normal is not None:
+            feed(tree, node.inputs["Normal"], normal)
+        return node
+    diffuse = bent(tree.nodes.new("ShaderNodeBsdfDiffuse"))
     diffuse.inputs["Roughness"].default_value = 0.0   # Lambert
+    diffuse_colour = base
     surface = diffuse.outputs[0]
-    if max(f0[:3]) > 0.0:
-        f90 = min(1.0, 50.0 * max(f0[:3]))
-        facing = nodes.new("ShaderNodeLayerWeight")
+    specular = is_socket(f0) or max(f0[:3]) > 0.0
+    if specular:
+        if is_socket(f0):
+            f0_max = smath(tree, "MAXIMUM", smath(tree, "MAXIMUM", channel(tree, f0, "X"), channel(tree, f0, "Y")),
+                           channel(tree, f0, "Z"))
+            f90 = smath(tree, "MINIMUM", 1.0, smath(tree, "MULTIPLY", 50.0, f0_max))
+        else:
+            f90 = min(1.0, 50.0 * max(f0[:3]))
+        facing = bent(tree.nodes.new("ShaderNodeLayerWeight"))
         facing.inputs["Blend"].default_value = 0.5     # Facing = 1 - |cos|
-        pow5 = nodes.new("ShaderNodeMath")
-        pow5.operation = "POWER"
-        pow5.inputs[1].default_value = 5.0
-        links.new(facing.outputs["Facing"], pow5.inputs[0])
-        fresnel = nodes.new("ShaderNodeMixRGB")          # f0 + (f90 - f0) * (1 - cos)^5
-        fresnel.inputs["Color1"].default_value = f0
-        fresnel.inputs["Color2"].default_value = (f90, f90, f90, 1.0)
-        links.new(pow5.outputs[0], fresnel.inputs["Fac"])
-        one_minus = nodes.new("ShaderNodeVectorMath")
-        one_minus.operation = "SUBTRACT"
-        one_minus.inputs[0].default_value = (1.0, 1.0, 1.0)
-        links.new(fresnel.outputs[0], one_minus.inputs[1])
-        weighted = nodes.new("ShaderNodeVectorMath")
-        weighted.operation = "MULTIPLY"
-        weighted.inputs[0].default_value = albedo[:3]
-        links.new(one_minus.outputs[0], weighted.inputs[1])
-        links.new(weighted.outputs[0], diffuse.inputs["Color"])
-        glossy = nodes.new("ShaderNodeBsdfGlossy")
-        glossy.distribution = "SHARP" if sharp else "GGX"
-        glossy.inputs["Roughness"].default_value = roughness
-        links.new(fresnel.outputs[0], glossy.inputs["Color"])
-        add = nodes.new("ShaderNodeAddShader")
-        links.new(diffuse.outputs[0], add.inputs[0])
-        links.new(glossy.outputs[0], add.inputs[1])
+        pow5 = smath(tree, "POWER", facing.outputs["Facing"], 5.0)
+        fresnel = tree.nodes.new("ShaderNodeMixRGB")   # f0 + (f90 - f0) * (1 - cos)^5
+        feed(tree, fresnel.inputs["Fac"], pow5)
+        feed(tree, fresnel.inputs["Color1"], f0)
+        if is_socket(f90):
+            feed(tree, fresnel.inputs["Color2"], vmath(tree, "SCALE", 1.0, scale=f90))
+        else:
+            feed(tree, fresnel.inputs["Color2"], f90)
+        weight = vmath(tree, "SUBTRACT", 1.0, fresnel.outputs[0])
+        diffuse_colour = vmath(tree, "MULTIPLY", base if is_socket(base) else base[:3], weight)
+        gloss = bent(tree.nodes.new("ShaderNodeBsdfPrincipled"))
+        gloss.distribution = "GGX"
+        gloss.subsurface_method = "BURLEY"
+        feed(tree, gloss.inputs["Base Color"], f0)
+        gloss.inputs["Metallic"].default_value = 1.0
+        gloss.inputs["Specular"].default_value = 0.5
+        gloss.inputs["Specular Tint"].default_value = 0.0
+        gloss.inputs["Sheen"].default_value = 0.0
+        gloss.inputs["Clearcoat"].default_value = 0.0
+        feed(tree, gloss.inputs["Roughness"], roughness)
+        add = tree.nodes.new("ShaderNodeAddShader")
+        feed(tree, add.inputs[0], diffuse.outputs[0])
+        feed(tree, add.inputs[1], gloss.outputs[0])
         surface = add.outputs[0]
+    feed(tree, diffuse.inputs["Color"], diffuse_colour)
     if transmission > 0.0:
-        glass = nodes.new("ShaderNodeBsdfGlass")
+        glass = bent(tree.nodes.new("ShaderNodeBsdfGlass"))
         glass.distribution = "SHARP" if sharp else "GGX"
         glass.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
-        glass.inputs["Roughness"].default_value = roughness
+        feed(tree, glass.inputs["Roughness"], roughness)
         glass.inputs["IOR"].default_value = ior
-        mix = nodes.new("ShaderNodeMixShader")
+        mix = tree.nodes.new("ShaderNodeMixShader")
         mix.inputs["Fac"].default_value = transmission
-        links.new(surface, mix.inputs[1])
-        links.new(glass.outputs[0], mix.inputs[2])
+        feed(tree, mix.inputs[1], surface)
+        feed(tree, mix.inputs[2], glass.outputs[0])
         surface = mix.outputs[0]
     if max(emission[:3]) > 0.0:
-        emit = nodes.new("ShaderNodeEmission")
-        emit.inputs["Color"].default_value = emission
+        emit = tree.nodes.new("ShaderNodeEmission")
+        feed(tree, emit.inputs["Color"], emission if emission_map is None
+             else vmath(tree, "MULTIPLY", emission[:3], image(tree, emission_map)))
         emit.inputs["Strength"].default_value = 1.0
-        add = nodes.new("ShaderNodeAddShader")
-        links.new(surface, add.inputs[0])
-        links.new(emit.outputs[0], add.inputs[1])
+        add = tree.nodes.new("ShaderNodeAddShader")
+        feed(tree, add.inputs[0], surface)
+        feed(tree, add.inputs[1], emit.outputs[0])
         surface = add.outputs[0]
-    links.new(surface, out.inputs["Surface"])
+    feed(tree, out.inputs["Surface"], surface)
     return m
 
 # raylab places objects by world = T . Rz . Ry . Rx . S . local (degrees, extrinsic x then y then z)
@@ -135,21 +252,43 @@ def placement(translation, rotation_degrees, scale):
          @ Matrix.Rotation(rx, 4, "X") @ Matrix.Diagonal((scale[0], scale[1], scale[2], 1.0)))
     return TO_Z_UP @ m @ TO_Z_UP.inverted()
 
-def sphere(name, center, radius, mat, transform=None):
+def sphere(name, center, radius, mat, transform=None, uv=False):
     # Fine tessellation with smooth shading; Cycles has no analytic spheres. center is z-up already;
-    # transform is raylab's (translation, rotation, scale), y-up, as written in the scene.
+    # transform is raylab's (translation, rotation, scale), y-up, as written in the scene. uv: raylab's
+    # sphere coordinates (u = 0.5 + atan2(n.z, n.x) / 2pi about +y, v = acos(-n.y) / pi from the bottom
+    # pole, n in raylab's y-up object space), for textured materials.
     bpy.ops.mesh.primitive_uv_sphere_add(segments=192, ring_count=96, radius=radius, location=(0.0, 0.0, 0.0))
     obj = bpy.context.active_object
     obj.name = name
     bpy.ops.object.shade_smooth()
     obj.data.materials.append(mat)
+    if uv:
+        data = obj.data
+        layer = data.uv_layers.active or data.uv_layers.new(name="UVMap")
+        for poly in data.polygons:
+            corners = []
+            for li in poly.loop_indices:
+                n = data.vertices[data.loops[li].vertex_index].co.normalized()   # z-up: raylab (x, z, -y)
+                corners.append([0.5 + math.atan2(-n.y, n.x) / (2.0 * math.pi),
+                                math.acos(max(-1.0, min(1.0, -n.z))) / math.pi, abs(n.z) > 0.999999])
+            # Faces across the seam take u past 1 rather than back to 0; pole corners take their
+            # face's u (the pole has none of its own).
+            us = [c[0] for c in corners if not c[2]]
+            if max(us) - min(us) > 0.5:
+                for c in corners:
+                    c[0] += 1.0 if c[0] < 0.5 else 0.0
+                us = [c[0] for c in corners if not c[2]]
+            for li, c in zip(poly.loop_indices, corners):
+                layer.data[li].uv = ((sum(us) / len(us)) if c[2] else c[0], c[1])
     m = Matrix.Translation(center)
     if transform is not None:
         m = placement(*transform) @ m
     obj.matrix_world = m
 
-def mesh(name, positions, triangles, normals, mat, transform):
-    # positions and normals are z-up already (object space); the object's matrix places it.
+def mesh(name, positions, triangles, normals, mat, transform, uvs=(), material_indices=()):
+    # positions and normals are z-up already (object space); the object's matrix places it. mat is
+    # one material or a list of them, material_indices then the slot of each triangle (glTF
+    # primitives); uvs per vertex.
     data = bpy.data.meshes.new(name)
     data.from_pydata(positions, [], triangles)
     data.update()
@@ -157,7 +296,15 @@ def mesh(name, positions, triangles, normals, mat, transform):
         data.polygons.foreach_set("use_smooth", [True] * len(data.polygons))
         data.use_auto_smooth = True                      # needed for custom normals in 3.4
         data.normals_split_custom_set_from_vertices(normals)
-    data.materials.append(mat)
+    if uvs:
+        layer = data.uv_layers.new(name="UVMap")
+        corners = [0] * len(data.loops)
+        data.loops.foreach_get("vertex_index", corners)
+        layer.data.foreach_set("uv", [x for v in corners for x in uvs[v]])
+    for m in (mat if isinstance(mat, list) else [mat]):
+        data.materials.append(m)
+    if material_indices:
+        data.polygons.foreach_set("material_index", material_indices)
     obj = bpy.data.objects.new(name, data)
     bpy.context.scene.collection.objects.link(obj)
     obj.matrix_world = placement(*transform)
@@ -278,9 +425,51 @@ def render_if_asked():
 
 )PY";
 
+bool hasTexture(const Material& m) {
+    return m.albedoTextureIndex >= 0 || m.normalTextureIndex >= 0 || m.roughnessTextureIndex >= 0 ||
+           m.metallicTextureIndex >= 0 || m.emissionTextureIndex >= 0;
+}
+
+const char* wrapName(TextureWrap w) {
+    switch (w) {
+    case TextureWrap::ClampToEdge: return "EXTEND";
+    case TextureWrap::MirroredRepeat: return "MIRROR";
+    default: return "REPEAT";
+    }
+}
+
+std::string mapArgument(const Scene& scene, const fs::path& embeddedDir, int index) {
+    const BlenderTexture t = blenderTexture(scene, embeddedDir, index);
+    return "(" + pyString(t.path.string()) + ", " + pyString(t.colourSpace) + ", \"" +
+           wrapName(scene.textures[size_t(index)].wrapU) + "\", \"" + wrapName(scene.textures[size_t(index)].wrapV) +
+           "\")";
+}
+
 } // namespace
 
-std::string blenderScript(const Scene& scene) {
+BlenderTexture blenderTexture(const Scene& scene, const fs::path& embeddedDir, int index) {
+    const std::string& key = scene.textures.at(size_t(index)).file;
+    const bool linear = key.rfind("linear:", 0) == 0;
+    const std::string given = key.substr(key.find(':') + 1);
+    BlenderTexture t;
+    if (given.find("#textures[") != std::string::npos) {
+        // Decoded from a glTF file (perhaps embedded in it): written out as linear data.
+        t.path = (fs::absolute(embeddedDir) / ("texture" + std::to_string(index) + ".exr")).lexically_normal();
+        t.colourSpace = "Non-Color";
+        t.embedded = true;
+        return t;
+    }
+    // As the loader resolves it: relative to the scene file's directory.
+    const fs::path path(given);
+    t.path = (path.is_absolute() ? path : fs::absolute(scene.sourcePath).parent_path() / path).lexically_normal();
+    std::string ext = t.path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const bool floatFile = ext == ".exr" || ext == ".hdr" || ext == ".pfm";
+    t.colourSpace = linear ? "Non-Color" : floatFile ? "Linear" : "sRGB";
+    return t;
+}
+
+std::string blenderScript(const Scene& scene, const fs::path& embeddedDir) {
     std::ostringstream py;
     py << kPrelude;
     py << "clear_scene()\n";
@@ -288,21 +477,48 @@ std::string blenderScript(const Scene& scene) {
     py << "settings(" << r.width << ", " << r.height << ", " << r.maxBounces << ", " << r.seed << ")\n";
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];
-        // metallic on the f0 model (scenes/FORMAT.md), as the tracer bakes it without textures
-        const glm::vec3 albedo = m.albedo * (1.0f - m.metallic), f0 = glm::mix(m.f0, m.albedo, m.metallic);
-        py << "mat" << i << " = material(" << pyString(m.name) << ", " << colour(albedo) << ", "
-           << colour(m.radiance()) << ", f0=" << colour(f0) << ", roughness=" << num(m.roughness)
-           << ", transmission=" << num(m.transmission) << ", ior=" << num(m.ior) << ")\n";
+        py << "mat" << i << " = material(" << pyString(m.name) << ", ";
+        if (!hasTexture(m)) {
+            // metallic on the f0 model (scenes/FORMAT.md), as the tracer bakes it without textures
+            const glm::vec3 albedo = m.albedo * (1.0f - m.metallic), f0 = glm::mix(m.f0, m.albedo, m.metallic);
+            py << colour(albedo) << ", " << colour(m.radiance()) << ", f0=" << colour(f0);
+        } else {
+            py << colour(m.albedo) << ", " << colour(m.radiance()) << ", f0=" << colour(m.f0);
+        }
+        py << ", roughness=" << num(m.roughness) << ", transmission=" << num(m.transmission) << ", ior=" << num(m.ior);
+        if (hasTexture(m)) {
+            py << ", metallic=" << num(m.metallic);
+            const std::pair<const char*, int> maps[] = {{"albedo_map", m.albedoTextureIndex},
+                                                        {"roughness_map", m.roughnessTextureIndex},
+                                                        {"metallic_map", m.metallicTextureIndex},
+                                                        {"normal_map", m.normalTextureIndex},
+                                                        {"emission_map", m.emissionTextureIndex}};
+            for (const auto& [key, index] : maps)
+                if (index >= 0) py << ", " << key << "=" << mapArgument(scene, embeddedDir, index);
+            if (m.normalTextureIndex >= 0) py << ", normal_scale=" << num(m.normalScale);
+        }
+        py << ")\n";
     }
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
         py << "sphere(\"sphere" << i << "\", " << point(s.center) << ", " << num(s.radius) << ", mat"
            << s.material;
         if (s.transform != Transform{}) py << ", " << transform(s.transform);
+        if (hasTexture(scene.materials[size_t(s.material)])) py << ", uv=True";
         py << ")\n";
     }
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         const Mesh& m = scene.meshes[i];
+        // Materials of the mesh: one, or the slots its triangles use (glTF primitives).
+        std::vector<int> slots;
+        if (m.triangleMaterials.empty()) slots.push_back(m.material);
+        std::vector<int> slotOf;
+        for (int tm : m.triangleMaterials) {
+            const int mat = tm < 0 ? m.material : tm;
+            const auto at = std::find(slots.begin(), slots.end(), mat);
+            slotOf.push_back(int(at - slots.begin()));
+            if (at == slots.end()) slots.push_back(mat);
+        }
         py << "mesh(\"mesh" << i << "\", [";
         for (size_t v = 0; v < m.positions.size(); ++v) py << (v ? ", " : "") << point(m.positions[v]);
         py << "], [";
@@ -311,13 +527,33 @@ std::string blenderScript(const Scene& scene) {
                << ")";
         py << "], [";
         for (size_t v = 0; v < m.normals.size(); ++v) py << (v ? ", " : "") << point(m.normals[v]);
-        py << "], mat" << m.material << ", " << transform(m.transform) << ")\n";
+        py << "], ";
+        if (slots.size() == 1) {
+            py << "mat" << slots[0];
+        } else {
+            py << "[";
+            for (size_t k = 0; k < slots.size(); ++k) py << (k ? ", " : "") << "mat" << slots[k];
+            py << "]";
+        }
+        py << ", " << transform(m.transform);
+        if (!m.uvs.empty()) {
+            py << ", uvs=[";
+            for (size_t v = 0; v < m.uvs.size(); ++v)
+                py << (v ? ", " : "") << "(" << num(m.uvs[v].x) << ", " << num(m.uvs[v].y) << ")";
+            py << "]";
+        }
+        if (slots.size() > 1) {   // one material for all is the object's, without indices
+            py << ", material_indices=[";
+            for (size_t t = 0; t < slotOf.size(); ++t) py << (t ? ", " : "") << slotOf[t];
+            py << "]";
+        }
+        py << ")\n";
     }
     const Sky& sky = scene.sky;
     if (sky.type == Sky::Type::Constant)
         py << "world_constant(" << colour(sky.color * sky.strength) << ")\n";
     else if (sky.type == Sky::Type::Map)
-        py << "world_map(" << pyString(std::filesystem::absolute(sky.map).lexically_normal().string()) << ", "
+        py << "world_map(" << pyString(fs::absolute(sky.map).lexically_normal().string()) << ", "
            << num(sky.strength) << ", " << num(sky.rotation) << ")\n";
     else
         py << "world_gradient(" << colour(sky.bottom * sky.strength) << ", " << colour(sky.top * sky.strength)
@@ -332,43 +568,59 @@ std::string blenderScript(const Scene& scene) {
 }
 
 std::vector<std::string> blenderExportApproximations(const Scene& scene) {
-    bool layered = false, metals = false, textures = false, perTriangle = false;
+    bool layered = false, textures = false, normalMaps = false;
     for (const Material& m : scene.materials) {
-        const glm::vec3 albedo = m.albedo * (1.0f - m.metallic), f0 = glm::mix(m.f0, m.albedo, m.metallic);
+        const glm::vec3 f0 = glm::mix(m.f0, m.albedo, m.metallic);
         const float f0Max = std::max({f0.r, f0.g, f0.b}), f0Min = std::min({f0.r, f0.g, f0.b});
-        const bool opaque = m.transmission < 1.0f;
         // Schlick's F is the same at every angle only where f0 = 1; a mirror (the tracer's delta
-        // lobe) reflects at h = n, where the view-angle F and the half-vector F agree.
-        const bool mirror = glsl::ggxIsDelta(glsl::ggxAlpha(m.roughness));
-        const bool fresnelVaries = f0Max > 0.0f && f0Min < 1.0f && !mirror && opaque;
-        layered |= fresnelVaries && std::max({albedo.r, albedo.g, albedo.b}) > 0.0f;
-        metals |= fresnelVaries && std::max({albedo.r, albedo.g, albedo.b}) == 0.0f;
-        textures |= m.albedoTextureIndex >= 0 || m.normalTextureIndex >= 0 || m.roughnessTextureIndex >= 0 ||
-                    m.metallicTextureIndex >= 0 || m.emissionTextureIndex >= 0;
+        // lobe) reflects at h = n, where every Fresnel curve gives f0.
+        const bool mirror = glsl::ggxIsDelta(glsl::ggxAlpha(m.roughness)) && m.roughnessTextureIndex < 0;
+        layered |= ((f0Max > 0.0f && f0Min < 1.0f) || m.metallicTextureIndex >= 0) && !mirror && m.transmission < 1.0f;
+        textures |= hasTexture(m);
+        normalMaps |= m.normalTextureIndex >= 0;
     }
-    for (const Mesh& m : scene.meshes) perTriangle |= !m.triangleMaterials.empty();
     std::vector<std::string> out;
     if (layered)
-        out.push_back("diffuse under a rough Fresnel-weighted GGX layer (plastic): Blender weights both lobes by F "
-                      "at the view angle, raylab by F at the half vector inside Cook-Torrance, so grazing glossy "
-                      "surfaces come out brighter in Cycles");
-    if (metals) out.push_back("rough metals with f0 < 1: F at the view angle in Blender, at the half vector in raylab");
-    if (textures) out.push_back("textures are not exported");
-    if (perTriangle) out.push_back("per-triangle (glTF) materials are not exported");
+        out.push_back("Fresnel-weighted GGX (plastics, coloured metals): Cycles' half-vector Fresnel is the IOR 1.5 "
+                      "dielectric curve rescaled from f0 to 1, raylab's is Schlick's");
+    if (textures)
+        out.push_back("textures: Cycles filters bilinearly without mip maps, raylab trilinearly at the ray cone's level");
+    if (normalMaps)
+        out.push_back("normal maps: Cycles' MikkTSpace tangents against raylab's dp/du, and Strength for the normal "
+                      "scale (equal at 1)");
     return out;
 }
 
-void writeBlenderScript(const Scene& scene, const std::filesystem::path& path) {
-    const std::filesystem::path tmp = path.string() + ".tmp";
+void writeBlenderScript(const Scene& scene, const fs::path& path) {
+    const fs::path embeddedDir = path.parent_path() / (path.stem().string() + "_textures");
+    for (size_t i = 0; i < scene.textures.size(); ++i) {
+        const BlenderTexture t = blenderTexture(scene, embeddedDir, int(i));
+        if (!t.embedded) continue;
+        // Level 0 as linear float RGBA, rows top first as image files have them.
+        const MipLevel& level = scene.textures[i].levels.at(0);
+        Image image(level.width, level.height);
+        for (int y = 0; y < level.height; ++y)
+            for (int x = 0; x < level.width; ++x) {
+                const glm::vec4 c = level.texels[size_t(level.height - 1 - y) * size_t(level.width) + size_t(x)];
+                for (int k = 0; k < 4; ++k) image.rgba[(size_t(y) * size_t(level.width) + size_t(x)) * 4 + size_t(k)] = c[k];
+            }
+        fs::create_directories(t.path.parent_path());
+        try {
+            writeImage(t.path, image, {}, {});
+        } catch (const std::exception& e) {
+            throw std::runtime_error(t.path.string() + ": error: cannot write: " + e.what());
+        }
+    }
+    const fs::path tmp = path.string() + ".tmp";
     {
         std::ofstream out(tmp, std::ios::binary);
         if (!out)
             throw std::runtime_error(path.string() + ": error: cannot write: " +
                                      std::error_code(errno, std::generic_category()).message());
-        out << blenderScript(scene);
+        out << blenderScript(scene, embeddedDir);
         if (!out) throw std::runtime_error(path.string() + ": error: cannot write");
     }
-    std::filesystem::rename(tmp, path);
+    fs::rename(tmp, path);
 }
 
 } // namespace raylab
