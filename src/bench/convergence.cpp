@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <sstream>
 
 namespace raylab {
 
@@ -71,6 +73,37 @@ double convergenceSlope(const std::vector<Checkpoint>& curve) {
         sxx += x * x;
     }
     return sxx > 0 ? sxy / sxx : 0.0;
+}
+
+PeerMismatch peerMismatch(const Image& raylabReference, const Image& peerReference) {
+    PeerMismatch m;
+    m.raylabMean = imageMean(raylabReference);
+    m.peerMean = imageMean(peerReference);
+    m.meanDifference = m.raylabMean > 0.0 ? (m.peerMean - m.raylabMean) / m.raylabMean : 0.0;
+    m.rmse = imageError(peerReference, raylabReference).rmse;
+    m.approximate = std::abs(m.meanDifference) > kApproximateMeanDifference;
+    return m;
+}
+
+std::string peerMismatchTable(const std::vector<std::pair<std::string, PeerMismatch>>& scenes) {
+    const auto fmt = [](const char* f, double v) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, f, v);
+        return std::string(buf);
+    };
+    std::ostringstream out;
+    out << "| scene | raylab reference mean | Cycles reference mean | mean difference | RMSE between them | "
+           "RMSE, % of the mean | comparison |\n|---|---|---|---|---|---|---|\n";
+    for (const auto& [name, m] : scenes)
+        out << "| " << name << " | " << fmt("%.4g", m.raylabMean) << " | " << fmt("%.4g", m.peerMean) << " | "
+            << fmt("%+.2f %%", 100.0 * m.meanDifference) << " | " << fmt("%.4g", m.rmse) << " | "
+            << fmt("%.1f %%", m.raylabMean > 0.0 ? 100.0 * m.rmse / m.raylabMean : 0.0) << " | "
+            << (m.approximate ? "approximate: means differ by more than " +
+                                    fmt("%.0f %%", 100.0 * kApproximateMeanDifference) +
+                                    ", out of the time-to-error goal"
+                              : std::string("same image"))
+            << " |\n";
+    return out.str();
 }
 
 } // namespace raylab

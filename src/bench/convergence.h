@@ -5,6 +5,7 @@
 #include "render/path_tracer.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace raylab {
@@ -29,5 +30,24 @@ double efficiency(const Checkpoint& c);
 
 // Least-squares slope of log RMSE against log spp (−0.5 for an unbiased estimator).
 double convergenceSlope(const std::vector<Checkpoint>& curve);
+
+// A peer scene whose two references' means differ by more than this fraction draws another image
+// than raylab's: its times to error compare different integrals, so the summary marks it
+// approximate and leaves it out of the time-to-error goal.
+constexpr double kApproximateMeanDifference = 0.03;
+
+// How far the peer's (Cycles') reference is from raylab's.
+struct PeerMismatch {
+    double raylabMean = 0.0;       // of raylab's reference (RGB)
+    double peerMean = 0.0;         // of the peer's reference (RGB)
+    double meanDifference = 0.0;   // (peer − raylab) / raylab mean
+    double rmse = 0.0;             // between the references (RGB)
+    bool approximate = false;      // |meanDifference| > kApproximateMeanDifference
+};
+
+PeerMismatch peerMismatch(const Image& raylabReference, const Image& peerReference);
+
+// The summary's table of reference mismatches, one row per (scene, mismatch).
+std::string peerMismatchTable(const std::vector<std::pair<std::string, PeerMismatch>>& scenes);
 
 } // namespace raylab

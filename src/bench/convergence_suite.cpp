@@ -154,6 +154,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
     for (size_t i = 0; i < std::size(kLevels); ++i) summary << "|---";
     summary << "|\n";
     std::ostringstream ratios;
+    std::vector<std::pair<std::string, PeerMismatch>> mismatches;
 
     for (const SuiteScene& s : scenes) {
         std::cerr << "== " << s.name << " (" << s.scene.string() << ")\n";
@@ -226,15 +227,21 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         // Cycles: one Blender run per sample count, against Cycles' own long render (the two
         // renderers need not agree to the last bit: spheres are tessellated in Cycles).
         Reference peerReference;
+        PeerMismatch mismatch;
         const bool runPeer = s.peer && peerReady;
         if (runPeer) {
             try {
                 const fs::path script = outDir / (s.name + "_blender.py");
                 writeBlenderScript(scene, script);
                 const fs::path work = outDir / "cycles_work";
+                // The script names files by absolute path; keyed with the working directory left
+                // out, a reference built in one checkout is valid in another.
+                std::string scriptText = blenderScript(scene, outDir / (s.name + "_blender_textures"));
+                const std::string here = fs::current_path().string() + "/";
+                for (size_t at; (at = scriptText.find(here)) != std::string::npos;) scriptText.erase(at, here.size());
                 const std::string key = "cycles " + fileHash(s.scene) + " " + std::to_string(mode.width) + "x" +
                                         std::to_string(mode.height) + " " + std::to_string(mode.peerReferenceSpp) + "x" +
-                                        std::to_string(mode.referenceBatches) + " " + fileHash(script);
+                                        std::to_string(mode.referenceBatches) + " " + textHash(scriptText);
                 peerReference = cachedReference(
                     o.referenceDir / (s.name + "_cycles_" + std::to_string(mode.width) + "x" + std::to_string(mode.height)),
                     key, mode.referenceBatches,
@@ -265,20 +272,21 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     std::cerr << ")\n";
                 }
                 curves.push_back(c);
-                const ImageError between = imageError(peerReference.mean, reference.mean);
-                ratios << "- " << s.name << ": RMSE between the raylab and Cycles references "
-                       << fmt("%.4g", between.rmse) << " (reference mean " << fmt("%.4g", imageMean(reference.mean))
-                       << "). ";
+                mismatch = peerMismatch(reference.mean, peerReference.mean);
+                mismatches.emplace_back(s.name, mismatch);
                 const std::vector<std::string> approximations = blenderExportApproximations(scene);
-                if (approximations.empty()) {
-                    ratios << "The export maps every material exactly (Lambert, F = 1 GGX, glass, emission): "
-                              "what differs is noise and sphere tessellation.\n";
-                } else {
-                    ratios << "The export approximates:";
-                    for (size_t i = 0; i < approximations.size(); ++i)
-                        ratios << (i ? ";" : "") << " " << approximations[i];
-                    ratios << ". Each renderer's error is measured against its own reference.\n";
-                }
+                ratios << "- " << s.name << ": the export "
+                       << (approximations.empty() ? std::string("maps every material exactly (Lambert, F = 1 GGX, glass, "
+                                                                "emission): what differs is noise and sphere tessellation")
+                                                  : "approximates");
+                for (size_t i = 0; i < approximations.size(); ++i)
+                    ratios << (i ? "; " : ": ") << approximations[i];
+                ratios << ". Each renderer's error is measured against its own reference"
+                       << (mismatch.approximate ? "; the references' means differ by " +
+                                                      fmt("%+.1f", 100.0 * mismatch.meanDifference) +
+                                                      " %: approximate, out of the time-to-error goal"
+                                                : std::string())
+                       << ".\n";
             } catch (const std::exception& e) {
                 std::cerr << "raylab-bench: Cycles: " << e.what() << "\n";
                 if (o.peer == "on") return 3;
@@ -339,7 +347,8 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 const double tr = timeToReach(curves.front().points, l * refMean);
                 const double tc = timeToReach(curves.back().points, l * imageMean(peerReference.mean));
                 if (tr > 0 && tc > 0) {
-                    ratios << "- " << s.name << ", RMSE ≤ " << int(l * 100) << "% of the mean: Cycles "
+                    ratios << "- " << s.name << (mismatch.approximate ? " (approximate)" : "") << ", RMSE ≤ "
+                           << int(l * 100) << "% of the mean: Cycles "
                            << fmt("%.3g", tc) << " s, raylab " << fmt("%.3g", tr) << " s: Cycles/raylab "
                            << fmt("%.2f", tc / tr) << "× whole runs, ";
                     // The sampling part is the run less the fitted fixed cost; when that is not
@@ -383,6 +392,10 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
        << "\n- slope: log–log slope of RMSE against spp (−0.5 when unbiased); efficiency at the last checkpoint\n\n"
        << summary.str();
     if (!ratios.str().empty()) md << "\n## raylab and Cycles\n\n" << ratios.str();
+    if (!mismatches.empty())
+        md << "\n### Reference mismatch\n\nMean difference: (Cycles − raylab) / raylab's mean over the two "
+              "references; an approximate scene compares different images.\n\n"
+           << peerMismatchTable(mismatches);
     md << "\nPlots: one PNG per scene beside this file; raw data: convergence.csv.\n";
     md.close();
     std::cerr << "wrote " << (outDir / "summary.md").string() << "\n";

@@ -29,16 +29,22 @@ Reference analyticReference(int width, int height, glm::vec3 value) {
     return r;
 }
 
-std::string fileHash(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
+std::string textHash(std::string_view text) {
     std::uint64_t h = 1469598103934665603ull;   // FNV-1a offset basis
-    for (char c; in.get(c);) {
+    for (char c : text) {
         h ^= std::uint8_t(c);
         h *= 1099511628211ull;                    // FNV prime
     }
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
     return buf;
+}
+
+std::string fileHash(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return textHash(bytes.str());
 }
 
 Reference cachedReference(const fs::path& cacheBase, const std::string& key, int batches,

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 
 namespace raylab {
 
@@ -31,5 +32,6 @@ Reference cachedReference(const std::filesystem::path& cacheBase, const std::str
 
 // FNV-1a 64-bit of a file's bytes, as hex (stable across runs and machines): part of cache keys.
 std::string fileHash(const std::filesystem::path& file);
+std::string textHash(std::string_view text);
 
 } // namespace raylab
