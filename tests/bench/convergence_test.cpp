@@ -4,6 +4,7 @@
 #include "bench/convergence.h"
 #include "bench/error_metrics.h"
 #include "bench/reference.h"
+#include "io/image_io.h"
 #include "gl/gl_context.h"
 #include "scene/scene_loader.h"
 
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -133,16 +135,164 @@ TEST(BenchBlenderExport, NamesWhatItCanOnlyApproximate) {
     EXPECT_TRUE(blenderExportApproximations(load("default.json")).empty()) << "Lambert and emission map exactly";
     EXPECT_TRUE(blenderExportApproximations(load("cornell_box.json")).empty());
     const auto materials = blenderExportApproximations(load("materials.json"));
-    ASSERT_FALSE(materials.empty());
-    EXPECT_NE(materials[0].find("plastic"), std::string::npos) << materials[0];
+    ASSERT_EQ(materials.size(), 1u);
+    EXPECT_NE(materials[0].find("Fresnel"), std::string::npos) << materials[0];
     const auto textured = blenderExportApproximations(load("textured_bricks.json"));
-    EXPECT_NE(std::find(textured.begin(), textured.end(), "textures are not exported"), textured.end());
+    ASSERT_EQ(textured.size(), 3u);
+    EXPECT_NE(textured[1].find("mip"), std::string::npos) << textured[1];
+    EXPECT_NE(textured[2].find("normal maps"), std::string::npos) << textured[2];
     Scene mirror = load("default.json");
     mirror.materials[1].f0 = glm::vec3(0.9f);   // a smooth coloured mirror: F is taken at h = n
     mirror.materials[1].roughness = 0.0f;
     EXPECT_TRUE(blenderExportApproximations(mirror).empty());
     mirror.materials[1].roughness = 0.3f;
     EXPECT_FALSE(blenderExportApproximations(mirror).empty());
+}
+
+namespace {
+
+// The line of the script that makes material `name`.
+std::string materialLine(const std::string& py, const std::string& name) {
+    const auto at = py.find("= material(\"" + name + "\"");
+    if (at == std::string::npos) return "";
+    return py.substr(at, py.find('\n', at) - at);
+}
+
+} // namespace
+
+TEST(BenchBlenderExport, PlasticsAndMetalsAreLambertUnderAHalfVectorFresnelGgxLobe) {
+    const Scene scene = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/materials.json");
+    const std::string py = blenderScript(scene);
+    auto has = [&](const std::string& s) { EXPECT_NE(py.find(s), std::string::npos) << s; };
+    // The values: raylab's albedo, f0 and perceptual roughness as they are.
+    EXPECT_EQ(materialLine(py, "plastic_rough"),
+              "= material(\"plastic_rough\", (0.75, 0.1, 0.08, 1.0), (0, 0, 0, 1.0), f0=(0.04, 0.04, 0.04, 1.0), "
+              "roughness=0.7, transmission=0, ior=1.5)");
+    EXPECT_EQ(materialLine(py, "gold_polished"),
+              "= material(\"gold_polished\", (0, 0, 0, 1.0), (0, 0, 0, 1.0), f0=(1, 0.71, 0.29, 1.0), "
+              "roughness=0.15, transmission=0, ior=1.5)");
+    // The node setup: the GGX lobe is a Principled BSDF with metallic 1 and base colour f0 (its
+    // Fresnel is at the half vector), single-scattering GGX, nothing else of the Principled on;
+    // the diffuse lobe is Lambert weighted by 1 - Schlick F at the view angle.
+    has("gloss = bent(tree.nodes.new(\"ShaderNodeBsdfPrincipled\"))");
+    has("gloss.distribution = \"GGX\"");
+    has("feed(tree, gloss.inputs[\"Base Color\"], f0)");
+    has("gloss.inputs[\"Metallic\"].default_value = 1.0");
+    has("gloss.inputs[\"Specular\"].default_value = 0.5");
+    has("gloss.inputs[\"Specular Tint\"].default_value = 0.0");
+    has("gloss.inputs[\"Sheen\"].default_value = 0.0");
+    has("gloss.inputs[\"Clearcoat\"].default_value = 0.0");
+    has("feed(tree, gloss.inputs[\"Roughness\"], roughness)");
+    has("diffuse.inputs[\"Roughness\"].default_value = 0.0   # Lambert");
+    has("facing.inputs[\"Blend\"].default_value = 0.5");
+    has("pow5 = smath(tree, \"POWER\", facing.outputs[\"Facing\"], 5.0)");
+    has("weight = vmath(tree, \"SUBTRACT\", 1.0, fresnel.outputs[0])");
+    EXPECT_EQ(py.find("ShaderNodeBsdfGlossy"), std::string::npos) << "Glossy BSDF has no Fresnel of its own";
+    EXPECT_EQ(py.find("MULTI_GGX"), std::string::npos);
+}
+
+TEST(BenchBlenderExport, TexturesAreNamedByAbsolutePathsWithRaylabsDecodingAndWrap) {
+    // Loaded through a relative path from another working directory: the script must still name
+    // the images where the loader found them (relative to the scene file), absolutely.
+    const fs::path cwd = fs::current_path();
+    fs::current_path(std::string(RAYLAB_SOURCE_DIR) + "/tests");
+    const Scene scene = loadScene("../scenes/textured_bricks.json");
+    fs::current_path(fs::temp_directory_path());
+    const std::string py = blenderScript(scene);
+    fs::current_path(cwd);
+    const std::string bricks = (fs::path(RAYLAB_SOURCE_DIR) / "scenes/textures/bricks.ppm").lexically_normal().string();
+    const std::string normal =
+        (fs::path(RAYLAB_SOURCE_DIR) / "scenes/textures/bricks_normal.ppm").lexically_normal().string();
+    EXPECT_EQ(materialLine(py, "brick"),
+              "= material(\"brick\", (1, 1, 1, 1.0), (0, 0, 0, 1.0), f0=(0, 0, 0, 1.0), roughness=1, transmission=0, "
+              "ior=1.5, metallic=0, albedo_map=(\"" + bricks + "\", \"sRGB\", \"REPEAT\", \"REPEAT\"), normal_map=(\"" +
+                  normal + "\", \"Non-Color\", \"REPEAT\", \"REPEAT\"), normal_scale=1)");
+    EXPECT_TRUE(fs::is_regular_file(bricks));
+    EXPECT_NE(py.find("uvs=[(0, 0), (20, 0), (20, 20), (0, 20)]"), std::string::npos) << "the floor's uvs";
+    EXPECT_NE(py.find("node.image.colorspace_settings.name = colour_space"), std::string::npos);
+    EXPECT_NE(py.find("nm.space = \"TANGENT\""), std::string::npos);
+    // The other slots and the glTF wraps, on a copy of the brick material.
+    Scene all = scene;
+    Material& m = all.materials[0];
+    m.roughnessTextureIndex = m.metallicTextureIndex = m.emissionTextureIndex = m.albedoTextureIndex;
+    all.textures[size_t(m.albedoTextureIndex)].wrapU = TextureWrap::MirroredRepeat;
+    all.textures[size_t(m.albedoTextureIndex)].wrapV = TextureWrap::ClampToEdge;
+    const std::string line = materialLine(blenderScript(all), "brick");
+    for (const char* key : {"albedo_map=", "roughness_map=", "metallic_map=", "normal_map=", "emission_map="})
+        EXPECT_NE(line.find(key), std::string::npos) << key << " in " << line;
+    EXPECT_NE(line.find("\"sRGB\", \"MIRROR\", \"EXTEND\")"), std::string::npos) << line;
+    EXPECT_NE(py.find("x = smath(tree, \"PINGPONG\", x, 1.0)"), std::string::npos) << "mirrored repeat folds uv";
+    const fs::path file = scratch() / "textured.py";
+    writeBlenderScript(all, file);
+    const std::string cmd = "python3 -c \"import ast,sys; ast.parse(open(sys.argv[1]).read())\" '" + file.string() + "'";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
+}
+
+TEST(BenchBlenderExport, GltfMeshesKeepTheirPrimitivesMaterialsAndImages) {
+    // Exported by Blender itself (tests/data/blender_suzanne/make_suzanne.py): a gold Suzanne and
+    // a checker-textured plane, two primitives of one mesh, the image embedded in the .glb.
+    const Scene scene = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/tests/data/blender_suzanne/suzanne.json");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const Mesh& mesh = scene.meshes[0];
+    ASSERT_FALSE(mesh.triangleMaterials.empty());
+    const fs::path file = scratch() / "suzanne.py";
+    writeBlenderScript(scene, file);
+    std::ifstream in(file);
+    const std::string py((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Both glTF materials are made, and the mesh takes them as slots with a slot per triangle.
+    int gold = -1, checker = -1;
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        if (scene.materials[i].name.find("gold") != std::string::npos) gold = int(i);
+        if (scene.materials[i].name.find("checker") != std::string::npos) checker = int(i);
+    }
+    ASSERT_GE(gold, 0);
+    ASSERT_GE(checker, 0);
+    const std::string goldLine = materialLine(py, scene.materials[size_t(gold)].name);
+    EXPECT_NE(goldLine.find("(0, 0, 0, 1.0), (0, 0, 0, 1.0), f0=(1, 0.71"), std::string::npos)
+        << "metallic 1: albedo 0, f0 the base colour: " << goldLine;
+    const std::string texture = (fs::absolute(scratch()) / "suzanne_textures" /
+                                 ("texture" + std::to_string(scene.materials[size_t(checker)].albedoTextureIndex) + ".exr"))
+                                    .lexically_normal()
+                                    .string();
+    EXPECT_NE(materialLine(py, scene.materials[size_t(checker)].name)
+                  .find("albedo_map=(\"" + texture + "\", \"Non-Color\", \"REPEAT\", \"REPEAT\")"),
+              std::string::npos)
+        << materialLine(py, scene.materials[size_t(checker)].name);
+    const std::string slots = ", [mat" + std::to_string(gold) + ", mat" + std::to_string(checker) + "], ";
+    const std::string slotsOtherOrder = ", [mat" + std::to_string(checker) + ", mat" + std::to_string(gold) + "], ";
+    EXPECT_TRUE(py.find(slots) != std::string::npos || py.find(slotsOtherOrder) != std::string::npos)
+        << "the mesh's material slots: the two glTF materials";
+    EXPECT_NE(py.find("material_indices=[0, "), std::string::npos);
+    EXPECT_NE(py.find(", 1, "), std::string::npos);
+    EXPECT_NE(py.find("data.polygons.foreach_set(\"material_index\", material_indices)"), std::string::npos);
+    // The embedded image is written where the script looks, top row first, as raylab decoded it.
+    const Texture& t = scene.textures[size_t(scene.materials[size_t(checker)].albedoTextureIndex)];
+    const Image written = readImage(texture);
+    ASSERT_EQ(written.width, t.levels[0].width);
+    ASSERT_EQ(written.height, t.levels[0].height);
+    const glm::vec4 bottomLeft = t.levels[0].texels[0];   // row 0 = v 0, the image's bottom row
+    const size_t lastRow = size_t(written.height - 1) * size_t(written.width) * 4;
+    for (int k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(written.rgba[lastRow + size_t(k)], bottomLeft[k]);
+    const std::string cmd = "python3 -c \"import ast,sys; ast.parse(open(sys.argv[1]).read())\" '" + file.string() + "'";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
+}
+
+TEST(BenchPeerMismatch, MarksAScenePastThreePercentApproximate) {
+    const Image raylab = constant(4, 2, 0.5f);
+    PeerMismatch near = peerMismatch(raylab, constant(4, 2, 0.51f));   // +2 %
+    EXPECT_NEAR(near.meanDifference, 0.02, 1e-6);
+    EXPECT_NEAR(near.rmse, 0.01, 1e-6);
+    EXPECT_FALSE(near.approximate);
+    const PeerMismatch far = peerMismatch(raylab, constant(4, 2, 0.48f));   // −4 %
+    EXPECT_NEAR(far.meanDifference, -0.04, 1e-6);
+    EXPECT_TRUE(far.approximate);
+    EXPECT_FALSE(peerMismatch(raylab, constant(4, 2, 0.514f)).approximate);   // +2.8 %
+    EXPECT_TRUE(peerMismatch(raylab, constant(4, 2, 0.516f)).approximate);    // +3.2 %
+    const std::string table = peerMismatchTable({{"plain", near}, {"plastics", far}});
+    EXPECT_NE(table.find("| plain | 0.5 | 0.51 | +2.00 % | 0.01 | 2.0 % | same image |"), std::string::npos) << table;
+    EXPECT_NE(table.find("| plastics | 0.5 | 0.48 | -4.00 % | 0.02 | 4.0 % | approximate: means differ by more than 3 %"),
+              std::string::npos)
+        << table;
 }
 
 TEST(BenchBlenderExport, MeshesTransformsMaterialsThinLensAndSkyMap) {
