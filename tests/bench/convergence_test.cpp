@@ -192,12 +192,12 @@ TEST(BenchBlenderExport, PlasticsAndMetalsAreLambertUnderAHalfVectorFresnelGgxLo
 }
 
 TEST(BenchBlenderExport, TexturesAreNamedByAbsolutePathsWithRaylabsDecodingAndWrap) {
-    // Loaded through a relative path from another working directory: the script must still name
-    // the images where the loader found them (relative to the scene file), absolutely.
+    // Loaded through a relative path from another working directory: the script must name the
+    // images where the loader found them (relative to the scene file), absolutely, so that Blender
+    // finds them from wherever it runs.
     const fs::path cwd = fs::current_path();
     fs::current_path(std::string(RAYLAB_SOURCE_DIR) + "/tests");
     const Scene scene = loadScene("../scenes/textured_bricks.json");
-    fs::current_path(fs::temp_directory_path());
     const std::string py = blenderScript(scene);
     fs::current_path(cwd);
     const std::string bricks = (fs::path(RAYLAB_SOURCE_DIR) / "scenes/textures/bricks.ppm").lexically_normal().string();
@@ -331,9 +331,9 @@ TEST(BenchBlenderExport, MeshesTransformsMaterialsThinLensAndSkyMap) {
     has("normals_split_custom_set_from_vertices(normals)");
     has("f0=(0.04, 0.04, 0.04, 1.0), roughness=0.25, transmission=0, ior=1.5)");
     has("roughness=0, transmission=1, ior=1.5)");
-    has("ShaderNodeBsdfGlossy");
+    has("ShaderNodeBsdfPrincipled");
     has("ShaderNodeBsdfGlass");
-    has("glossy.distribution = \"SHARP\" if sharp else \"GGX\"");
+    has("glass.distribution = \"SHARP\" if sharp else \"GGX\"");
     has("camera((6, -8, 3.2), (0, -0, 0.8), (0, -0, 1), 32, aperture=0.1, focus_distance=0)");
     has("data.dof.aperture_fstop = data.lens * 1e-3 / (2.0 * aperture)");
     has("scenes/sky_procedural.hdr\", 2, 30)");
