@@ -12,7 +12,13 @@ if(RAYLAB_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang" OR NOT CMAKE_C_COMPILER_ID STREQUAL "Clang")
     message(FATAL_ERROR "RAYLAB_FUZZ=ON needs clang for C and C++ (libFuzzer is part of clang), got "
                         "${CMAKE_C_COMPILER_ID} and ${CMAKE_CXX_COMPILER_ID}: configure with "
-                        "-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++")
+                        "-DCMAKE_C_COMPILER=clang-16 -DCMAKE_CXX_COMPILER=clang++-16")
+  endif()
+  # The shaders compiled as C++ (shaders/include/compat.glsl) construct structs with parentheses,
+  # which clang implements from version 16.
+  if(CMAKE_CXX_COMPILER_VERSION VERSION_LESS 16)
+    message(FATAL_ERROR "RAYLAB_FUZZ=ON needs clang 16 or newer (Debian 12: clang-16), got "
+                        "${CMAKE_CXX_COMPILER_VERSION}: configure with -DCMAKE_CXX_COMPILER=clang++-16")
   endif()
   if(NOT RAYLAB_SANITIZE MATCHES "(^|,)address(,|$)")
     message(FATAL_ERROR "RAYLAB_FUZZ=ON needs AddressSanitizer: add -DRAYLAB_SANITIZE=address,undefined")
