@@ -115,7 +115,7 @@ std::string typeOf(const Json& v) {
     case Json::value_t::number_integer:
     case Json::value_t::number_unsigned:
     case Json::value_t::number_float: return "number";
-    case Json::value_t::string: return "string";
+    case Json::value_t::string: return v.get_ref<const std::string&>().empty() ? "empty string" : "string";
     case Json::value_t::array: return "array";
     case Json::value_t::object: return "object";
     default: return "unsupported value";

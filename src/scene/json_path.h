@@ -35,7 +35,7 @@ bool isPointerPrefix(std::string_view prefix, std::string_view pointer);
 // A name from a document as messages show it: past 40 bytes, cut with "...".
 std::string shortText(std::string_view text);
 
-// "number", "string", "array", ...: the JSON type of a value, for messages.
+// "number", "string", "empty string", "array", ...: the JSON type of a value, for messages.
 std::string typeOf(const Json& v);
 
 } // namespace raylab::scenefmt

@@ -391,11 +391,17 @@ std::optional<std::string> checkScalar(const ValueSpec& spec, double v) {
     case ParamType::UInt:
         if (v < 0 || v > kUIntMax) return "must be in [0, " + formatNumber(kUIntMax) + "], got " + formatNumber(v);
         break;
-    default:
+    default: {
         if (std::fabs(v) > kFloatMax)
             return "is too large for a 32-bit float (magnitude must be <= " + formatNumber(kFloatMax) +
                    "), got " + formatNumber(v);
+        // The GPU sees single precision: 1e-50 passes "> 0" as a double but is 0 as a float.
+        const double f = static_cast<float>(v);
+        if ((spec.min && violatesMin(*spec.min, f)) || (spec.max && violatesMax(*spec.max, f)))
+            return "must be " + std::string(spec.min && spec.max ? "in " : "") + rangeText(spec.min, spec.max) +
+                   ", got " + formatNumber(v) + " (" + formatNumber(f) + " as a 32-bit float)";
         break;
+    }
     }
     return std::nullopt;
 }

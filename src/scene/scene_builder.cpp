@@ -265,7 +265,7 @@ Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sce
             fail(p.key("normals"), "expected one normal per vertex (" + std::to_string(pos.size()) +
                                        " numbers), got " + std::to_string(n.size()) + " numbers");
         for (std::size_t i = 0; i < n.size(); i += 3) {
-            const glm::vec3 v(float(n[i]), float(n[i + 1]), float(n[i + 2]));
+            const glm::vec3 v{float(n[i]), float(n[i + 1]), float(n[i + 2])};
             if (!(glm::length(v) > 0.0f)) fail(p.key("normals").index(i), "a normal must not be zero");
             mesh.normals.push_back(glm::normalize(v));
         }

@@ -10,6 +10,7 @@ The output is deterministic, so a rerun changes nothing unless this script chang
 import base64
 import json
 import os
+import re
 import shutil
 import struct
 import zlib
@@ -245,6 +246,8 @@ def png(width, height, idat=b"", channels_type=2, depth=8, crc_ok=True):
 PNG_BOMB = png(65535, 65535, b"\0" * 64)
 gltf("image_header_too_large", lambda g: g.update(images=[{"uri": data_uri(PNG_BOMB, "image/png")}]),
      "images[0]: 65535x65535 is larger than raylab reads")
+gltf("image_cut_in_header", lambda g: g.update(images=[{"uri": data_uri(PNG_BOMB[:30], "image/png")}]),
+     "cannot decode image data for image[0]")
 gltf("image_garbage", lambda g: g.update(images=[{"uri": data_uri(b"not an image at all", "image/png")}]),
      "cannot decode")
 
@@ -374,9 +377,285 @@ image("ppm_huge.ppm", "P6\n65535 65535\n255\n" + "\0" * 12, "65535x65535 is larg
 image("ppm_truncated.ppm", "P6\n4 4\n255\n" + "\0" * 5, "image_ppm_truncated.ppm: ")
 
 
+# --- Scene JSON ------------------------------------------------------------------------------------
+# These files are scenes themselves; the message must locate the bad value. Each case's text is the
+# document pretty-printed with the bad value's raw JSON spliced in, so its line and column are known.
+FORMAT_MD = os.path.join(os.path.dirname(OUT), "..", "..", "scenes", "FORMAT.md")
+SENTINEL = "@@BAD@@"
+
+
+def located(doc, raw, focus=None):
+    """The document's text with `raw` spliced in at the sentinel, and the line:column of `focus` in it."""
+    text = json.dumps(doc, indent=2)
+    at = text.index('"' + SENTINEL + '"')
+    text = text[:at] + raw + text[at + len(SENTINEL) + 2:]
+    at += raw.index(focus) if focus else 0
+    line = text.count("\n", 0, at) + 1
+    return text, "%d:%d" % (line, at - (text.rfind("\n", 0, at) + 1) + 1)
+
+
+def scene(name, text, expected, overrides=()):
+    write("json_" + name + ".json", text)
+    manifest.append(("json_" + name + ".json", expected) + (("|".join(overrides),) if overrides else ()))
+
+
+def bad_value(name, doc, path, raw, message, focus=None):
+    text, where = located(doc, raw, focus)
+    scene(name, text, ":%s: error: %s: %s" % (where, path, message))
+
+
+# Every key of the parameter table, from FORMAT.md's tables (format_doc_test checks them against the
+# table): (section heading, key, type, range).
+def format_keys():
+    keys, section = [], None
+    with open(FORMAT_MD, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("## "):
+                section = line[3:].strip().strip("`")
+            cells = [c.strip() for c in line.split("|")]
+            if len(cells) > 6 and cells[1].startswith("`") and cells[1].endswith("`"):
+                keys.append((section, cells[1].strip("`"), cells[2], cells[5]))
+    return keys
+
+
+MESH = {"type": "mesh", "positions": [0, 0, 0, 1, 0, 0, 0, 1, 0], "indices": [0, 1, 2]}
+
+
+def place(section, key):
+    """A scene whose value of `key` is the sentinel, and the key's path in messages."""
+    if section in ("camera", "render", "sky"):
+        sect, name = key.split(".")
+        doc = {sect: {name: SENTINEL}}
+        if key == "sky.map":
+            doc["sky"]["type"] = "map"
+        return doc, key
+    if section == "materials":
+        return {"materials": {"m": {key: SENTINEL}}, "objects": [{"material": "m"}]}, "materials.m." + key
+    if key.startswith("transform."):
+        return {"objects": [{"transform": {key.split(".")[1]: SENTINEL}}]}, "objects[0]." + key
+    if key in MESH or key in ("normals", "uvs", "file"):
+        obj = dict(MESH)
+        if key == "file":
+            obj = {"type": "mesh"}
+        obj[key] = SENTINEL
+        return {"objects": [obj]}, "objects[0]." + key
+    if section == "objects":
+        return {"objects": [{"type": "sphere", key: SENTINEL}]}, "objects[0]." + key
+    raise SystemExit("make_malformed.py: no place in a scene for key %s of section %s" % (key, section))
+
+
+def parse_range(text):
+    """'[1, 16384]', '(0, 180)', '>= 0', '> 0', 'any' -> ((low, inclusive) or None, (high, inclusive) or None)."""
+    m = re.fullmatch(r"([\[(])(-?[0-9.e+]+), (-?[0-9.e+]+)([\])])", text)
+    if m:
+        return (float(m.group(2)), m.group(1) == "["), (float(m.group(3)), m.group(4) == "]")
+    m = re.fullmatch(r"(>=?) (-?[0-9.e+]+)", text)
+    if m:
+        return (float(m.group(2)), m.group(1) == ">="), None
+    return None, None
+
+
+def num(x):
+    return str(int(x)) if x == int(x) else repr(x)
+
+
+def out_of_range(rng, integral):
+    """A value just outside the range and the message's range words, or None when the range is open."""
+    low, high = parse_range(rng)
+    step = 1 if integral else 0.5
+    if high:
+        value = high[0] + (step if high[1] else 0)
+    elif low:
+        value = low[0] - (step if low[1] else 0)
+    else:
+        return None
+    return value, ("must be in %s" % rng) if (low and high) else ("must be %s" % rng)
+
+
+def key_cases(section, key, kind, rng):
+    """One case for every key (its range, else its type), and every kind of wrong value for the first
+    key of each type: a new type in the table stops this script until it has its cases."""
+    doc, path = place(section, key)
+    slug = key.replace(".", "_")
+    integral = kind in ("int", "uint")
+    bounded = out_of_range(rng, integral) if kind in ("int", "uint", "float", "vec3", "rgb") else None
+    if bounded:
+        value, words = bounded
+        raw = {"vec3": "[1, %s, 1]", "rgb": "[0, %s, 0]"}.get(kind, "%s") % num(value)
+        where = "[1]" if kind in ("vec3", "rgb") else ""
+        bad_value("key_%s_out_of_range" % slug, doc, path + where, raw, "%s, got %s" % (words, num(value)),
+                  focus=num(value) if where else None)
+    first = kind not in seen_types
+    seen_types.add(kind)
+    if kind == "int":
+        if not bounded:
+            bad_value("key_%s_wrong_type" % slug, doc, path, '"7"', "expected an integer, got string")
+        if first:
+            bad_value("type_int_fraction", doc, path, "1.5", "must be an integer, got 1.5")
+            bad_value("type_int_too_large", doc, path, "1e20", "must be ")
+            bad_value("type_int_overflow", doc, path, "1e999", "must be finite, got 1e999 (too large for a double)")
+            bad_value("type_int_string", doc, path, '"7"', "expected an integer, got string")
+            bad_value("type_int_null", doc, path, "null", "expected an integer, got null")
+            bad_value("type_int_bool", doc, path, "true", "expected an integer, got boolean")
+    elif kind == "uint":
+        if first:
+            bad_value("type_uint_negative", doc, path, "-1", "must be in [0, 4294967295], got -1")
+            bad_value("type_uint_fraction", doc, path, "0.5", "must be an integer, got 0.5")
+            bad_value("type_uint_string", doc, path, '"1"', "expected an integer, got string")
+            bad_value("type_uint_overflow", doc, path, "-1e999", "must be finite, got -1e999")
+    elif kind == "float":
+        if not bounded:
+            bad_value("key_%s_wrong_type" % slug, doc, path, "[1]", "expected a number, got array")
+        if first:
+            bad_value("type_float_string", doc, path, '"0.5"', "expected a number, got string")
+            bad_value("type_float_object", doc, path, "{}", "expected a number, got object")
+            bad_value("type_float_overflow", doc, path, "1e999", "must be finite, got 1e999 (too large for a double)")
+            bad_value("type_float_single_overflow", doc, path, "1e39", "{...}got 1e+39")
+            bad_value("type_float_bool", doc, path, "false", "expected a number, got boolean")
+    elif kind == "vec3":
+        if not bounded:
+            bad_value("key_%s_arity" % slug, doc, path, "[1, 2]", "expected 3 numbers, got 2")
+        if first:
+            bad_value("type_vec3_string", doc, path, '"1 2 3"', "expected [x, y, z], an array of 3 numbers, got string")
+            bad_value("type_vec3_number", doc, path, "1", "expected [x, y, z], an array of 3 numbers, got number")
+            bad_value("type_vec3_four", doc, path, "[1, 2, 3, 4]", "expected 3 numbers, got 4")
+            bad_value("type_vec3_component_string", doc, path + "[1]", '[1, "2", 3]', "expected a number, got string",
+                      focus='"2"')
+            bad_value("type_vec3_component_overflow", doc, path + "[2]", "[1, 2, -1e999]", "must be finite, got -1e999",
+                      focus="-1e999")
+            bad_value("type_vec3_nested", doc, path + "[0]", "[[1], 2, 3]", "expected a number, got array", focus="[1]")
+    elif kind == "rgb":
+        if first:
+            bad_value("type_rgb_two", doc, path, "[0.5, 0.5]", "expected 3 numbers, got 2")
+            bad_value("type_rgb_four", doc, path, "[0.5, 0.5, 0.5, 1]", "expected 3 numbers, got 4")
+            bad_value("type_rgb_string", doc, path, '"red"', "expected a colour, [r, g, b] or one number for grey, got string")
+            bad_value("type_rgb_grey_negative", doc, path, "-1", "must be ")
+            bad_value("type_rgb_component_null", doc, path + "[2]", "[0, 0, null]", "expected a number, got null",
+                      focus="null")
+            bad_value("type_rgb_component_overflow", doc, path + "[0]", "[1e999, 0, 0]", "must be finite, got 1e999",
+                      focus="1e999")
+    elif kind == "enum":
+        names = [n.split(" ")[0] for n in rng.split(", ")]
+        bad_value("key_%s_unknown" % slug, doc, path, '"%sx"' % names[-1],
+                  "unknown value '%sx'; did you mean '%s'?" % (names[-1], names[-1]))
+        if first:
+            bad_value("type_enum_number", doc, path, "1", "expected a string (")
+            bad_value("type_enum_far", doc, path, '"zzzzzzzzzz"', "unknown value 'zzzzzzzzzz'")
+            bad_value("type_enum_case", doc, path, '"%s"' % names[0].upper(), "unknown value '%s'" % names[0].upper())
+    elif kind == "bool":
+        bad_value("key_%s_number" % slug, doc, path, "1", "expected true or false, got number")
+        if first:
+            bad_value("type_bool_string", doc, path, '"true"', "expected true or false, got string")
+            bad_value("type_bool_null", doc, path, "null", "expected true or false, got null")
+    elif kind == "string" and rng == "an image file":
+        bad_value("key_%s_missing_file" % slug, doc, path, '"no_such_image.png"', "{...}no_such_image.png")
+        if first:
+            bad_value("type_path_number", doc, path, "3", "{...}got number")
+            bad_value("type_path_empty", doc, path, '""', "{...}got empty string")
+            bad_value("type_path_directory", doc, path, '"."', "{...}cannot read")
+    elif kind == "string" and key == "file":
+        bad_value("key_file_missing", doc, path, '"no_such_mesh.obj"', "{...}no_such_mesh.obj: cannot read: no such file")
+        bad_value("key_file_missing_gltf", doc, path, '"no_such_mesh.glb"', "{...}no_such_mesh.glb: cannot read")
+        bad_value("key_file_number", doc, path, "3", "expected the path of an OBJ or glTF file (a string), got number")
+        bad_value("key_file_empty", doc, path, '""', "{...}got empty string")
+    elif kind == "string" and key == "type":
+        bad_value("key_type_unknown", doc, path, '"cube"', "unknown object type 'cube' (known types: sphere, mesh)")
+        bad_value("key_type_typo", doc, path, '"shpere"', "unknown object type 'shpere'; did you mean 'sphere'?")
+        bad_value("key_type_number", doc, path, "1", "expected a string (sphere, mesh), got number")
+    elif kind == "string" and key == "material":
+        bad_value("key_material_unknown", doc, path, '"nobody"', "unknown material 'nobody'")
+        bad_value("key_material_number", doc, path, "0", "expected a material name (a string), got number")
+    elif kind == "array":
+        bad_value("key_%s_string" % slug, doc, path, '"0 1 2"', "expected a flat array of ")
+        component = {"uvs": '[0, "1", 1, 0, 0, 1]', "normals": '[0, "1", 1, 0, 0, 1, 0, 0, 1]',
+                     "positions": '[0, "1", 0, 1, 0, 0, 0, 1, 0]'}.get(key, '[0, "1", 2]')
+        bad_value("key_%s_component" % slug, doc, path + "[1]", component, "expected a number, got string"
+                  if key != "indices" else "expected an integer, got string", focus='"1"')
+        if key == "indices":
+            bad_value("key_indices_out_of_range", doc, path + "[2]", "[0, 1, 3]", "vertex index 3 is out of range (3 vertices)",
+                      focus="3")
+            bad_value("key_indices_negative", doc, path + "[0]", "[-1, 1, 2]", "must be in [0, 4294967295], got -1", focus="-1")
+            bad_value("key_indices_count", doc, path, "[0, 1]", "expected a multiple of 3 numbers, got 2")
+        if key == "positions":
+            bad_value("key_positions_count", doc, path, "[0, 0, 0, 1, 0, 0, 0, 1]", "expected a multiple of 3 numbers, got 8")
+            bad_value("key_positions_single_overflow", doc, path + "[4]", "[0, 0, 0, 1, 1e39, 0, 0, 1, 0]", "{...}got 1e+39",
+                      focus="1e39")
+        if key == "normals":
+            bad_value("key_normals_zero", doc, path + "[0]", "[0, 0, 0, 0, 0, 1, 0, 0, 1]", "a normal must not be zero",
+                      focus="0")
+            bad_value("key_normals_count", doc, path, "[0, 0, 1]", "expected one normal per vertex (9 numbers), got 3 numbers")
+        if key == "uvs":
+            bad_value("key_uvs_count", doc, path, "[0, 0, 1]", "expected a multiple of 2 numbers, got 3")
+    else:
+        raise SystemExit("make_malformed.py: no malformed cases for key %s of type %s: add them here" % (key, kind))
+
+
+seen_types = set()
+for section, key, kind, rng in format_keys():
+    key_cases(section, key, kind, rng)
+
+# Values inside a range as doubles that single precision rounds out of it.
+bad_value("float_underflow_radius", {"objects": [{"radius": SENTINEL}]}, "objects[0].radius", "1e-50",
+          "must be > 0, got 1e-50 (0 as a 32-bit float)")
+bad_value("float_underflow_scale", {"objects": [dict(MESH, transform={"scale": SENTINEL})]},
+          "objects[0].transform.scale[0]", "[1e-46, 1, 1]", "must be > 0, got 1e-46 (0 as a 32-bit float)", focus="1e-46")
+bad_value("float_rounds_to_bound", {"camera": {"fov": SENTINEL}}, "camera.fov", "179.999999999",
+          "must be in (0, 180), got 179.999999999 (180 as a 32-bit float)")
+
+# JSON syntax, depth, NUL bytes and text after the document.
+SPHERE = '{ "objects": [ { "type": "sphere" } ] }'
+scene("syntax_empty", "", ":1:1: error: ")
+scene("syntax_whitespace_only", "\n  \n", ":3:1: error: ")
+scene("syntax_missing_comma", '{\n  "camera": { "fov": 30 }\n  "objects": []\n}\n', ":3:11: error: syntax error")
+scene("syntax_trailing_comma", '{\n  "objects": [ { "type": "sphere" }, ]\n}\n', ":2:38: error: syntax error")
+scene("syntax_single_quotes", "{ 'objects': [] }", ":1:3: error: syntax error")
+scene("syntax_unterminated_string", '{ "objects": [ { "type": "sph', ":1:30: error: syntax error{...}missing closing quote")
+scene("syntax_unterminated_comment", SPHERE + "\n/* never closed", ":2:16: error: unexpected text after the end")
+scene("syntax_truncated", SPHERE[:20], ":1:21: error: syntax error")
+scene("syntax_bare_word", '{ "render": { "nee": yes } }', ":1:22: error: syntax error")
+scene("syntax_nan_literal", '{ "camera": { "fov": NaN } }', ":1:22: error: syntax error")
+scene("syntax_infinity_literal", '{ "sky": { "strength": Infinity } }', ":1:24: error: syntax error")
+scene("syntax_hex_number", '{ "render": { "spp": 0x10 } }', ":1:23: error: syntax error")
+scene("syntax_leading_zero", '{ "render": { "spp": 010 } }', ":1:24: error: syntax error")
+scene("syntax_top_level_array", "[ " + SPHERE + " ]", ":1:1: error: (top level): a scene file must be a JSON object")
+scene("syntax_top_level_number", "42", ":1:1: error: (top level): a scene file must be a JSON object { ... }, got number")
+scene("syntax_duplicate_key", '{\n  "render": { "spp": 4, "spp": 8 }\n}\n', ":2:25: error: render.spp: duplicate key 'spp' (first given at line 2, column 15)")
+scene("syntax_unknown_key_typo", '{ "rendr": {} }', ":1:3: error: rendr: unknown key 'rendr' at the top level; did you mean 'render'?")
+scene("syntax_unknown_section_key", '{ "camera": { "fvo": 30 } }', ":1:15: error: camera.fvo: unknown key 'fvo'")
+scene("syntax_invalid_utf8", b'{ "materials": { "\xff\xfe": {} } }', ":1:19: error: syntax error{...}ill-formed UTF-8")
+scene("syntax_control_character", '{ "objects": [ { "type": "sp\x01here" } ] }', ":1:29: error: syntax error{...}control character U+0001")
+scene("depth_past_limit", '{ "objects": ' + "[" * 200 + "]" * 200 + " }", "nested too deeply: more than ")
+scene("depth_ten_thousand", "[" * 10000 + "]" * 10000, "nested too deeply: more than ")
+scene("depth_objects_unclosed", '{"a": ' * 5000, "nested too deeply: more than ")
+scene("nul_after_document", SPHERE + "\0garbage", ":1:40: error: unexpected NUL byte (a scene file is text)")
+scene("nul_in_comment", "// a comment \0\n" + SPHERE, ":1:14: error: unexpected NUL byte (a scene file is text)")
+scene("nul_between_tokens", '{ "objects":\0 [] }', ":1:13: error: unexpected NUL byte (a scene file is text)")
+scene("trailing_text", SPHERE + "\n  x", ":2:3: error: unexpected text after the end of the document")
+scene("trailing_second_document", SPHERE + " " + SPHERE, ":1:41: error: unexpected text after the end of the document")
+scene("number_overflow_in_array", '{ "objects": [ { "center": [0, 1e400, 0] } ] }', ":1:32: error: ")
+scene("objects_not_array", '{ "objects": { "type": "sphere" } }', ":1:14: error: objects: expected an array")
+scene("materials_not_object", '{ "materials": [] }', ":1:16: error: materials: expected an object")
+scene("object_not_object", '{ "objects": [ 3 ] }', ":1:16: error: objects[0]: expected an object")
+scene("section_not_object", '{ "render": 3 }', ":1:13: error: render: expected an object")
+
+# The renderer's --set overrides (and so its number flags, which become overrides): each a case
+# with a valid scene file, the override in the manifest's third column.
+for name, override, expected in [
+        ("set_time_nan", "render.time=nan", "--set render.time=nan: error: render.time: expected a number, got string"),
+        ("set_spp_overflow", "render.spp=1e999", "--set render.spp=1e999: error: the value is not valid JSON: must be finite"),
+        ("set_width_negative", "render.width=-5", "--set render.width=-5: error: render.width: must be in [1, 16384], got -5"),
+        ("set_seed_fraction", "render.seed=1.5", "--set render.seed=1.5: error: render.seed: must be an integer, got 1.5"),
+        ("set_index_past_end", "objects.5.radius=1", "--set objects.5.radius=1: error: objects[5]: index 5 is past the end"),
+        ("set_no_value", "render.spp", "--set render.spp: error: expected KEY=VALUE"),
+        ("set_empty_part", "render..spp=1", "--set render..spp=1: error: the key 'render..spp' has an empty part"),
+        ("set_vec3_arity", "camera.position=[1,2]", "--set camera.position=[1,2]: error: camera.position: expected 3 numbers, got 2"),
+        ("set_unknown_key", "camera.fvo=30", "--set camera.fvo=30: error: camera.fvo: unknown key 'fvo'"),
+        ("set_fov_single_overflow", "camera.fov=1e39", "--set camera.fov=1e39: error: camera.fov: must be in (0, 180), got 1e+39")]:
+    scene(name, SPHERE + "\n", expected, overrides=[override])
+
 with open(os.path.join(OUT, "expected.tsv"), "w") as f:
-    f.write("# file\tpiece of the error message (written by make_malformed.py)\n")
-    for name, expected in manifest:
-        assert "\t" not in expected and "\n" not in expected
-        f.write(name + "\t" + expected + "\n")
+    f.write("# file\tpiece of the error message\t[--set overrides, '|' between them] (written by make_malformed.py)\n")
+    for name, *columns in manifest:
+        assert all("\t" not in c and "\n" not in c for c in columns)
+        f.write(name + "\t" + "\t".join(columns) + "\n")
 print(len(manifest), "malformed files in", OUT)
