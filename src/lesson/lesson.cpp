@@ -222,6 +222,24 @@ std::optional<std::pair<int, std::string>> parseStepHeading(const std::string& h
 
 } // namespace
 
+int LessonStep::partCount() const {
+    return 1 + int(std::count_if(commands.begin(), commands.end(), [](const ScriptCommand& c) { return c.name == "hold"; }));
+}
+
+std::vector<ScriptCommand> LessonStep::partScript(int part) const {
+    std::vector<ScriptCommand> script;
+    int current = 0;
+    for (const ScriptCommand& c : commands) {
+        if (c.name == "hold") {
+            if (++current > part) break;
+            continue;
+        }
+        const bool wait = c.name == "wait-spp" || c.name == "wait-frames";
+        if (current == part || !wait) script.push_back(c);
+    }
+    return script;
+}
+
 std::filesystem::path Lesson::resolve(const std::string& path) const {
     return (root / path).lexically_normal();
 }
@@ -390,6 +408,11 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             }
             if (step.commands.empty())
                 throw fail(f.open, "step " + std::to_string(lesson.steps.size()) + ": empty ```raylab block");
+            for (size_t i = 0; i < step.commands.size(); ++i)
+                if (step.commands[i].name == "hold" &&
+                    (i == 0 || i + 1 == step.commands.size() || step.commands[i + 1].name == "hold"))
+                    throw fail(step.commands[i].line, std::string("hold with no commands ") +
+                                                          (i == 0 ? "before" : "after") + " it (it separates sub-steps)");
             hidden.push_back({f.open, f.close});
             break;
         }

@@ -23,6 +23,13 @@ struct LessonStep {
     std::string title;                    // TITLE
     std::string text;                     // the step's Markdown, without its heading and ```raylab block
     std::vector<ScriptCommand> commands;  // the ```raylab block; ScriptCommand::line is the file's line
+
+    // Sub-steps: the block cut at its `hold` lines (1 when it has none); the presenter's key moves
+    // from one to the next, so a comparison holds each state for the class.
+    int partCount() const;
+    // What shows sub-step `part` (0-based): the earlier sub-steps' commands without their waits
+    // (their state, not their pictures), then the sub-step's own; `hold` lines left out.
+    std::vector<ScriptCommand> partScript(int part) const;
 };
 
 struct Lesson {

@@ -5,6 +5,7 @@
 #include "lesson/lesson.h"
 #include "render/shader_variant.h"
 #include "scene/scene_loader.h"
+#include "script/expectation.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -90,6 +91,7 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
         fs::path scene = lesson.scenePath;   // a step starts on the lesson's scene
         bool elsewhere = false;              // the step opened an allow-listed scene
         std::vector<std::string> overrides;
+        ViewState view;                      // a step starts from the default view (lessonResetCommands)
         for (ScriptCommand c : step.commands) {
             const std::string at = where(lesson, c);
             if (c.name == "stage") c = ScriptCommand{c.line, "set", {"render.stage", c.args[0]}};   // its meaning
@@ -129,6 +131,18 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
                     EXPECT_EQ(error, "") << at << ": " << key << " " << c.args[1];
                     if (error.empty()) overrides = std::move(with);   // a failed set is not kept
                 }
+            } else if (c.name == "expect") {
+                // The state the step's text describes holds here, as the script runner checks it.
+                if (elsewhere) continue;
+                try {
+                    EXPECT_EQ(expectationFailure(loadScene(scene, overrides), view, c.args[0], c.args[1]), "") << at;
+                } catch (const SceneError& e) {
+                    ADD_FAILURE() << at << ": " << e.what();
+                }
+            } else if (c.name == "debug-view") {
+                view.debugView = c.args[0];
+            } else if (c.name == "bounce-step") {
+                view.bounceStep = c.args[0] == "off" ? 0 : c.args[0] == "next" ? view.bounceStep + 1 : std::stoi(c.args[0]);
             } else if (c.name == "select") {
                 if (elsewhere) continue;
                 const double n = std::stod(c.args[0]);
@@ -137,8 +151,10 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
             } else if (c.name == "scale") {
                 const double v = std::stod(c.args[0]);
                 EXPECT_TRUE(v >= 0.125 && v <= 2) << at << ": scale is 0.125 to 2";
+                view.scale = v;
             } else {
                 // A lesson step sets state; it never ends the viewer or writes files.
+                if (c.name == "hold") continue;   // sub-steps keep the state built so far
                 for (const char* banned : {"quit", "screenshot", "export", "save", "window", "click", "ui-scale", "key",
                                            "lesson", "lesson-step", "self-test", "teach"})
                     EXPECT_NE(c.name, banned) << at << ": not for lessons";
@@ -195,6 +211,34 @@ TEST_P(ShippedLesson, LoadsWithItsSceneAndEveryStepApplies) {
     }
     std::set<int> used;
     checkSteps(lesson, used);
+}
+
+// A step shows the state its text describes: every sub-step (lesson.h: a block cut at `hold`)
+// ends with `expect` lines, checked by checkSteps above, and changes nothing after it starts to
+// wait for samples, so no comparison plays through to its last state unseen.
+TEST_P(ShippedLesson, EverySubStepHoldsAnExpectedState) {
+    const Lesson lesson = loadLesson(kLessons / GetParam());
+    for (const LessonStep& step : lesson.steps) {
+        std::vector<std::vector<ScriptCommand>> parts(1);
+        for (const ScriptCommand& c : step.commands) {
+            if (c.name == "hold") parts.emplace_back();
+            else parts.back().push_back(c);
+        }
+        for (size_t p = 0; p < parts.size(); ++p) {
+            const std::string at = GetParam() + ":" + std::to_string(step.line) + ": step " + step.title + ", part " +
+                                   std::to_string(p + 1);
+            ASSERT_FALSE(parts[p].empty()) << at;
+            EXPECT_EQ(parts[p].back().name, "expect") << at << ": a sub-step ends with the state it shows";
+            bool waited = false;
+            for (const ScriptCommand& c : parts[p]) {
+                const bool wait = c.name == "wait-spp" || c.name == "wait-frames";
+                EXPECT_FALSE(waited && !wait && c.name != "expect")
+                    << at << ": line " << c.line << ": " << c.name << " after a wait plays through a comparison; "
+                    << "put a hold before it";
+                waited = waited || wait;
+            }
+        }
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Lessons, ShippedLesson, testing::ValuesIn(lessonFileNames()), testName);

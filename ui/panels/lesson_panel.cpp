@@ -79,6 +79,10 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     if (ImGui::Button((buttonLabel("Next", KeyAction::NextStep) + " >").c_str())) runAction(KeyAction::NextStep, viewer, ui);
     ImGui::SameLine();
     ImGui::Text("step %d of %d", cur + 1, n);
+    if (cur >= 0 && ui.lesson.partCount(cur) > 1) {
+        ImGui::SameLine();
+        ImGui::Text("(part %d of %d: Next holds the next state)", ui.lesson.currentPart() + 1, ui.lesson.partCount(cur));
+    }
     ImGui::Separator();
     ImGui::BeginChild("##lesson-text");
     if (lessonFont()) ImGui::PushFont(lessonFont());
