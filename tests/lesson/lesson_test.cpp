@@ -203,3 +203,25 @@ TEST(Lesson, HoldCutsAStepIntoSubSteps) {
     EXPECT_EQ(errorOf(replaced(kGood, "reset\nwait", "reset\nhold\nhold\nwait")),
               "lessons/t.md:26: error: hold with no commands after it (it separates sub-steps)");
 }
+
+TEST(Lesson, LevelMinutesAndOptionalSteps) {
+    const std::string text = replaced(replaced(kGood, "Scene: scenes/default.json\n",
+                                               "Scene: scenes/default.json\n\nLevel: first-year university\n\nMinutes: 45\n"),
+                                      "## Step 2: Change", "## Step 2: Change (optional)");
+    const Lesson l = parseLesson(text, "lessons/t.md", kRoot);
+    EXPECT_EQ(l.level, "first-year university");
+    EXPECT_EQ(l.minutes, 45);
+    EXPECT_EQ(l.introduction, "An *introduction* paragraph.") << "the lines are not part of the introduction";
+    EXPECT_FALSE(l.steps[0].optional);
+    EXPECT_TRUE(l.steps[1].optional);
+    EXPECT_EQ(l.steps[1].title, "Change");
+    const Lesson none = parseLesson(kGood, "lessons/t.md", kRoot);
+    EXPECT_EQ(none.level, "");
+    EXPECT_EQ(none.minutes, 0);
+    EXPECT_EQ(errorOf(replaced(text, "Level: first-year university", "Level: hard")),
+              "lessons/t.md:5: error: 'Level:' is 'VWO 5\u20136' or 'first-year university'");
+    EXPECT_EQ(errorOf(replaced(text, "Minutes: 45", "Minutes: a lot")),
+              "lessons/t.md:7: error: 'Minutes:' needs the class time in whole minutes");
+    EXPECT_EQ(errorOf(replaced(text, "Minutes: 45\n", "Minutes: 45\nLevel: VWO 5\u20136\n")),
+              "lessons/t.md:7: error: 'Minutes: ...' must be a paragraph of its own");
+}

@@ -203,6 +203,11 @@ TEST_P(ShippedLesson, LoadsWithItsSceneAndEveryStepApplies) {
     EXPECT_FALSE(lesson.exercise.empty());
     EXPECT_FALSE(lesson.sources.empty()) << "a lesson cites its sources";
     EXPECT_EQ(loadError(lesson.scenePath, {}), "");
+    // A teacher sees whom the lesson is for, how long it takes, and which steps a short class keeps.
+    EXPECT_FALSE(lesson.level.empty()) << GetParam() << ": no 'Level:' line";
+    EXPECT_GT(lesson.minutes, 0) << GetParam() << ": no 'Minutes:' line";
+    EXPECT_TRUE(std::any_of(lesson.steps.begin(), lesson.steps.end(), [](const LessonStep& s) { return !s.optional; }))
+        << GetParam() << ": every step is optional";
     for (const LessonStep& step : lesson.steps) {
         EXPECT_FALSE(step.text.empty()) << GetParam() << ":" << step.line << ": step without text";
         // Steps can be taken in any order (presenter keys jump), so each starts by opening a scene.
