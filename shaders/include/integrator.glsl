@@ -285,9 +285,9 @@ BsdfSample sampleScattering(ShadingPoint sp, int bounce, inout Sampler smp) {
                       LOBE_DIFFUSE, false);
 }
 
-// Russian roulette (pbrt-v3 §13.7, as its PathIntegrator::Li applies it): the path survives with
-// q = its largest throughput component, at most 0.95, and is divided by q so the estimate stays
-// unbiased. pbrt-v4 takes max(beta·etaScale) without the cap.
+// Russian roulette (pbrt-v3 §13.7): the path survives with q = its largest throughput component,
+// at most 0.95 (pbrt-v3's cap), and is divided by q so the estimate stays unbiased. pbrt-v3's and
+// pbrt-v4's PathIntegrator::Li take q of beta·etaScale, and pbrt-v4 has no cap.
 bool survivesRoulette(int bounce, inout vec3 beta, bool delta, inout Sampler smp) {
     float q = min(max(beta.r, max(beta.g, beta.b)), 0.95f);
     bool survived = !(sample1D(smp, sampleDim(bounce, SAMPLE_BOUNCE_ROULETTE)) >= q);   // a NaN q survives (the NaN guard counts it)

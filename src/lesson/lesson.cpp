@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -220,7 +221,32 @@ std::optional<std::pair<int, std::string>> parseStepHeading(const std::string& h
     return std::pair{n, trim(std::string_view(heading).substr(i + 1))};
 }
 
+// A paragraph "KEY: value" of the introduction (Scene, Level, Minutes); nullopt for any other.
+std::optional<std::pair<std::string, std::string>> frontMatter(const std::string& plain) {
+    for (const char* key : {"Scene:", "Level:", "Minutes:"})
+        if (plain.rfind(key, 0) == 0) return std::pair{std::string(key), trim(std::string_view(plain).substr(std::strlen(key)))};
+    return std::nullopt;
+}
+
 } // namespace
+
+int LessonStep::partCount() const {
+    return 1 + int(std::count_if(commands.begin(), commands.end(), [](const ScriptCommand& c) { return c.name == "hold"; }));
+}
+
+std::vector<ScriptCommand> LessonStep::partScript(int part) const {
+    std::vector<ScriptCommand> script;
+    int current = 0;
+    for (const ScriptCommand& c : commands) {
+        if (c.name == "hold") {
+            if (++current > part) break;
+            continue;
+        }
+        const bool wait = c.name == "wait-spp" || c.name == "wait-frames";
+        if (current == part || !wait) script.push_back(c);
+    }
+    return script;
+}
 
 std::filesystem::path Lesson::resolve(const std::string& path) const {
     return (root / path).lexically_normal();
@@ -325,7 +351,11 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
                     throw fail(b.line, "step numbered " + std::to_string(step->first) + ", expected " +
                                            std::to_string(expected));
                 if (step->second.empty()) throw fail(b.line, "step " + std::to_string(expected) + " has no title");
-                lesson.steps.push_back({b.line, step->second, {}, {}});
+                std::string title = step->second;
+                const std::string mark = "(optional)";
+                const bool optional = title.size() > mark.size() && title.compare(title.size() - mark.size(), mark.size(), mark) == 0;
+                if (optional) title = trim(std::string_view(title).substr(0, title.size() - mark.size()));
+                lesson.steps.push_back({b.line, title, optional, {}, {}});
                 section = Section::Step;
             } else if (key == "learning goals") {
                 section = Section::Goals;
@@ -348,15 +378,28 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             break;
         }
         case Block::Paragraph: {
-            const std::string plain = trim(b.plain);
-            if (section == Section::Introduction && plain.rfind("Scene:", 0) == 0) {
+            const auto front = section == Section::Introduction ? frontMatter(trim(b.plain)) : std::nullopt;
+            if (!front) break;
+            const auto& [key, value] = *front;
+            if (b.plainDone) throw fail(b.line, "'" + key + " ...' must be a paragraph of its own");
+            if (key == "Scene:") {
                 if (!lesson.scene.empty()) throw fail(b.line, "a second 'Scene:' line");
-                lesson.scene = trim(std::string_view(plain).substr(6));
+                lesson.scene = value;
                 lesson.sceneLine = b.line;
                 if (lesson.scene.empty()) throw fail(b.line, "'Scene:' needs a path (relative to the repository root)");
-                if (b.plainDone) throw fail(b.line, "'Scene: PATH' must be a paragraph of its own");
-                hidden.push_back({b.line, b.line});
+            } else if (key == "Level:") {
+                if (!lesson.level.empty()) throw fail(b.line, "a second 'Level:' line");
+                if (std::find(std::begin(kLessonLevels), std::end(kLessonLevels), value) == std::end(kLessonLevels))
+                    throw fail(b.line, "'Level:' is '" + std::string(kLessonLevels[0]) + "' or '" + kLessonLevels[1] + "'");
+                lesson.level = value;
+            } else {
+                if (lesson.minutes > 0) throw fail(b.line, "a second 'Minutes:' line");
+                const bool digits = !value.empty() && value.size() < 4 &&
+                                    std::all_of(value.begin(), value.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+                lesson.minutes = digits ? std::stoi(value) : 0;
+                if (lesson.minutes <= 0) throw fail(b.line, "'Minutes:' needs the class time in whole minutes");
             }
+            hidden.push_back({b.line, b.line});
             break;
         }
         case Block::Item:
@@ -390,6 +433,11 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             }
             if (step.commands.empty())
                 throw fail(f.open, "step " + std::to_string(lesson.steps.size()) + ": empty ```raylab block");
+            for (size_t i = 0; i < step.commands.size(); ++i)
+                if (step.commands[i].name == "hold" &&
+                    (i == 0 || i + 1 == step.commands.size() || step.commands[i + 1].name == "hold"))
+                    throw fail(step.commands[i].line, std::string("hold with no commands ") +
+                                                          (i == 0 ? "before" : "after") + " it (it separates sub-steps)");
             hidden.push_back({f.open, f.close});
             break;
         }

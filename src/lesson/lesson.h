@@ -20,9 +20,17 @@ public:
 
 struct LessonStep {
     int line = 0;                         // line of the "## Step N: TITLE" heading
-    std::string title;                    // TITLE
+    std::string title;                    // TITLE, without a trailing "(optional)"
+    bool optional = false;                // the heading ends in "(optional)": a class may skip it
     std::string text;                     // the step's Markdown, without its heading and ```raylab block
     std::vector<ScriptCommand> commands;  // the ```raylab block; ScriptCommand::line is the file's line
+
+    // Sub-steps: the block cut at its `hold` lines (1 when it has none); the presenter's key moves
+    // from one to the next, so a comparison holds each state for the class.
+    int partCount() const;
+    // What shows sub-step `part` (0-based): the earlier sub-steps' commands without their waits
+    // (their state, not their pictures), then the sub-step's own; `hold` lines left out.
+    std::vector<ScriptCommand> partScript(int part) const;
 };
 
 struct Lesson {
@@ -32,6 +40,8 @@ struct Lesson {
     std::string scene;                    // as written after "Scene:", relative to root
     std::filesystem::path scenePath;      // root / scene; the file exists
     int sceneLine = 0;
+    std::string level;                    // "Level:" line: "VWO 5–6" or "first-year university" ("" if none)
+    int minutes = 0;                      // "Minutes:" line: the planned class time (0 if none)
     std::string introduction;             // Markdown between the title and the first "## " section
     std::vector<std::string> goals;       // "## Learning goals" list items (Markdown, one line each)
     std::vector<LessonStep> steps;        // "## Step N: TITLE" sections, N = 1, 2, ...
@@ -43,6 +53,9 @@ struct Lesson {
     // A path as a script's `open` gives it, resolved like the scene: relative to root.
     std::filesystem::path resolve(const std::string& path) const;
 };
+
+// The levels a "Level:" line may name.
+inline constexpr const char* kLessonLevels[] = {"VWO 5\u20136", "first-year university"};
 
 // Parses lesson text; `file` names it in messages and `root` resolves the scene. Throws LessonError
 // naming FILE:LINE (script errors in steps included).

@@ -30,7 +30,7 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"bounce-step", {1, 1}}, {"stage", {1, 1}},       {"split", {1, 1}},      {"split-a", {2, 2}},
         {"split-b", {2, 2}},     {"split-divider", {1, 1}}, {"ui-scale", {1, 1}}, {"key", {1, 1}},
         {"lesson", {1, 1}},      {"lesson-step", {1, 1}}, {"self-test", {0, 0}},   {"teach", {1, 1}},
-        {"drop", {1, 1}},
+        {"drop", {1, 1}},        {"expect", {2, 2}},      {"hold", {0, 0}},
     };
     return table;
 }
@@ -99,7 +99,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         if (!(words >> c.name)) continue;
         const auto it = commands().find(c.name);
         if (it == commands().end()) fail("unknown command '" + c.name + "'");
-        if (c.name == "set" || c.name == "split-a" || c.name == "split-b") {
+        if (c.name == "set" || c.name == "split-a" || c.name == "split-b" || c.name == "expect") {
             std::string key, rest;
             words >> key;
             std::getline(words, rest);
@@ -141,6 +141,14 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         if (c.name == "teach" && c.args[0] != "lesson" && c.args[0] != "classroom" && c.args[0] != "self-test" &&
             c.args[0] != "off")
             fail("teach takes lesson, classroom, self-test or off");
+        if (c.name == "expect") {
+            const std::string& what = c.args[0];
+            if (what == "debug-view" && !parseDebugView(c.args[1]))
+                fail("unknown debug view '" + c.args[1] + "' (" + debugViewList() + ")");
+            if (what == "scale" && !isNumber(c.args[1])) fail("expect scale takes a number");
+            if (what == "bounce-step" && c.args[1] != "off" && !isNumber(c.args[1]))
+                fail("expect bounce-step takes a number or off");
+        }
         if (c.name == "key" && std::find(kKeys.begin(), kKeys.end(), c.args[0]) == kKeys.end())
             fail("key takes " + keyChoices());
         out.push_back(std::move(c));

@@ -30,12 +30,17 @@
 //   scale S                resolution scale of the traced image (0.125 to 2)
 //   pause | resume | reset
 //   wait-spp N             wait until the image has N samples per pixel (or the target is reached)
+//   expect KEY VALUE       fails unless the scene's KEY has VALUE now (script/expectation.h):
+//                          the state a lesson step's text describes; also expect debug-view NAME,
+//                          expect scale S and expect bounce-step K|off for the viewer's state
 //   wait-frames N          let N UI frames pass
 //   screenshot PATH        the window as PNG;  export PATH: the render as EXR (linear) or PNG
 //   save PATH              the scene as JSON
 //   window W H             resize the window
 //   quit                   exit with status 0 (non-zero if any command failed)
 // Teaching and classroom (the viewer's Teach window; lessons use the first five):
+//   hold                   a lesson step's sub-steps meet here: the presenter's key runs what
+//                          follows (lesson/lesson.h); a script that is not a lesson step fails on it
 //   bounce-step K|next|off trace with at most K bounces (bounce views 0..K); next: K + 1; off
 //   stage NAME             = set render.stage NAME (primary, emission, lambert, ggx, textures, full)
 //   split samples|time|off A/B split screen at equal samples or equal time; off clears it

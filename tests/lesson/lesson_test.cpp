@@ -180,3 +180,48 @@ TEST(Lesson, LoadLessonResolvesAgainstTheFolderAboveAndListsInNameOrder) {
     }
     fs::remove_all(dir);
 }
+
+TEST(Lesson, HoldCutsAStepIntoSubSteps) {
+    const Lesson l = parseLesson(replaced(kGood, "reset\nwait-spp 4\n",
+                                          "reset\nwait-spp 4\nexpect camera.fov 50\nhold\nset camera.fov 60\n"
+                                          "wait-spp 8\nexpect camera.fov 60\n"),
+                                 "lessons/t.md", kRoot);
+    EXPECT_EQ(l.steps[0].partCount(), 1);
+    ASSERT_EQ(l.steps[1].partCount(), 2);
+    auto names = [](const std::vector<ScriptCommand>& script) {
+        std::string s;
+        for (const ScriptCommand& c : script) s += c.name + (c.args.empty() ? "" : " " + c.args.back()) + "; ";
+        return s;
+    };
+    EXPECT_EQ(names(l.steps[1].partScript(0)), "set 50; reset; wait-spp 4; expect 50; ");
+    // The second sub-step replays the first one's state without its waits, then its own commands.
+    EXPECT_EQ(names(l.steps[1].partScript(1)), "set 50; reset; expect 50; set 60; wait-spp 8; expect 60; ");
+    EXPECT_EQ(errorOf(replaced(kGood, "reset\nwait-spp 4\n", "reset\nwait-spp 4\nhold\n")),
+              "lessons/t.md:27: error: hold with no commands after it (it separates sub-steps)");
+    EXPECT_EQ(errorOf(replaced(kGood, "```raylab\nset", "```raylab\nhold\nset")),
+              "lessons/t.md:24: error: hold with no commands before it (it separates sub-steps)");
+    EXPECT_EQ(errorOf(replaced(kGood, "reset\nwait", "reset\nhold\nhold\nwait")),
+              "lessons/t.md:26: error: hold with no commands after it (it separates sub-steps)");
+}
+
+TEST(Lesson, LevelMinutesAndOptionalSteps) {
+    const std::string text = replaced(replaced(kGood, "Scene: scenes/default.json\n",
+                                               "Scene: scenes/default.json\n\nLevel: first-year university\n\nMinutes: 45\n"),
+                                      "## Step 2: Change", "## Step 2: Change (optional)");
+    const Lesson l = parseLesson(text, "lessons/t.md", kRoot);
+    EXPECT_EQ(l.level, "first-year university");
+    EXPECT_EQ(l.minutes, 45);
+    EXPECT_EQ(l.introduction, "An *introduction* paragraph.") << "the lines are not part of the introduction";
+    EXPECT_FALSE(l.steps[0].optional);
+    EXPECT_TRUE(l.steps[1].optional);
+    EXPECT_EQ(l.steps[1].title, "Change");
+    const Lesson none = parseLesson(kGood, "lessons/t.md", kRoot);
+    EXPECT_EQ(none.level, "");
+    EXPECT_EQ(none.minutes, 0);
+    EXPECT_EQ(errorOf(replaced(text, "Level: first-year university", "Level: hard")),
+              "lessons/t.md:5: error: 'Level:' is 'VWO 5\u20136' or 'first-year university'");
+    EXPECT_EQ(errorOf(replaced(text, "Minutes: 45", "Minutes: a lot")),
+              "lessons/t.md:7: error: 'Minutes:' needs the class time in whole minutes");
+    EXPECT_EQ(errorOf(replaced(text, "Minutes: 45\n", "Minutes: 45\nLevel: VWO 5\u20136\n")),
+              "lessons/t.md:7: error: 'Minutes: ...' must be a paragraph of its own");
+}

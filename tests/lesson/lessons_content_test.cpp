@@ -3,12 +3,17 @@
 // loader's --set mechanism (loadScene(scene, {"KEY=VALUE", ...}), the earlier sets of the step
 // included, as the viewer would apply them). Scenes a step opens must load too.
 #include "lesson/lesson.h"
+#include "render/shader_variant.h"
 #include "scene/scene_loader.h"
+#include "script/expectation.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -86,6 +91,7 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
         fs::path scene = lesson.scenePath;   // a step starts on the lesson's scene
         bool elsewhere = false;              // the step opened an allow-listed scene
         std::vector<std::string> overrides;
+        ViewState view;                      // a step starts from the default view (lessonResetCommands)
         for (ScriptCommand c : step.commands) {
             const std::string at = where(lesson, c);
             if (c.name == "stage") c = ScriptCommand{c.line, "set", {"render.stage", c.args[0]}};   // its meaning
@@ -125,6 +131,18 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
                     EXPECT_EQ(error, "") << at << ": " << key << " " << c.args[1];
                     if (error.empty()) overrides = std::move(with);   // a failed set is not kept
                 }
+            } else if (c.name == "expect") {
+                // The state the step's text describes holds here, as the script runner checks it.
+                if (elsewhere) continue;
+                try {
+                    EXPECT_EQ(expectationFailure(loadScene(scene, overrides), view, c.args[0], c.args[1]), "") << at;
+                } catch (const SceneError& e) {
+                    ADD_FAILURE() << at << ": " << e.what();
+                }
+            } else if (c.name == "debug-view") {
+                view.debugView = c.args[0];
+            } else if (c.name == "bounce-step") {
+                view.bounceStep = c.args[0] == "off" ? 0 : c.args[0] == "next" ? view.bounceStep + 1 : std::stoi(c.args[0]);
             } else if (c.name == "select") {
                 if (elsewhere) continue;
                 const double n = std::stod(c.args[0]);
@@ -133,8 +151,10 @@ void checkSteps(const Lesson& lesson, std::set<int>& used) {
             } else if (c.name == "scale") {
                 const double v = std::stod(c.args[0]);
                 EXPECT_TRUE(v >= 0.125 && v <= 2) << at << ": scale is 0.125 to 2";
+                view.scale = v;
             } else {
                 // A lesson step sets state; it never ends the viewer or writes files.
+                if (c.name == "hold") continue;   // sub-steps keep the state built so far
                 for (const char* banned : {"quit", "screenshot", "export", "save", "window", "click", "ui-scale", "key",
                                            "lesson", "lesson-step", "self-test", "teach"})
                     EXPECT_NE(c.name, banned) << at << ": not for lessons";
@@ -183,6 +203,11 @@ TEST_P(ShippedLesson, LoadsWithItsSceneAndEveryStepApplies) {
     EXPECT_FALSE(lesson.exercise.empty());
     EXPECT_FALSE(lesson.sources.empty()) << "a lesson cites its sources";
     EXPECT_EQ(loadError(lesson.scenePath, {}), "");
+    // A teacher sees whom the lesson is for, how long it takes, and which steps a short class keeps.
+    EXPECT_FALSE(lesson.level.empty()) << GetParam() << ": no 'Level:' line";
+    EXPECT_GT(lesson.minutes, 0) << GetParam() << ": no 'Minutes:' line";
+    EXPECT_TRUE(std::any_of(lesson.steps.begin(), lesson.steps.end(), [](const LessonStep& s) { return !s.optional; }))
+        << GetParam() << ": every step is optional";
     for (const LessonStep& step : lesson.steps) {
         EXPECT_FALSE(step.text.empty()) << GetParam() << ":" << step.line << ": step without text";
         // Steps can be taken in any order (presenter keys jump), so each starts by opening a scene.
@@ -191,6 +216,34 @@ TEST_P(ShippedLesson, LoadsWithItsSceneAndEveryStepApplies) {
     }
     std::set<int> used;
     checkSteps(lesson, used);
+}
+
+// A step shows the state its text describes: every sub-step (lesson.h: a block cut at `hold`)
+// ends with `expect` lines, checked by checkSteps above, and changes nothing after it starts to
+// wait for samples, so no comparison plays through to its last state unseen.
+TEST_P(ShippedLesson, EverySubStepHoldsAnExpectedState) {
+    const Lesson lesson = loadLesson(kLessons / GetParam());
+    for (const LessonStep& step : lesson.steps) {
+        std::vector<std::vector<ScriptCommand>> parts(1);
+        for (const ScriptCommand& c : step.commands) {
+            if (c.name == "hold") parts.emplace_back();
+            else parts.back().push_back(c);
+        }
+        for (size_t p = 0; p < parts.size(); ++p) {
+            const std::string at = GetParam() + ":" + std::to_string(step.line) + ": step " + step.title + ", part " +
+                                   std::to_string(p + 1);
+            ASSERT_FALSE(parts[p].empty()) << at;
+            EXPECT_EQ(parts[p].back().name, "expect") << at << ": a sub-step ends with the state it shows";
+            bool waited = false;
+            for (const ScriptCommand& c : parts[p]) {
+                const bool wait = c.name == "wait-spp" || c.name == "wait-frames";
+                EXPECT_FALSE(waited && !wait && c.name != "expect")
+                    << at << ": line " << c.line << ": " << c.name << " after a wait plays through a comparison; "
+                    << "put a hold before it";
+                waited = waited || wait;
+            }
+        }
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Lessons, ShippedLesson, testing::ValuesIn(lessonFileNames()), testName);
@@ -211,4 +264,215 @@ TEST(Lessons, AllowListPatternsMatchWholeParts) {
     EXPECT_FALSE(keyMatches("materials.*.roughness", "materials.roughness"));
     EXPECT_FALSE(keyMatches("render.nee", "render.nee.x"));
     EXPECT_TRUE(keyMatches("render.nee", "render.nee"));
+}
+
+// Claims of the lessons that a test can check: answer keys with numbers, computed here from the
+// formula (or the scene) the lesson gives, and what the lessons say a scene holds.
+namespace {
+
+const fs::path kScenes = fs::path(RAYLAB_SOURCE_DIR) / "scenes";
+
+Lesson lessonNamed(const std::string& file) { return loadLesson(kLessons / file); }
+
+// `value` written with `decimals` digits after the point, as a lesson writes it ("0.41", "-0.42").
+std::string fixed(double value, int decimals) {
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(decimals);
+    s << value;
+    return s.str();
+}
+
+const Material& materialNamed(const Scene& scene, const std::string& name) {
+    for (const Material& m : scene.materials)
+        if (m.name == name) return m;
+    throw std::runtime_error("no material " + name);
+}
+
+// Runs of spaces and line breaks count as one space, so rewrapping a paragraph keeps a claim found.
+std::string flat(const std::string& text) {
+    std::string out;
+    for (char ch : text) {
+        const bool space = ch == ' ' || ch == '\n' || ch == '\t';
+        if (!space) out += ch;
+        else if (!out.empty() && out.back() != ' ') out += ' ';
+    }
+    return out;
+}
+
+bool contains(const std::string& text, const std::string& part) { return flat(text).find(flat(part)) != std::string::npos; }
+
+} // namespace
+
+// Lesson 2 says, where "rpp" first appears, that the thesis's rpp is raylab's render.spp.
+TEST(LessonClaims, RppIsAlignedWithTheThesisWhereItFirstAppears) {
+    const std::vector<Lesson> lessons = loadLessons(kLessons);
+    const auto first = std::find_if(lessons.begin(), lessons.end(), [](const Lesson& l) {
+        return contains(l.introduction, "rpp") || std::any_of(l.steps.begin(), l.steps.end(), [](const LessonStep& s) {
+                   return contains(s.text, "rpp");
+               });
+    });
+    ASSERT_NE(first, lessons.end());
+    EXPECT_EQ(first->file.filename(), "02-monte-carlo.md");
+    EXPECT_TRUE(contains(first->introduction, "The thesis's \"rpp\""));
+    EXPECT_TRUE(contains(first->introduction, "raylab calls `render.spp`"));
+}
+
+// Lesson 6: the closed furnace's numbers follow from its scene (Le = emission × strength, albedo a).
+TEST(LessonClaims, ClosedFurnaceSeriesMatchesItsScene) {
+    const Lesson l = lessonNamed("06-emission-throughput.md");
+    const Scene scene = loadScene(kScenes / "closed_furnace.json");
+    const Material& glow = materialNamed(scene, "glow");
+    const double le = glow.radiance().x, a = glow.albedo.x;
+    EXPECT_TRUE(contains(l.steps[0].text, "Le = " + fixed(le, 1)));
+    EXPECT_TRUE(contains(l.steps[0].text, "= " + fixed(le / (1 - a), 1)));
+    // Step 2: L = Le (1 − a^(k+1))/(1 − a) for k = 0..3.
+    std::string truncated;
+    for (int k = 0; k <= 3; ++k) {
+        const double v = le * (1 - std::pow(a, k + 1)) / (1 - a);
+        EXPECT_TRUE(contains(l.steps[1].text, fixed(v, k + 1))) << "k = " << k << ": " << fixed(v, k + 1);
+    }
+    // Q2 (albedo 0.9) and the exercise (strength 0.2, albedo 0.75).
+    EXPECT_TRUE(contains(l.teacherNotes, "0.5/(1 − 0.9) = 5"));
+    const int k = int(std::ceil(std::log(0.01) / std::log(0.9))) - 1;   // smallest k with 0.9^(k+1) < 0.01
+    EXPECT_TRUE(contains(l.teacherNotes, "k ≥ " + std::to_string(k)));
+    EXPECT_TRUE(contains(l.teacherNotes, "that is " + fixed(0.2 / (1 - 0.75), 1)));
+    // Roulette: raylab's cap is pbrt-v3's; pbrt-v4 has none.
+    EXPECT_TRUE(contains(l.steps[3].text, "survival probability of pbrt-v3"));
+    EXPECT_FALSE(contains(l.steps[3].text, "as pbrt-v4 does"));
+    EXPECT_FALSE(contains(l.steps[2].text, "caps albedo"));
+}
+
+// Lesson 7, Q3: a concave Lambertian bowl under a sky of 1 reads ρ(1 − F)/(1 − ρF), less than ρ.
+TEST(LessonClaims, BowlAnswerIsLessThanTheAlbedo) {
+    const Lesson l = lessonNamed("07-lambert.md");
+    const double rho = 0.5, f = 0.5;
+    const double bowl = rho * (1 - f) / (1 - rho * f);
+    EXPECT_LT(bowl, rho);
+    EXPECT_TRUE(contains(l.teacherNotes, "For ρ = 0.5 and F = 0.5 a pixel reads " + fixed(bowl, 3)));
+    EXPECT_TRUE(contains(l.teacherNotes, "*less* than ρ"));
+    EXPECT_FALSE(contains(l.teacherNotes, "more than ρ"));
+    // The furnace sphere's material of step 1 is the scene's, at the albedo the step names.
+    EXPECT_FLOAT_EQ(materialNamed(loadScene(kScenes / "furnace.json"), "grey").albedo.x, 0.5f);
+}
+
+// Lesson 8 names only materials that scenes/materials.json has, and its Schlick answers are right.
+TEST(LessonClaims, MaterialsRowAndSchlickAnswers) {
+    const Lesson l = lessonNamed("08-microfacets-ggx-fresnel.md");
+    const Scene row = loadScene(kScenes / "materials.json");
+    std::string names;
+    for (const Material& m : row.materials) names += m.name + " ";
+    for (const char* metal : {"gold", "silver", "copper", "aluminium", "iron", "chrome", "brass"}) {
+        const bool named = contains(l.steps[4].text, metal);
+        EXPECT_EQ(named, contains(names, metal)) << metal << (named ? " is named but not in" : " is in but not named in")
+                                                 << " materials.json (" << names << ")";
+    }
+    for (const char* kind : {"plastic", "mirror", "glass"})
+        EXPECT_TRUE(contains(l.steps[4].text, kind) && contains(names, kind)) << kind;
+    // The polar plot of (ρ/π) cos θ is a full circle, not a half one.
+    EXPECT_FALSE(contains(l.steps[5].text, "half circle"));
+    EXPECT_TRUE(contains(l.steps[5].text, "full circle"));
+    std::string schlick;
+    for (double deg : {0.0, 60.0, 80.0, 89.0}) {
+        const double c = std::cos(glm::radians(deg));
+        schlick += (schlick.empty() ? "" : deg == 89.0 ? " and " : ", ") + fixed(0.04 + 0.96 * std::pow(1 - c, 5), 2);
+    }
+    EXPECT_TRUE(contains(l.teacherNotes, "Schlick gives " + schlick)) << schlick;
+}
+
+// Lesson 9: the lamps of each comparison have equal power (strength × r², the same emission).
+TEST(LessonClaims, LampsOfEqualPower) {
+    for (const char* file : {"lesson_lights.json", "veach_mis.json"}) {
+        const Scene s = loadScene(kScenes / file);
+        std::vector<double> power;
+        for (const Sphere& sp : s.spheres) {
+            const Material& m = s.materials.at(std::size_t(sp.material));
+            if (m.emissionStrength > 0) power.push_back(m.emissionStrength * sp.radius * sp.radius);
+        }
+        ASSERT_GE(power.size(), 2u) << file;
+        for (double p : power) EXPECT_NEAR(p / power[0], 1.0, 0.01) << file;
+    }
+    const Lesson l = lessonNamed("09-importance-sampling-nee-mis.md");
+    EXPECT_TRUE(contains(l.steps[3].text, "(1/nf) Σ wf(Xi) f(Xi)/pf(Xi) + (1/ng) Σ wg(Yj) f(Yj)/pg(Yj)"));
+}
+
+// Lesson 10: the focus distances come from the default scene's camera and spheres.
+TEST(LessonClaims, FocusDistancesFollowFromTheDefaultScene) {
+    const Lesson l = lessonNamed("10-camera-depth-of-field.md");
+    const Scene s = loadScene(kScenes / "default.json");
+    const glm::vec3 w = glm::normalize(s.camera.lookAt - s.camera.position);
+    auto depth = [&](const std::string& material) {
+        for (const Sphere& sp : s.spheres)
+            if (s.materials.at(std::size_t(sp.material)).name == material) return double(glm::dot(sp.center - s.camera.position, w));
+        ADD_FAILURE() << "no " << material << " sphere";
+        return 0.0;
+    };
+    const double yellow = depth("yellow"), green = depth("green");
+    EXPECT_TRUE(contains(l.steps[2].text, fixed(yellow, 1) + " units")) << fixed(yellow, 1);
+    EXPECT_TRUE(contains(l.steps[3].text, "(" + fixed(green, 1) + " units)")) << fixed(green, 1);
+    auto focusOf = [](const LessonStep& step) {
+        for (const ScriptCommand& c : step.commands)
+            if (c.name == "set" && c.args[0] == "camera.focus_distance") return c.args[1];
+        return std::string();
+    };
+    EXPECT_EQ(focusOf(l.steps[2]), fixed(yellow, 1));
+    EXPECT_EQ(focusOf(l.steps[3]), fixed(green, 1));
+    // The exercise: circle of confusion c = 2A|z − z_f|/z in pixels of the 32°, 360-pixel view.
+    const double c = 2 * 0.15 * (green - yellow) / green;
+    const double planeHeight = 2 * yellow * std::tan(glm::radians(double(s.camera.fovY)) / 2);
+    EXPECT_EQ(s.render.height, 360);
+    EXPECT_TRUE(contains(l.teacherNotes, "= " + fixed(c, 2) + " units"));
+    EXPECT_TRUE(contains(l.teacherNotes, fixed(planeHeight, 2) + " units tall"));
+    EXPECT_TRUE(contains(l.teacherNotes, "≈ " + std::to_string(int(std::lround(c / planeHeight * 360))) + " pixels"));
+}
+
+// Lesson 11's exercise and lesson 12's Fresnel exercise, computed.
+TEST(LessonClaims, TextureAndFresnelAnswers) {
+    const Lesson tex = lessonNamed("11-textures-level-of-detail.md");
+    const double angle = 2 * std::tan(glm::radians(20.0)) / 720;
+    const double near = angle * 10 * 1024 / 4, far = angle * 40 * 1024 / 4;
+    EXPECT_TRUE(contains(tex.teacherNotes, fixed(near, 1) + " texels"));
+    EXPECT_TRUE(contains(tex.teacherNotes, "λ = log2(" + fixed(near, 1) + ") ≈ " + fixed(std::log2(near), 1)));
+    EXPECT_TRUE(contains(tex.teacherNotes, fixed(far, 1) + " texels"));
+    EXPECT_TRUE(contains(tex.teacherNotes, "λ ≈ " + fixed(std::log2(far), 1)));
+    EXPECT_TRUE(contains(tex.goals[0], "frequencies above half the sampling rate"));
+    // Step 3 shows trilinear filtering on an image texture.
+    EXPECT_EQ(tex.steps[2].commands.front().args.at(0), "scenes/textured_bricks.json");
+
+    const Lesson glass = lessonNamed("12-glass-refraction.md");
+    const double ci = std::cos(glm::radians(60.0)), eta = 1.5;
+    const double st = std::sin(glm::radians(60.0)) / eta, ct = std::sqrt(1 - st * st);
+    const double rs = (ci - eta * ct) / (ci + eta * ct), rp = (eta * ci - ct) / (eta * ci + ct);
+    const double f = (rs * rs + rp * rp) / 2;
+    EXPECT_TRUE(contains(glass.teacherNotes, "= " + fixed(glm::degrees(std::asin(st)), 1) + "°"));
+    EXPECT_TRUE(contains(glass.teacherNotes, "r_s = " + fixed(rs, 2).replace(0, 1, "−")));
+    EXPECT_TRUE(contains(glass.teacherNotes, "r_p = " + fixed(rp, 2).replace(0, 1, "−")));
+    EXPECT_TRUE(contains(glass.teacherNotes, "≈ " + fixed(f, 2)));
+    EXPECT_TRUE(contains(glass.teacherNotes, std::to_string(int(std::lround(100 * (1 - f)))) + "% is transmitted"));
+}
+
+// Lesson 3's exercise hits the ball of its scene; lesson 5's scenes need no top-level tree.
+TEST(LessonClaims, SphereExerciseAndObjectCounts) {
+    const Lesson l3 = lessonNamed("03-ray-sphere.md");
+    const Scene one = loadScene(kScenes / "lesson_one_sphere.json");
+    const Sphere& ball = one.spheres.at(1);
+    EXPECT_EQ(ball.center, glm::vec3(0, 1, 0));
+    EXPECT_EQ(ball.radius, 1.0f);
+    // o = (0, 1, 5), d = (0, 0, −1): t = 5 ∓ R.
+    EXPECT_TRUE(contains(l3.teacherNotes, "t = " + std::to_string(int(5 - ball.radius)) + " and " +
+                                              std::to_string(int(5 + ball.radius))));
+
+    const Lesson l5 = lessonNamed("05-ray-box-bvh.md");
+    const Scene terrain = loadScene(kScenes / "displaced_terrain.json");
+    const std::size_t objects = terrain.spheres.size() + terrain.meshes.size();
+    EXPECT_EQ(objects, 3u);
+    EXPECT_LE(objects, kLinearTopLevelMax);
+    EXPECT_TRUE(contains(l5.steps[2].text, "three objects"));
+    EXPECT_TRUE(contains(l5.steps[2].text, "up to " + std::to_string(kLinearTopLevelMax) + " objects"));
+    EXPECT_FALSE(contains(l5.steps[2].text, "BVH over the objects"));
+    EXPECT_EQ(loadScene(kScenes / "default.json").spheres.size(), 8u);   // "eight spheres", step 4
+    EXPECT_TRUE(contains(l5.steps[3].text, "up to " + std::to_string(kLinearTopLevelMax) + " objects"));
+    std::size_t triangles = 0;
+    for (const Mesh& m : terrain.meshes) triangles += m.triangles.size();
+    EXPECT_EQ(triangles, 8192u);
 }

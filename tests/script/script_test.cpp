@@ -133,3 +133,17 @@ TEST(Script, KeysAndDrops) {
     EXPECT_EQ(errorOf("drop\n"), "s.txt:1: error: drop takes 1 argument(s), got 0");
     EXPECT_EQ(errorOf("drop a.json b.json\n"), "s.txt:1: error: drop takes 1 argument(s), got 2");
 }
+
+TEST(Script, ExpectAndHoldParse) {
+    const auto cmds = parseScript("expect materials.ball.albedo [0.9, 0.15, 0.1]\nhold\nexpect debug-view noise\n"
+                                  "expect scale 0.5\nexpect bounce-step off\n",
+                                  "s.txt");
+    ASSERT_EQ(cmds.size(), 5u);
+    EXPECT_EQ(cmds[0].args.at(1), "[0.9, 0.15, 0.1]");   // the rest of the line, as set
+    EXPECT_TRUE(cmds[1].args.empty());
+    EXPECT_EQ(errorOf("expect render.spp\n"), "s.txt:1: error: expect needs KEY VALUE");
+    EXPECT_EQ(errorOf("hold on\n"), "s.txt:1: error: hold takes 0 argument(s), got 1");
+    EXPECT_EQ(errorOf("expect debug-view heat\n"), "s.txt:1: error: unknown debug view 'heat' (" + debugViewList() + ")");
+    EXPECT_EQ(errorOf("expect scale half\n"), "s.txt:1: error: expect scale takes a number");
+    EXPECT_EQ(errorOf("expect bounce-step all\n"), "s.txt:1: error: expect bounce-step takes a number or off");
+}

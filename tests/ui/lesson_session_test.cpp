@@ -67,11 +67,13 @@ class EveryLessonStep : public LessonSessionTest, public testing::WithParamInter
 TEST_P(EveryLessonStep, AppliesInTheViewer) {
     ASSERT_FALSE(ui.lesson.open(kLessons / GetParam()).has_value());
     ASSERT_GT(ui.lesson.stepCount(), 0);
-    for (int i = 0; i < ui.lesson.stepCount(); ++i) {
-        SCOPED_TRACE("step " + std::to_string(i + 1));
-        ASSERT_TRUE(ui.lesson.apply(i));
+    for (int i = 0; i < ui.lesson.stepCount(); ++i)
+    for (int part = 0; part < ui.lesson.partCount(i); ++part) {
+        SCOPED_TRACE("step " + std::to_string(i + 1) + " part " + std::to_string(part + 1));
+        ASSERT_TRUE(ui.lesson.apply(i, part));
         EXPECT_EQ(ui.lesson.current(), i);
-        EXPECT_EQ(runQueuedStep(), 0) << viewer->document().lastError();
+        EXPECT_EQ(ui.lesson.currentPart(), part);
+        EXPECT_EQ(runQueuedStep(), 0) << viewer->document().lastError();   // its expect lines included
         EXPECT_TRUE(viewer->hasScene());
         // A step may end by switching the view (a new accumulation): trace its first pass.
         for (int k = 0; k < 10000 && viewer->tracer()->samplesPerPixel() == 0 && !ui.split.on(); ++k) viewer->update(0.05);
@@ -105,6 +107,21 @@ TEST_F(LessonSessionTest, PresenterKeysStepAndAStepResetsWhatOthersSet) {
     EXPECT_EQ(viewer->bounceStep(), 0);
     EXPECT_TRUE(ui.lesson.previous());
     EXPECT_EQ(ui.lesson.current(), 0);
+    ui.lesson.takeScript();
+    // Step 4 holds two views: Next shows the second, PageUp from step 5 comes back to it.
+    ASSERT_TRUE(ui.lesson.apply(3));
+    ASSERT_EQ(ui.lesson.partCount(3), 2);
+    EXPECT_TRUE(ui.lesson.next());
+    EXPECT_EQ(ui.lesson.current(), 3);
+    EXPECT_EQ(ui.lesson.currentPart(), 1);
+    EXPECT_EQ(runQueuedStep(), 0);
+    EXPECT_EQ(viewer->debugView(), DebugView::Triangles);
+    EXPECT_TRUE(ui.lesson.next());
+    EXPECT_EQ(ui.lesson.current(), 4);
+    EXPECT_EQ(ui.lesson.currentPart(), 0);
+    EXPECT_TRUE(ui.lesson.previous());
+    EXPECT_EQ(ui.lesson.current(), 3);
+    EXPECT_EQ(ui.lesson.currentPart(), 1);
     ui.lesson.takeScript();
     while (ui.lesson.next()) ui.lesson.takeScript();
     EXPECT_EQ(ui.lesson.current(), ui.lesson.stepCount() - 1) << "PageDown stops at the last step";

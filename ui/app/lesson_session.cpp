@@ -29,18 +29,35 @@ std::optional<std::string> LessonSession::open(const std::filesystem::path& file
         return std::string(e.what());
     }
     current_ = -1;
+    part_ = 0;
     pending_.reset();
     return std::nullopt;
 }
 
-bool LessonSession::apply(int i) {
-    if (!isOpen() || i < 0 || i >= stepCount()) return false;
+int LessonSession::partCount(int step) const {
+    return isOpen() && step >= 0 && step < stepCount() ? lesson_->steps[std::size_t(step)].partCount() : 0;
+}
+
+bool LessonSession::next() {
+    if (current_ >= 0 && part_ + 1 < partCount(current_)) return apply(current_, part_ + 1);
+    return apply(current_ + 1);
+}
+
+bool LessonSession::previous() {
+    if (current_ < 0) return apply(0);
+    if (part_ > 0) return apply(current_, part_ - 1);
+    return apply(current_ - 1, partCount(current_ - 1) - 1);
+}
+
+bool LessonSession::apply(int i, int part) {
+    if (!isOpen() || i < 0 || i >= stepCount() || part < 0 || part >= partCount(i)) return false;
     current_ = i;
+    part_ = part;
     const LessonStep& step = lesson_->steps[std::size_t(i)];
     std::vector<ScriptCommand> script = lessonResetCommands();
     if (step.commands.empty() || step.commands.front().name != "open")
         script.push_back(ScriptCommand{step.line, "open", {lesson_->scenePath.string()}});
-    for (ScriptCommand c : step.commands) {
+    for (ScriptCommand c : step.partScript(part)) {
         if (c.name == "open") c.args[0] = lesson_->resolve(c.args[0]).string();
         script.push_back(std::move(c));
     }

@@ -29,14 +29,17 @@ public:
     bool isOpen() const { return lesson_.has_value(); }
     const Lesson& lesson() const { return *lesson_; }
 
-    // The step shown (0-based), -1 before the first step is applied.
+    // The step shown (0-based), -1 before the first step is applied; its sub-step (lesson.h).
     int current() const { return current_; }
+    int currentPart() const { return part_; }
     int stepCount() const { return isOpen() ? int(lesson_->steps.size()) : 0; }
-    // Apply step i: it becomes current and its script is queued for the window loop. Out-of-range
-    // indices are ignored (false). next()/previous() move by one (presenter keys).
-    bool apply(int i);
-    bool next() { return apply(current_ + 1); }
-    bool previous() { return apply(current_ < 0 ? 0 : current_ - 1); }
+    int partCount(int step) const;
+    // Apply sub-step `part` of step i: it becomes current and its script is queued for the window
+    // loop. Out-of-range indices are ignored (false). next()/previous() move by one sub-step
+    // (presenter keys): previous() from a step's first sub-step goes to the last of the step before.
+    bool apply(int i, int part = 0);
+    bool next();
+    bool previous();
 
     // The queued script, once: the viewer state a step does not mention is put back to its default
     // first (beauty view, no overlays, no bounce stepping, no split screen), then the lesson's
@@ -49,6 +52,7 @@ private:
     std::vector<LessonEntry> entries_;
     std::optional<Lesson> lesson_;
     int current_ = -1;
+    int part_ = 0;
     std::optional<std::vector<ScriptCommand>> pending_;
 };
 

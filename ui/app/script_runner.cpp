@@ -2,6 +2,8 @@
 
 #include "app/scene_object.h"
 #include "app/viewport_click.h"
+#include "render/debug_views.h"
+#include "script/expectation.h"
 
 #include <algorithm>
 #include <string>
@@ -156,6 +158,16 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         return true;
     }
     if (c.name == "stage") return viewer.document().set("render.stage", a[0]);
+    if (c.name == "expect") {
+        const ViewState view{std::string(debugViewName(viewer.debugView())), viewer.resolutionScale(), viewer.bounceStep()};
+        const std::string failure = expectationFailure(viewer.scene(), view, a[0], a[1]);
+        if (!failure.empty()) viewer.log().error("expect: " + failure);
+        return failure.empty();
+    }
+    if (c.name == "hold") {   // lesson sessions cut steps at it (lesson/lesson.h)
+        viewer.log().error("hold: only a lesson step holds (the presenter's key goes on)");
+        return false;
+    }
     if (c.name == "split") {
         if (a[0] == "off") ui.split.stop();
         else ui.split.start(a[0] == "time" ? SplitBudget::EqualTime : SplitBudget::EqualSamples);

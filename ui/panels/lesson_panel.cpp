@@ -79,6 +79,10 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     if (ImGui::Button((buttonLabel("Next", KeyAction::NextStep) + " >").c_str())) runAction(KeyAction::NextStep, viewer, ui);
     ImGui::SameLine();
     ImGui::Text("step %d of %d", cur + 1, n);
+    if (cur >= 0 && ui.lesson.partCount(cur) > 1) {
+        ImGui::SameLine();
+        ImGui::Text("(part %d of %d: Next holds the next state)", ui.lesson.currentPart() + 1, ui.lesson.partCount(cur));
+    }
     ImGui::Separator();
     ImGui::BeginChild("##lesson-text");
     if (lessonFont()) ImGui::PushFont(lessonFont());
@@ -87,6 +91,8 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", l.title.c_str());
     ImGui::PopTextWrapPos();
     ImGui::TextDisabled("Scene: %s", l.scene.c_str());
+    if (!l.level.empty() || l.minutes > 0)
+        ImGui::TextDisabled("Level: %s, %d minutes", l.level.empty() ? "-" : l.level.c_str(), l.minutes);
     ImGui::PushID("intro");
     drawMarkdown(l.introduction);
     ImGui::PopID();
@@ -104,7 +110,7 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
             ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.85f, 0.55f, 0.1f, 1.0f));
             ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ImVec4(0.95f, 0.65f, 0.2f, 1.0f));
         }
-        const std::string label = "Step " + std::to_string(i + 1) + ": " + step.title;
+        const std::string label = "Step " + std::to_string(i + 1) + ": " + step.title + (step.optional ? " (optional)" : "");
         if (ImGui::Button(label.c_str())) ui.lesson.apply(i);
         if (active) ImGui::PopStyleColor(2);
         if (ImGui::IsItemHovered()) {
