@@ -85,7 +85,7 @@ std::filesystem::path millionTriangleScene(const std::filesystem::path& dir, con
 
 std::string agreementText(const Agreement& a) {
     char s[96];
-    std::snprintf(s, sizeof s, "%.3f %% (%zu hit/miss, %zu t)", 100.0 * a.fraction(), a.hitMiss, a.distance);
+    std::snprintf(s, sizeof s, "%.4f %% (%zu hit/miss, %zu t)", 100.0 * a.fraction(), a.hitMiss, a.distance);
     return s;
 }
 
@@ -200,13 +200,15 @@ std::vector<CastHit> GpuRayCaster::hits() const {
     return out;
 }
 
-Agreement compareHits(const std::vector<CastHit>& a, const std::vector<CastHit>& b, float tTolerance) {
+Agreement compareHits(const std::vector<CastRay>& rays, const std::vector<CastHit>& a, const std::vector<CastHit>& b,
+                      float tTolerance) {
     Agreement g;
-    g.rays = std::min(a.size(), b.size());
+    g.rays = std::min({rays.size(), a.size(), b.size()});
     for (std::size_t i = 0; i < g.rays; ++i) {
         const bool ha = a[i].t != glsl::CAST_MISS, hb = b[i].t != glsl::CAST_MISS;
+        const float scale = std::max({a[i].t, b[i].t, glm::length(glm::vec3(rays[i].originTMin))});
         if (ha != hb) ++g.hitMiss;
-        else if (ha && std::abs(a[i].t - b[i].t) > tTolerance * std::max(a[i].t, b[i].t)) ++g.distance;
+        else if (ha && std::abs(a[i].t - b[i].t) > tTolerance * scale) ++g.distance;
     }
     return g;
 }
@@ -254,7 +256,7 @@ int runRayRate(const RayRateOptions& o) {
                     });
                 };
                 const double one = embreeRun(1, 1), two = embreeRun(2, 1);
-                const Agreement withEmbree = compareHits(gpuHits, embreeHits);
+                const Agreement withEmbree = compareHits(set->rays, gpuHits, embreeHits);
                 const double p8 = embreeRun(2, 8), p16 = embreeRun(2, 16);
                 const double ratio = two / gpu;
                 ratios.push_back(ratio);
@@ -265,7 +267,7 @@ int runRayRate(const RayRateOptions& o) {
             } else {
                 row << "Embree not found | | | | | | ";
             }
-            row << agreementText(compareHits(gpuHits, cpu)) << " |\n";
+            row << agreementText(compareHits(set->rays, gpuHits, cpu)) << " |\n";
             std::cerr << row.str();
             table << row.str();
         }

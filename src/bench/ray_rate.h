@@ -62,15 +62,18 @@ private:
     int gridWidth_ = 1;
 };
 
-// Two tracers' hits compared ray by ray: they agree where both miss, or both hit at distances
-// within tTolerance of each other relative to the larger.
+// Two tracers' hits of the same rays compared ray by ray: they agree where both miss, or both hit
+// at distances within tTolerance of each other, relative to the larger of t and the origin's
+// distance from the world origin (a hit's t is known only to the rounding of the coordinates,
+// pbrt-v4 §6.8, so a short ray far from the origin carries a large relative error).
 struct Agreement {
     std::size_t rays = 0;
     std::size_t hitMiss = 0;     // one hits, the other misses
     std::size_t distance = 0;    // both hit, t differs beyond the tolerance
     double fraction() const { return rays ? 1.0 - double(hitMiss + distance) / double(rays) : 1.0; }
 };
-Agreement compareHits(const std::vector<CastHit>& a, const std::vector<CastHit>& b, float tTolerance = 1e-4f);
+Agreement compareHits(const std::vector<CastRay>& rays, const std::vector<CastHit>& a, const std::vector<CastHit>& b,
+                      float tTolerance = 1e-4f);
 
 struct RayRateOptions {
     std::vector<std::filesystem::path> scenes;   // empty: Cornell box, the suite's large mesh, 10^6 triangles

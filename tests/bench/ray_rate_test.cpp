@@ -68,19 +68,25 @@ TEST(RayRateSets, AreTheSameForASeedAndBounceRaysLeaveTheSurface) {
     EXPECT_GT(bounce.rays.size(), a.rays.size() / 2);
     // Leaving the surface: no bounce ray meets its own surface at t ≈ 0.
     for (const CastHit& h : castOnCpu(g, bounce))
-        if (h.t != glsl::CAST_MISS) EXPECT_GT(h.t, 1e-3f);
+        if (h.t != glsl::CAST_MISS) {
+            EXPECT_GT(h.t, 1e-3f);
+        }
     const RaySet again = bounceRays(g, a, 7);
     EXPECT_EQ(0, std::memcmp(bounce.rays.data(), again.rays.data(), bounce.rays.size() * sizeof(CastRay)));
 }
 
 TEST(RayRateAgreement, CountsHitMissAndDistanceDisagreements) {
+    const std::vector<CastRay> rays(4, CastRay(glm::vec4(0.0f), glm::vec4(0, 0, 1, glsl::FLOAT_MAX)));
     const std::vector<CastHit> a = {{1.0f, 0, 0, 0}, {glsl::CAST_MISS, 0, 0, 0}, {2.0f, 0, 0, 0}, {3.0f, 0, 0, 0}};
     const std::vector<CastHit> b = {{1.0f, 0, 0, 0}, {5.0f, 0, 0, 0}, {2.1f, 0, 0, 0}, {3.0f * (1 + 1e-5f), 0, 0, 0}};
-    const Agreement g = compareHits(a, b);
+    const Agreement g = compareHits(rays, a, b);
     EXPECT_EQ(g.rays, 4u);
     EXPECT_EQ(g.hitMiss, 1u);
     EXPECT_EQ(g.distance, 1u);
     EXPECT_DOUBLE_EQ(g.fraction(), 0.5);
+    // Far from the origin the same difference in t is within the rounding of the coordinates.
+    const std::vector<CastRay> far(4, CastRay(glm::vec4(1000, 0, 0, 0), glm::vec4(0, 0, 1, glsl::FLOAT_MAX)));
+    EXPECT_EQ(compareHits(far, a, b).distance, 0u);
 }
 
 class RayRateGpu : public test::GlTest {};
@@ -95,14 +101,14 @@ TEST_F(RayRateGpu, RayCastFindsTheHitsOfTheCpuTraversal) {
         EXPECT_GT(caster.cast(), 0.0);
         const std::vector<CastHit> gpu = caster.hits(), cpu = castOnCpu(caster.geometry(), *set);
         ASSERT_EQ(gpu.size(), set->rays.size());
-        const Agreement g = compareHits(gpu, cpu, 1e-5f);
+        const Agreement g = compareHits(set->rays, gpu, cpu, 1e-5f);
         EXPECT_EQ(g.hitMiss + g.distance, 0u) << set->name;
         std::size_t samePrimitive = 0;
         for (std::size_t i = 0; i < gpu.size(); ++i)
             samePrimitive += gpu[i].t == glsl::CAST_MISS ||
                              (gpu[i].instance == cpu[i].instance && gpu[i].primitive == cpu[i].primitive);
         EXPECT_EQ(samePrimitive, gpu.size()) << set->name;
-        EXPECT_GT(hits(gpu), gpu.size() / 4) << set->name;   // the scene is in view: the test compares hits
+        EXPECT_GT(hits(gpu), gpu.size() / 10) << set->name;   // the test compares hits, not only misses
     }
 }
 
@@ -117,7 +123,7 @@ TEST(RayRateEmbree, AgreesWithTheCpuTraversal) {
         for (int packets : {1, 8, 16}) {
             std::vector<CastHit> embree;
             peer.cast(set.rays, embree, 2, packets);
-            const Agreement a = compareHits(embree, cpu);
+            const Agreement a = compareHits(set.rays, embree, cpu);
             // Watertight against Embree's edge test: a ray through an exact shared edge may differ.
             EXPECT_GE(a.fraction(), 0.999) << set.name << " ×" << packets << ": " << a.hitMiss << " hit/miss, "
                                            << a.distance << " t";
@@ -142,12 +148,14 @@ TEST(RayRateCli, WritesTheTableBelowTheMarkerAndNamesAMissingEmbree) {
     const std::string s = text.str();
     EXPECT_EQ(s.rfind("# hand-written\n", 0), 0u) << s;
     EXPECT_EQ(s.find("old table"), std::string::npos) << s;
-    for (const char* needle : {"| cornell_box.json | 36 | 1024 camera |", "bounce |", "- machine: ", "load average",
+    for (const char* needle : {"| cornell_box.json | 32 | 1024 camera |", "bounce |", "- machine: ", "load average",
                                "- command: `", "--rays 1024"})
         EXPECT_NE(s.find(needle), std::string::npos) << needle << "\n" << s;
     const bool saysMissing = log.str().find("Embree not found") != std::string::npos &&
                              s.find("Embree not found") != std::string::npos;
     EXPECT_EQ(saysMissing, !embreeAvailable()) << log.str() << s;
-    if (embreeAvailable()) EXPECT_NE(s.find("- Embree: " + embreeVersion()), std::string::npos) << s;
+    if (embreeAvailable()) {
+        EXPECT_NE(s.find("- Embree: " + embreeVersion()), std::string::npos) << s;
+    }
     fs::remove_all(dir);
 }
