@@ -214,6 +214,7 @@ Agreement compareHits(const std::vector<CastRay>& rays, const std::vector<CastHi
 }
 
 int runRayRate(const RayRateOptions& o) {
+    const std::string machine = machineLine();
     std::vector<std::filesystem::path> scenes = o.scenes;
     if (scenes.empty())
         scenes = {"scenes/cornell_box.json", "scenes/displaced_terrain.json",
@@ -279,7 +280,7 @@ int runRayRate(const RayRateOptions& o) {
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
     std::ostringstream report;
     report << "\n## Nearest-hit ray rate, " << date << "\n\n"
-           << "- machine: " << machineLine() << "\n- GL: " << o.glDescription
+           << "- machine: " << machine << "\n- GL: " << o.glDescription
            << " (LP_NUM_THREADS " << (lpThreads ? lpThreads : "unset: one thread per CPU") << ")\n"
            << "- Embree: " << (embree ? embreeVersion() : "Embree not found") << "\n- command: `" << o.commandLine
            << "`\n- median of " << o.repeat << " runs after a warm-up; raylab BVH on CPU: one run\n\n"
