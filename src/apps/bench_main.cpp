@@ -8,6 +8,7 @@
 #include "gl/gl_context.h"
 #include "render/path_tracer.h"
 #include "render/progressive_render.h"
+#include "scene/scene_error.h"
 #include "scene/scene_loader.h"
 
 #include <CLI/CLI.hpp>
@@ -139,6 +140,9 @@ int main(int argc, char** argv) {
             auto context = createHeadlessContext(parseGlBackend(gl));
             rayRate.glDescription = context->description();
             return runRayRate(rayRate);
+        } catch (const SceneError& e) {   // a scene file: its own located message, bad input
+            std::cerr << e.what() << "\n";
+            return 1;
         } catch (const std::exception& e) {
             std::cerr << "raylab-bench: error: " << e.what() << "\n";
             return 3;

@@ -159,3 +159,18 @@ TEST(RayRateCli, WritesTheTableBelowTheMarkerAndNamesAMissingEmbree) {
     }
     fs::remove_all(dir);
 }
+
+TEST(RayRateCli, ABadSceneIsBadInputWithItsLocation) {
+    const fs::path dir = fs::temp_directory_path() / ("raylab_rays_bad_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "bad.json") << "{ \"objects\": [ { \"type\": \"sphere\", \"radius\": -1 } ] }\n";
+    const std::string cmd = std::string("'") + RAYLAB_BENCH_EXE + "' rays --scene '" + (dir / "bad.json").string() +
+                            "' --rays 16 --repeat 1 > '" + (dir / "log.txt").string() + "' 2>&1";
+    const int raw = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(raw));
+    std::stringstream log;
+    log << std::ifstream(dir / "log.txt").rdbuf();
+    EXPECT_EQ(WEXITSTATUS(raw), 1) << log.str();
+    EXPECT_NE(log.str().find("bad.json:1:"), std::string::npos) << log.str();
+    fs::remove_all(dir);
+}
