@@ -47,4 +47,8 @@
 #define BINDING_TEST_INPUT 14
 #define BINDING_TEST_OUTPUT 15
 
+// The ray-rate benchmark's program (entry/ray_cast.frag), bound beside the scene's geometry.
+#define BINDING_CAST_RAYS 28
+#define BINDING_CAST_HITS 29
+
 #endif
