@@ -46,6 +46,7 @@ RL_FN vec3 nodeMax(GpuBvhNode n) { return vec3(n.boundsMax.x, n.boundsMax.y, n.b
 // object-space ray starts tOffset further along than the world ray (see intersectInstance).
 RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool anyHit, RL_INOUT(TraceRecord) rec) {
     vec3 invDir = safeInverseDir(ray.dir);
+    TriangleRay triRay = triangleRay(ray);
     bool found = false;
     uint stack[BVH_STACK_SIZE];
     int sp = 0;
@@ -61,9 +62,7 @@ RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool a
                     GpuTriangle tri = triangleAt(i);
                     RL_COUNT_TRIANGLE();
                     TriangleHit h;
-                    if (intersectTriangle(ray, xyzOf(vertexAt(tri.vertices.x).positionU),
-                                          xyzOf(vertexAt(tri.vertices.y).positionU),
-                                          xyzOf(vertexAt(tri.vertices.z).positionU), rec.t - tOffset, h)) {
+                    if (intersectTriangle(triRay, xyzOf(tri.p0), xyzOf(tri.p1), xyzOf(tri.p2), rec.t - tOffset, h)) {
                         rec = TraceRecord(h.t + tOffset, instance, i, h.b1, h.b2);
                         found = true;
                         if (anyHit) break;
@@ -248,9 +247,9 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     GpuVertex v1 = vertexAt(tri.vertices.y);
     GpuVertex v2 = vertexAt(tri.vertices.z);
     if (tri.vertices.w != 0u) s.material = tri.vertices.w - 1u;   // per-triangle material (glTF)
-    vec3 p0 = xyzOf(v0.positionU);
-    vec3 p1 = xyzOf(v1.positionU);
-    vec3 p2 = xyzOf(v2.positionU);
+    vec3 p0 = xyzOf(tri.p0);
+    vec3 p1 = xyzOf(tri.p1);
+    vec3 p2 = xyzOf(tri.p2);
     TriangleHit h = TriangleHit(rec.t, 1.0f - rec.b1 - rec.b2, rec.b1, rec.b2);
     vec3 pObj = triangleHitPoint(h, p0, p1, p2);
     vec3 eObj = triangleHitError(h, p0, p1, p2);

@@ -37,7 +37,12 @@ struct GpuInstance {
 // sceneToJson writes "objects" in and the viewer's `objects.N` keys use).
 RL_FN uint instanceObjectId(GpuInstance inst) { return inst.info.w >> 2u; }
 
+// A triangle in its mesh's BVH leaf order. It carries its own object-space positions, so a
+// triangle test reads one record instead of an index record and three vertices.
 struct GpuTriangle {
+    vec4 p0;          // xyz: position of vertex 0 (object space); w unused
+    vec4 p1;
+    vec4 p2;
     uvec4 vertices;   // xyz: indices into the vertex buffer; w: material + 1, 0 = the instance's
 };
 

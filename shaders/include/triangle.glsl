@@ -22,26 +22,42 @@ RL_FN int maxDimension(vec3 v) {
 
 RL_FN vec3 permuteAxes(vec3 v, int x, int y, int z) { return vec3(v[x], v[y], v[z]); }
 
-// Hit in (0, tMax) of the ray and triangle p0 p1 p2, either side; false for degenerate triangles.
-RL_FN bool intersectTriangle(Ray ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_OUT(TriangleHit) hit) {
-    // Degenerate in float (collinear or coincident vertices, e.g. a tiny triangle far from the
-    // origin whose vertices rounded together): never hit, and its normal would be NaN.
-    vec3 area = cross(p2 - p0, p1 - p0);
-    if (dot(area, area) == 0.0f) return false;
-    // Vertices relative to the origin, axes permuted so that z is the ray's dominant axis.
+// The per-ray part of the watertight test (Woop et al. 2013, §3): the axis permutation that makes z
+// the ray's dominant axis and the shear that turns the ray into +z, computed once for all the
+// triangles a ray meets instead of once per triangle.
+struct TriangleRay {
+    vec3 origin;
+    ivec3 axes;   // kx, ky, kz
+    vec3 shear;   // Sx, Sy, Sz
+};
+
+RL_FN TriangleRay triangleRay(Ray ray) {
     int kz = maxDimension(abs(ray.dir));
     int kx = kz + 1;
     if (kx == 3) kx = 0;
     int ky = kx + 1;
     if (ky == 3) ky = 0;
     vec3 d = permuteAxes(ray.dir, kx, ky, kz);
+    return TriangleRay(ray.origin, ivec3(kx, ky, kz), vec3(-d.x / d.z, -d.y / d.z, 1.0f / d.z));
+}
+
+// Hit in (0, tMax) of the ray and triangle p0 p1 p2, either side; false for degenerate triangles.
+RL_FN bool intersectTriangle(TriangleRay ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_OUT(TriangleHit) hit) {
+    // Degenerate in float (collinear or coincident vertices, e.g. a tiny triangle far from the
+    // origin whose vertices rounded together): never hit, and its normal would be NaN.
+    vec3 area = cross(p2 - p0, p1 - p0);
+    if (dot(area, area) == 0.0f) return false;
+    // Vertices relative to the origin, axes permuted so that z is the ray's dominant axis.
+    int kx = ray.axes.x;
+    int ky = ray.axes.y;
+    int kz = ray.axes.z;
     vec3 a = permuteAxes(p0 - ray.origin, kx, ky, kz);
     vec3 b = permuteAxes(p1 - ray.origin, kx, ky, kz);
     vec3 c = permuteAxes(p2 - ray.origin, kx, ky, kz);
     // Shear so the ray runs along +z; z is scaled only once an intersection is likely.
-    float sx = -d.x / d.z;
-    float sy = -d.y / d.z;
-    float sz = 1.0f / d.z;
+    float sx = ray.shear.x;
+    float sy = ray.shear.y;
+    float sz = ray.shear.z;
     a.x += sx * a.z;
     a.y += sy * a.z;
     b.x += sx * b.z;
@@ -82,6 +98,10 @@ RL_FN bool intersectTriangle(Ray ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_
     if (!(t > deltaT)) return false;
     hit = TriangleHit(t, e0 * invDet, e1 * invDet, e2 * invDet);
     return true;
+}
+
+RL_FN bool intersectTriangle(Ray ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_OUT(TriangleHit) hit) {
+    return intersectTriangle(triangleRay(ray), p0, p1, p2, tMax, hit);
 }
 
 // The hit point from barycentrics (its error does not grow with t, unlike o + t·d).

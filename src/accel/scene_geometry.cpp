@@ -44,7 +44,10 @@ SceneGeometry buildSceneGeometry(const Scene& scene, const BvhOptions& options) 
         for (const BvhNode& n : bvh.nodes) g.meshNodes.push_back(gpuNode(n, nodeOffset, triangleOffset));
         for (std::uint32_t t : bvh.order) {
             const int material = mesh.triangleMaterials.empty() ? -1 : mesh.triangleMaterials[t];
-            g.triangles.push_back({glm::uvec4(mesh.triangles[t] + glm::uvec3(vertexOffset), unsigned(material + 1))});
+            const glm::uvec3 v = mesh.triangles[t];
+            g.triangles.push_back({glm::vec4(mesh.positions[v.x], 0.0f), glm::vec4(mesh.positions[v.y], 0.0f),
+                                   glm::vec4(mesh.positions[v.z], 0.0f),
+                                   glm::uvec4(v + glm::uvec3(vertexOffset), unsigned(material + 1))});
         }
         for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
             const glm::vec2 uv = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[v];

@@ -208,6 +208,18 @@ TEST(Bvh, MovingAnObjectOnlyRebuildsTheTopLevel) {
     glsl::cpuTraversal.geometry = nullptr;
 }
 
+TEST(Bvh, TriangleRecordsCarryThePositionsOfTheirVertices) {
+    const Scene scene = randomScene(11, 0, 3, 50);
+    const SceneGeometry g = buildSceneGeometry(scene);
+    ASSERT_EQ(g.triangles.size(), 150u);
+    for (std::size_t t = 0; t < g.triangles.size(); ++t) {
+        const glsl::GpuTriangle& tri = g.triangles[t];
+        EXPECT_EQ(glm::vec3(tri.p0), glm::vec3(g.vertices.at(tri.vertices.x).positionU)) << "triangle " << t;
+        EXPECT_EQ(glm::vec3(tri.p1), glm::vec3(g.vertices.at(tri.vertices.y).positionU)) << "triangle " << t;
+        EXPECT_EQ(glm::vec3(tri.p2), glm::vec3(g.vertices.at(tri.vertices.z).positionU)) << "triangle " << t;
+    }
+}
+
 class BvhGpuTest : public test::GlTest {};
 
 TEST_F(BvhGpuTest, GpuTraversalMatchesBruteForceNearestAndShadow) {
