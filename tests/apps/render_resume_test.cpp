@@ -165,3 +165,32 @@ TEST(RenderResume, StratifiedResumesOnlyToItsRecordedTarget) {
     EXPECT_NE(r.err.find("resume it to --spp 4"), std::string::npos) << r.err;
     EXPECT_EQ(render(common + " --spp 4 --resume " + quoted(exr)).status, 0) << "already at its target: nothing to add";
 }
+
+// The resume continues the mean in the file: adding 1 to every pixel of a 3 spp EXR before
+// resuming it to 8 spp raises the result by 3/8 against the uninterrupted run (a resume that
+// rendered from 0 again would equal that run).
+TEST(RenderResume, TheResumedMeanStartsFromThePixelsInTheExr) {
+    const fs::path dir = scratchDir();
+    const fs::path whole = dir / "w.exr", part = dir / "p.exr";
+    ASSERT_EQ(render(kScene + " --spp 8 -o " + quoted(whole)).status, 0);
+    ASSERT_EQ(render(kScene + " --spp 3 -o " + quoted(part)).status, 0);
+    {
+        auto in = OIIO::ImageInput::open(part.string());
+        ASSERT_TRUE(in);
+        const OIIO::ImageSpec spec = in->spec();
+        std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(spec.nchannels));
+        ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+        in->close();
+        for (std::size_t i = 0; i < pixels.size(); ++i)
+            if (i % 4 != 3) pixels[i] += 1.0f;
+        auto out = OIIO::ImageOutput::create(part.string());
+        ASSERT_TRUE(out && out->open(part.string(), spec));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+        ASSERT_TRUE(out->close());
+    }
+    const CliRun r = render(kScene + " --spp 8 --resume " + quoted(part));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const raylab::Image a = raylab::readImage(whole), b = raylab::readImage(part);
+    for (std::size_t i = 0; i < a.rgba.size(); ++i)
+        if (i % 4 != 3) ASSERT_NEAR(b.rgba[i] - a.rgba[i], 3.0f / 8.0f, 1e-4f) << "channel " << i;
+}
