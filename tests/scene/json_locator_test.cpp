@@ -149,8 +149,9 @@ TEST(SceneLocator, BrokenInputKeepsWhatWasFoundAndNeverCrashes) {
 }
 
 // A long key over many values: each value's place is a (parent, token) node, so the locator's heap
-// grows with the text. Storing a full pointer string per value took key length × value count (here
-// 200 MB for a 170 kB text). glibc's mallinfo2 counts the bytes; a sanitizer's allocator reports none.
+// grows with the text: about 130 bytes a value (a node and its hash entry), here 7 characters each.
+// Storing a full pointer string per value took key length × value count (here 200 MB for a 139 kB
+// text). glibc's mallinfo2 counts the bytes; a sanitizer's allocator reports none.
 TEST(SceneLocator, MemoryIsLinearInTheTextForLongKeysOverManyValues) {
     const std::string key(10000, 'k');
     std::string text = "{\"" + key + "\": [";
@@ -163,7 +164,7 @@ TEST(SceneLocator, MemoryIsLinearInTheTextForLongKeysOverManyValues) {
     ASSERT_TRUE(l.complete());
     EXPECT_EQ(l.size(), 20002u);
     EXPECT_EQ(valueAt(l, "/" + key + "/19999"), "1:" + std::to_string(text.size() - 6));
-    EXPECT_LT(used, 16 * text.size()) << "bytes held for a " << text.size() << "-byte text";
+    EXPECT_LT(used, 32 * text.size()) << "bytes held for a " << text.size() << "-byte text";
 }
 
 TEST(SceneLocator, PointersWithEscapedTokensAndMissingPlaces) {
