@@ -38,6 +38,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, AppOptions& o) {
     app.add_option("--frames", o.maxFrames, "Quit after this many frames (benchmarks)");
     app.add_option("--skip-frames", o.skipFrames, "Frames left out of --report-frames (warm-up)")->capture_default_str();
     app.add_flag("--report-frames", o.reportFrames, "Print frame-time statistics at exit");
+    app.add_option("--frame-log", o.frameLog,
+                   "Write each frame's time (ms) and the resident memory (MiB) after it to FILE at exit, one frame a line "
+                   "(soak tests)")->type_name("FILE");
     app.add_flag("--vsync", o.vsync, "Wait for the display's refresh");
     app.add_flag("--continuous", o.continuous,
                  "Redraw the UI every frame even when idle (by default, with no input the UI redraws when a "

@@ -19,6 +19,7 @@ struct AppOptions {
     int skipFrames = 30;
     double scriptTimeout = 300.0;
     bool reportFrames = false;
+    std::string frameLog;              // per-frame time and resident memory, written at exit
     bool vsync = false;
     bool continuous = false;
     std::string lessonPath;

@@ -1,7 +1,10 @@
 #include "frame_times.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <numeric>
 
 namespace raylab::ui {
@@ -27,6 +30,24 @@ void FrameTimes::report() const {
     std::printf("per frame (means): trace %.2f ms, display pass %.2f ms, UI draw %.2f ms, swap %.2f ms, other %.2f ms\n",
                 mean(traceMs), mean(displayMs), mean(drawMs), mean(swapMs),
                 m - mean(traceMs) - mean(displayMs) - mean(drawMs) - mean(swapMs));
+}
+
+double residentMiB() {
+    std::ifstream statm("/proc/self/statm");
+    double pages = 0.0, resident = 0.0;
+    statm >> pages >> resident;
+    return resident * double(::sysconf(_SC_PAGESIZE)) / 1048576.0;
+}
+
+void FrameTimes::write(const std::string& path) const {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    if (!f) {
+        std::fprintf(stderr, "raylab: cannot write %s\n", path.c_str());
+        return;
+    }
+    for (std::size_t i = 0; i < ms.size(); ++i)
+        std::fprintf(f, "%.3f %.3f\n", ms[i], i < residentMiB.size() ? residentMiB[i] : 0.0);
+    std::fclose(f);
 }
 
 } // namespace raylab::ui

@@ -132,12 +132,14 @@ int ViewerLoop::run() {
             times_.displayMs.push_back(viewer_.stats().frameDisplayMs);
             times_.drawMs.push_back(drawMs);
             times_.swapMs.push_back((t - swapStart) * 1e3);
+            if (!options_.frameLog.empty()) times_.residentMiB.push_back(residentMiB());
         }
         pacer_.frameDone(t - last - idleSeconds, viewer_.stats().frameTraceMs * 1e-3);
         last = t;
         if (options_.maxFrames > 0 && frame + 1 >= options_.maxFrames) break;
     }
     if (options_.reportFrames) printReport();
+    if (!options_.frameLog.empty()) times_.write(options_.frameLog);
     return exitCode_;
 }
 

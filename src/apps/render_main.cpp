@@ -11,6 +11,7 @@
 #include "render/debug_views.h"
 #include "render/path_tracer.h"
 #include "render/progressive_render.h"
+#include "render/resume.h"
 #include "render/scene_stats.h"
 #include "render/tracer_variants.h"
 #include "scene/parameters.h"
@@ -130,6 +131,12 @@ int main(int argc, char** argv) {
     app.add_option("--tracer", entry, "Tracer entry point: fragment (fastest on llvmpipe) or compute")
         ->check(CLI::IsMember({"fragment", "compute"}));
     app.add_flag("-q,--quiet", quiet, "No progress line");
+    std::string resume;
+    app.add_option("--resume", resume,
+                   "Continue the render in this EXR (written by raylab-render) from its samples up to --spp, and "
+                   "write it back (or to -o) when done; the scene and settings must be those it was made with. "
+                   "Gives the image of one uninterrupted run, bit for bit, when the EXR stopped at a multiple of rpp")
+        ->type_name("OUT.exr");
     std::string blenderOut;
     app.add_option("--export-blender", blenderOut,
                    "Write a Blender 3.4 Python script that rebuilds the scene for Cycles, then exit "
@@ -166,6 +173,12 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
     const bool traceView = !debugView.empty();   // a name the check above accepted
+    if (!resume.empty() && (traceView || !inspectPixel.empty() || !blenderOut.empty())) {
+        std::cerr << "raylab-render: error: --resume continues an image render: it cannot be combined with "
+                     "--debug-view, --inspect or --export-blender\n";
+        return 2;
+    }
+    if (!resume.empty() && output.empty()) output = resume;
     const DebugView view = parseDebugView(debugView).value_or(DebugView::Beauty);
     if (traceView && !output.empty() && std::filesystem::path(output).extension() != ".exr") {
         std::cerr << "raylab-render: error: --debug-view writes raw values: the output must be .exr, not '" << output
@@ -183,6 +196,7 @@ int main(int argc, char** argv) {
 
     Scene scene;
     std::filesystem::path outPath;
+    ResumePoint resumePoint;
     try {
         scene = loadScene(scenePath, overrides);
         for (const std::string& w : scene.warnings) std::cerr << "raylab-render: warning: " << w << "\n";
@@ -195,6 +209,7 @@ int main(int argc, char** argv) {
         outPath = output.empty() ? std::filesystem::path(scene.sourcePath.stem().string() + suffix)
                                  : std::filesystem::path(output);
         checkWritable(outPath);
+        if (!resume.empty()) resumePoint = readResumePoint(resume, scene, entry);
     } catch (const std::exception& e) {
         std::cerr << e.what() << "\n";
         return 1;
@@ -216,6 +231,9 @@ int main(int argc, char** argv) {
         const TracerVariant variant = traceView ? variantFor(view) : TracerVariant::Beauty;
         tracer = TracerVariants(entry == "compute" ? TracerEntry::Compute : TracerEntry::Fragment).compile(variant, &scene);
         if (traceView) setTracedView(tracer->program(), view, debugBounce);
+        if (!resume.empty())
+            tracer->restoreAccumulation(resumePoint.image, resumePoint.meta.spp, resumePoint.meta.passes,
+                                        resumePoint.meta.nonFiniteSamples);
     } catch (const std::exception& e) {
         std::cerr << "raylab-render: error: " << e.what() << "\n";
         return 3;
@@ -272,11 +290,16 @@ int main(int argc, char** argv) {
     try {
         RenderMetadata meta;
         meta.spp = tracer->samplesPerPixel();
-        meta.renderSeconds = outcome.last.elapsed;
+        meta.renderSeconds = resumePoint.meta.renderSeconds + outcome.last.elapsed;
         meta.seed = scene.render.seed;
         meta.sceneFile = scene.sourcePath.string();
         meta.nonFiniteSamples = tracer->nonFiniteSamples();
         meta.sampler = formatValue(*findParameter("render.sampler"), std::int64_t(scene.render.sampler));
+        meta.targetSpp = std::uint64_t(scene.render.spp);
+        meta.rpp = scene.render.rpp;
+        meta.passes = tracer->passes();
+        meta.tracer = entry;
+        if (imageFormatFor(outPath) == ImageFormat::Exr) meta.settingsHash = settingsHash(scene);
         writeImage(outPath, tracer->readImage(), meta,
                    DisplayTransform{scene.render.exposure, scene.render.toneMap});
     } catch (const std::exception& e) {

@@ -140,9 +140,14 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
         r.sample = firstSample + std::uint64_t(i);
         r.truncated = q[1].w > 0.5f;
         const int n = std::min(int(q[0].w), maxRecords_);
-        for (int b = 0; b < n; ++b)
-            r.bounces.push_back(
-                decodeBounce(&bounces[(std::size_t(i) * std::size_t(maxRecords_) + std::size_t(b)) * glsl::PR_VEC4S]));
+        for (int b = 0; b < n; ++b) {
+            BounceRecord bounce =
+                decodeBounce(&bounces[(std::size_t(i) * std::size_t(maxRecords_) + std::size_t(b)) * glsl::PR_VEC4S]);
+            // The GPU traced camera-relative positions (render/camera_relative.h).
+            bounce.origin = glm::vec3(glm::dvec3(bounce.origin) + tracer_->origin());
+            bounce.position = glm::vec3(glm::dvec3(bounce.position) + tracer_->origin());
+            r.bounces.push_back(bounce);
+        }
     }
     return out;
 }

@@ -84,6 +84,11 @@ void writeImage(const fs::path& path, const Image& image, const RenderMetadata& 
     spec.attribute("raylab:scene", meta.sceneFile);
     spec.attribute("raylab:sampler", meta.sampler);
     spec.attribute("raylab:nonfinite_samples", int(std::min<std::uint64_t>(meta.nonFiniteSamples, 0x7fffffff)));
+    spec.attribute("raylab:target_spp", int(std::min<std::uint64_t>(meta.targetSpp, 0x7fffffff)));
+    spec.attribute("raylab:rpp", meta.rpp);
+    spec.attribute("raylab:passes", int(std::min<std::uint64_t>(meta.passes, 0x7fffffff)));
+    spec.attribute("raylab:tracer", meta.tracer);
+    spec.attribute("raylab:settings_hash", meta.settingsHash);
     if (format == ImageFormat::Exr) spec.attribute("compression", "zip");
 
     bool ok = out->open(tmp.string(), spec);
@@ -134,6 +139,49 @@ Image readImage(const fs::path& path) {
             image.rgba[i * 4 + size_t(c)] = v;
         }
     return image;
+}
+
+RenderMetadata readRenderMetadata(const fs::path& path) {
+    using namespace OIIO;
+    auto in = ImageInput::open(path.string());
+    if (!in) throw ImageIoError(path.string() + ": error: cannot read: " + OIIO::geterror());
+    const ImageSpec& spec = in->spec();
+    const auto missing = [&](const char* name, const char* type) {
+        return ImageIoError(path.string() + ": error: not an EXR that raylab-render wrote: no " + type + " attribute " +
+                            name);
+    };
+    const auto integer = [&](const char* name) -> std::uint64_t {
+        const ParamValue* p = spec.find_attribute(name, TypeDesc::INT);
+        if (!p) p = spec.find_attribute(name, TypeDesc::UINT);
+        if (!p) throw missing(name, "integer");
+        const long long v = p->type() == TypeDesc::UINT ? (long long)p->get<unsigned>() : (long long)p->get<int>();
+        if (v < 0) throw ImageIoError(path.string() + ": error: attribute " + name + " is negative");
+        return std::uint64_t(v);
+    };
+    const auto text = [&](const char* name) {
+        const ParamValue* p = spec.find_attribute(name, TypeDesc::STRING);
+        if (!p) throw missing(name, "string");
+        return std::string(p->get<ustring>().string());
+    };
+    if (lower(path.extension().string()) != ".exr" || std::string(in->format_name()) != "openexr")
+        throw ImageIoError(path.string() + ": error: not an EXR that raylab-render wrote: a " +
+                           std::string(in->format_name()) + " file");
+    RenderMetadata m;
+    m.version = text("raylab:version");
+    m.settingsHash = text("raylab:settings_hash");
+    m.spp = integer("raylab:spp");
+    m.seed = std::uint32_t(integer("raylab:seed"));
+    m.sceneFile = text("raylab:scene");
+    m.sampler = text("raylab:sampler");
+    m.nonFiniteSamples = integer("raylab:nonfinite_samples");
+    m.targetSpp = integer("raylab:target_spp");
+    m.rpp = int(integer("raylab:rpp"));
+    m.passes = integer("raylab:passes");
+    m.tracer = text("raylab:tracer");
+    const ParamValue* seconds = spec.find_attribute("raylab:render_seconds", TypeDesc::FLOAT);
+    if (!seconds) throw missing("raylab:render_seconds", "float");
+    m.renderSeconds = seconds->get<float>();
+    return m;
 }
 
 } // namespace raylab

@@ -17,13 +17,20 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// What an EXR records about its render (attributes raylab:*), enough to resume it (render/resume.h).
 struct RenderMetadata {
-    std::uint64_t spp = 0;
+    std::uint64_t spp = 0;                 // samples per pixel in the image
     double renderSeconds = 0.0;
     std::uint32_t seed = 0;
     std::string sceneFile;
     std::uint64_t nonFiniteSamples = 0;
     std::string sampler = "independent";   // render.sampler, as the scene writes it
+    std::uint64_t targetSpp = 0;           // render.spp of the run (stratified lays its strata out for it)
+    int rpp = 0;                           // samples per pass
+    std::uint64_t passes = 0;
+    std::string tracer;                    // entry point: fragment or compute
+    std::string settingsHash;              // of the scene and settings but spp and time (settingsHash())
+    std::string version = RAYLAB_VERSION;  // of the program that wrote it
 };
 
 struct DisplayTransform {
@@ -48,6 +55,10 @@ void writeImage(const std::filesystem::path& path, const Image& image, const Ren
 
 // Reads any format OpenImageIO knows as linear float RGBA (for tests and tools).
 Image readImage(const std::filesystem::path& path);
+
+// The raylab:* attributes of an EXR that raylab-render wrote. Throws ImageIoError naming the file
+// when it cannot be read or is not such an EXR (an attribute missing or of the wrong type, by name).
+RenderMetadata readRenderMetadata(const std::filesystem::path& path);
 
 // The 8-bit display value of a linear channel (exposure, tone curve, sRGB).
 std::uint8_t displayByte(float linear, const DisplayTransform& display);

@@ -1,6 +1,7 @@
 #include "render/gpu_scene.h"
 
 #include "io/image_io.h"
+#include "render/camera_relative.h"
 #include "render/environment_distribution.h"
 #include "render/light_list.h"
 #include "shaders/include/bindings.glsl"
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace raylab {
@@ -64,7 +66,7 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &triangleLightIndexBuffer_);
 }
 
-void GpuScene::upload(const Scene& scene) {
+void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
     geometry_ = buildSceneGeometry(scene);
     ++meshBvhBuilds_;
     uploadBuffer(geometryBuffers_[1], geometry_.meshNodes);
@@ -76,14 +78,14 @@ void GpuScene::upload(const Scene& scene) {
         for (const MipLevel& l : t.levels) texels.insert(texels.end(), l.texels.begin(), l.texels.end());
     uploadBuffer(textureBuffers_[0], std::move(texels));
     uploadMaterials(scene);
-    uploadTopLevel(scene);   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
+    uploadTopLevel(scene, origin);   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
     uploadBuffer(geometryBuffers_[3], geometry_.triangles);
 }
 
-void GpuScene::updateMaterials(const Scene& scene) {
+void GpuScene::updateMaterials(const Scene& scene, const glm::dvec3& origin) {
     uploadMaterials(scene);
     ++materialUpdates_;
-    uploadTopLevel(scene);   // the light list follows the materials' emission
+    uploadTopLevel(scene, origin);   // the light list follows the materials' emission
 }
 
 void GpuScene::uploadMaterials(const Scene& scene) {
@@ -120,17 +122,27 @@ void GpuScene::uploadMaterials(const Scene& scene) {
     uploadBuffer(textureBuffers_[1], std::move(info));
 }
 
-void GpuScene::updateTransforms(const Scene& scene) {
+void GpuScene::updateTransforms(const Scene& scene, const glm::dvec3& origin) {
     updateTopLevel(geometry_, scene);
     ++topLevelUpdates_;
-    uploadTopLevel(scene);
+    uploadTopLevel(scene, origin);
 }
 
-void GpuScene::uploadTopLevel(const Scene& scene) {
-    sphereCount_ = int(geometry_.spheres.size());
-    uploadBuffer(sphereBuffer_, geometry_.spheres);
-    // Emissive spheres and triangles, in world space, for next-event estimation.
-    LightList lights = buildLightList(scene, geometry_, materialRadiance_);
+void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
+    // The top level again over the camera-relative scene; the meshes' BVHs, triangles and vertices
+    // are in object space, the same for both, and are lent to it for the light list.
+    const Scene relative = cameraRelative(scene, origin);
+    relativeTop_.meshRoot = geometry_.meshRoot;
+    relativeTop_.meshBounds = geometry_.meshBounds;
+    updateTopLevel(relativeTop_, relative);
+    std::swap(relativeTop_.triangles, geometry_.triangles);
+    std::swap(relativeTop_.vertices, geometry_.vertices);
+    LightList lights = buildLightList(relative, relativeTop_, materialRadiance_);
+    std::swap(relativeTop_.triangles, geometry_.triangles);
+    std::swap(relativeTop_.vertices, geometry_.vertices);
+
+    sphereCount_ = int(relativeTop_.spheres.size());
+    uploadBuffer(sphereBuffer_, relativeTop_.spheres);
     lightCount_ = int(lights.spheres.size());
     triangleLightCount_ = int(lights.triangles.size());
     lightPower_ = std::move(lights.power);
@@ -141,8 +153,8 @@ void GpuScene::uploadTopLevel(const Scene& scene) {
     uploadBuffer(lightBuffer_, std::move(lights.spheres));
     uploadBuffer(triangleLightBuffer_, std::move(lights.triangles));
     uploadBuffer(lightAliasBuffer_, std::move(lights.aliasTable));
-    uploadBuffer(geometryBuffers_[0], geometry_.topNodes);
-    uploadBuffer(geometryBuffers_[2], geometry_.instances);
+    uploadBuffer(geometryBuffers_[0], relativeTop_.topNodes);
+    uploadBuffer(geometryBuffers_[2], relativeTop_.instances);
 }
 
 // The sky map as an RGBA32F texture, rows top first as in the file (v = 0 is straight up); a

@@ -1,6 +1,7 @@
 #pragma once
 // The scene's data on the GPU: std430 buffers of geometry and materials, bound at the points
-// shaders/include/scene_data.glsl declares. Needs a current GL context.
+// shaders/include/scene_data.glsl declares. Positions are uploaded relative to an origin (the
+// camera's position; render/camera_relative.h). Needs a current GL context.
 #include "accel/scene_geometry.h"
 #include "scene/scene.h"
 
@@ -19,12 +20,12 @@ public:
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;
 
-    void upload(const Scene& scene);
-    // Objects moved (transforms, sphere centres): rebuilds only the top-level BVH.
-    void updateTransforms(const Scene& scene);
+    void upload(const Scene& scene, const glm::dvec3& origin = glm::dvec3(0.0));
+    // Objects moved (transforms, sphere centres) or a new origin: rebuilds only the top-level BVH.
+    void updateTransforms(const Scene& scene, const glm::dvec3& origin = glm::dvec3(0.0));
     // Materials' values edited (not which textures they use, nor how many there are): re-uploads
     // the material records and the light list; geometry, BVHs, textures and the sky stay.
-    void updateMaterials(const Scene& scene);
+    void updateMaterials(const Scene& scene, const glm::dvec3& origin = glm::dvec3(0.0));
     void bind() const;   // binds every buffer to its binding point
 
     int sphereCount() const { return sphereCount_; }
@@ -34,6 +35,7 @@ public:
     const std::vector<double>& lightPower() const { return lightPower_; }
     float skyMapMax() const { return skyMapMax_; }    // largest channel of the sky map, 0 without
     float skyMapMeanWeight() const { return skyMapMeanWeight_; }   // of its sampling distribution
+    // In world space, for the CPU (picking, statistics); the GPU's top level is camera-relative.
     const SceneGeometry& geometry() const { return geometry_; }
     // How often the meshes' BVHs were built (every upload) and the top level alone was rebuilt
     // (updateTransforms): what an edit cost, for the viewer's tests and counters.
@@ -61,7 +63,8 @@ private:
     std::uint64_t topLevelUpdates_ = 0;
     std::uint64_t materialUpdates_ = 0;
     unsigned geometryBuffers_[5] = {};   // top nodes, mesh nodes, instances, triangles, vertices
-    void uploadTopLevel(const Scene& scene);
+    void uploadTopLevel(const Scene& scene, const glm::dvec3& origin);
+    SceneGeometry relativeTop_;   // spheres, instances and top nodes as uploaded (mesh data stays in geometry_)
     unsigned triangleLightBuffer_ = 0;   // emissive triangles
     unsigned lightAliasBuffer_ = 0;      // alias table over all lights, by power
     int triangleLightCount_ = 0;

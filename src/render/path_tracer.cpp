@@ -1,5 +1,6 @@
 #include "render/path_tracer.h"
 
+#include "render/camera_relative.h"
 #include "shaders/include/bindings.glsl"
 #include "shaders/include/camera.glsl"
 #include "shaders/include/sky.glsl"
@@ -79,12 +80,13 @@ void PathTracer::allocateImage(int width, int height) {
 }
 
 void PathTracer::setScene(const Scene& scene) {
-    gpuScene_.upload(scene);
+    origin_ = options_.cameraRelative ? glm::dvec3(scene.camera.position) : glm::dvec3(0.0);
+    gpuScene_.upload(scene, origin_);
     updateSettings(scene);
 }
 
 void PathTracer::updateMaterials(const Scene& scene) {
-    gpuScene_.updateMaterials(scene);
+    gpuScene_.updateMaterials(scene, origin_);
     updateSettings(scene);
 }
 
@@ -98,9 +100,14 @@ void PathTracer::updateSettings(const Scene& scene) {
     features_ = options_.specialise ? sceneFeatures(scene) : allFeatures();
     program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
 
+    if (options_.cameraRelative && needsRebase(scene.camera, origin_)) {
+        origin_ = glm::dvec3(scene.camera.position);
+        gpuScene_.updateTransforms(scene, origin_);
+    }
     const Camera& c = scene.camera;
-    const auto cam = glsl::cameraBasis(c.position, c.lookAt, c.up, c.fovY,
-                                       float(r.width) / float(r.height));
+    const glm::vec3 eye = relativePoint(c.position, origin_);
+    const glm::vec3 lookAt = relativePoint(c.lookAt, origin_);
+    const auto cam = glsl::cameraBasis(eye, lookAt, c.up, c.fovY, float(r.width) / float(r.height));
     const Sky& sky = scene.sky;
     glm::vec3 skyMax = sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom);
     if (sky.type == Sky::Type::Map) skyMax = glm::vec3(gpuScene_.skyMapMax());
@@ -121,7 +128,7 @@ void PathTracer::updateSettings(const Scene& scene) {
         .camLensRadius = c.aperture,
         .camForward = cam.forward,
         // focus_distance 0 means "at look_at": its distance along the view axis.
-        .camFocusDistance = c.focusDistance > 0.0f ? c.focusDistance : glm::dot(c.lookAt - c.position, cam.forward),
+        .camFocusDistance = c.focusDistance > 0.0f ? c.focusDistance : glm::dot(lookAt - eye, cam.forward),
         .skyColor = sky.color * sky.strength,
         // Ray-cone spread of one pixel (Ray Tracing Gems ch. 20, eq. 30).
         .camPixelSpread = std::atan(2.0f * cam.tanHalfFovY / float(r.height)),
@@ -143,7 +150,7 @@ void PathTracer::updateSettings(const Scene& scene) {
 }
 
 void PathTracer::updateTransforms(const Scene& scene) {
-    gpuScene_.updateTransforms(scene);
+    gpuScene_.updateTransforms(scene, origin_);
     reset();
 }
 
@@ -156,6 +163,25 @@ void PathTracer::reset() {
     rays_ = 0;
     boxTests_ = 0;
     triangleTests_ = 0;
+}
+
+void PathTracer::restoreAccumulation(const Image& image, std::uint64_t samplesPerPixel, std::uint64_t passes,
+                                     std::uint64_t nonFiniteSamples) {
+    if (image.width != width_ || image.height != height_)
+        throw std::invalid_argument("PathTracer::restoreAccumulation: the image is " + std::to_string(image.width) +
+                                    "x" + std::to_string(image.height) + ", the scene renders " +
+                                    std::to_string(width_) + "x" + std::to_string(height_));
+    reset();
+    // GL stores the bottom row first.
+    const size_t row = size_t(width_) * 4;
+    std::vector<float> raw(image.rgba.size());
+    for (int y = 0; y < height_; ++y)
+        std::copy_n(image.rgba.begin() + std::ptrdiff_t(size_t(height_ - 1 - y) * row), row,
+                    raw.begin() + std::ptrdiff_t(size_t(y) * row));
+    glTextureSubImage2D(accumTexture_, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, raw.data());
+    samplesPerPixel_ = samplesPerPixel;
+    passes_ = passes;
+    nonFinite_ = nonFiniteSamples;
 }
 
 void PathTracer::renderPass(int rpp) {

@@ -24,6 +24,7 @@ struct TracerOptions {
     int localSizeY = 8;   // compute only
     ShaderDefines extraDefines;   // names from kTracerDefines (tracer_defines.h), e.g. RAYLAB_DEBUG_VIEWS
     bool specialise = true;       // compile for the scene's features (false: all features on)
+    bool cameraRelative = true;   // upload positions relative to the camera (false: world, for tests)
 };
 
 class PathTracer {
@@ -33,7 +34,8 @@ public:
     PathTracer(const PathTracer&) = delete;
     PathTracer& operator=(const PathTracer&) = delete;
 
-    // Uploads the scene (geometry, materials, camera, sky, settings) and restarts accumulation.
+    // Uploads the scene (geometry, materials, camera, sky, settings) relative to the camera's
+    // position, which becomes origin(), and restarts accumulation.
     void setScene(const Scene& scene);
     // Objects moved (transforms, sphere centres; same meshes and materials): re-uploads only the
     // top level (the meshes' BVHs stay) and restarts accumulation.
@@ -43,10 +45,17 @@ public:
     void updateMaterials(const Scene& scene);
     // Camera, sky values and render settings changed, with the scene's buffers as uploaded:
     // selects the variant for the scene's features, uploads the parameter block, reallocates the
-    // image if its size changed, and restarts accumulation.
+    // image if its size changed, and restarts accumulation. A camera that left the region around
+    // origin() (needsRebase, render/camera_relative.h) moves the origin to it: the top level alone
+    // is uploaded again.
     void updateSettings(const Scene& scene);
     // Drops the accumulated samples; the next pass starts a new mean.
     void reset();
+    // Continues a mean of `samplesPerPixel` samples made with the settings now uploaded (a resumed
+    // render): `image` (top row first, as readImage gives it) becomes the accumulation, and the
+    // next pass adds samples from there on. The image's size must be the scene's.
+    void restoreAccumulation(const Image& image, std::uint64_t samplesPerPixel, std::uint64_t passes,
+                             std::uint64_t nonFiniteSamples);
     // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them.
     void renderPass(int rpp = 0);
     // Time slicing for interactive use (the viewer): one pass may be traced as horizontal bands and
@@ -78,6 +87,9 @@ public:
     std::size_t compiledVariants() const { return variants_.size(); }
     const SceneFeatures& features() const { return features_; }
     const GpuScene& gpuScene() const { return gpuScene_; }
+    // World position the GPU's coordinates are relative to (its (0, 0, 0)): add it to a position
+    // read back from the GPU to get a world position.
+    const glm::dvec3& origin() const { return origin_; }
 
 private:
     void allocateImage(int width, int height);
@@ -89,6 +101,7 @@ private:
     const ShaderProgram* program_ = nullptr;   // the variant for the current scene
     SceneFeatures features_;
     GpuScene gpuScene_;
+    glm::dvec3 origin_{0.0};
     unsigned accumTexture_ = 0;
     unsigned framebuffer_ = 0;
     unsigned vertexArray_ = 0;

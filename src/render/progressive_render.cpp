@@ -11,8 +11,10 @@ RenderOutcome renderProgressively(PathTracer& tracer, const RenderSettings& sett
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const std::uint64_t target = std::uint64_t(settings.spp);
+    const std::uint64_t startSpp = tracer.samplesPerPixel();   // above 0 for a resumed render
     RenderOutcome out;
     out.last.targetSpp = target;
+    out.last.spp = startSpp;
     while (tracer.samplesPerPixel() < target) {
         if (stop && stop->load()) {
             out.interrupted = true;
@@ -29,7 +31,7 @@ RenderOutcome renderProgressively(PathTracer& tracer, const RenderSettings& sett
             p.mpathsPerSecond = double(tracer.pathsTraced()) / p.elapsed * 1e-6;
             p.mraysPerSecond = double(tracer.raysTraced()) / p.elapsed * 1e-6;
         }
-        const double bySpp = p.elapsed / double(p.spp) * double(target - p.spp);
+        const double bySpp = p.elapsed / double(p.spp - startSpp) * double(target - p.spp);
         p.eta = settings.timeBudget > 0.0 ? std::min(bySpp, std::max(0.0, settings.timeBudget - p.elapsed))
                                           : bySpp;
         if (onPass) onPass(p);

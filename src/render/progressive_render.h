@@ -24,7 +24,8 @@ struct RenderOutcome {
     bool interrupted = false;      // stopped by the stop flag before reaching the target
 };
 
-// Passes of settings.rpp samples (the last one shortened to land exactly on settings.spp).
+// Passes of settings.rpp samples (the last one shortened to land exactly on settings.spp), from
+// the samples the tracer holds (0, or those of a resumed render: PathTracer::restoreAccumulation).
 // settings.timeBudget > 0 also stops after that many seconds (after the pass that crosses it).
 RenderOutcome renderProgressively(PathTracer& tracer, const RenderSettings& settings,
                                   const std::atomic<bool>* stop = nullptr,

@@ -43,7 +43,7 @@ public:
     bool run() {
         if (startsWithBom(t_)) pos_ = cursor_ = 3;   // the BOM takes no column
         if (!skipSpace()) return false;
-        if (!value("", SourcePos{}, 0)) return false;
+        if (!value(kNoParent, {}, SourcePos{}, 0)) return false;
         if (!skipSpace()) return false;
         return pos_ == t_.size();
     }
@@ -85,25 +85,32 @@ private:
         return cursorPos_;
     }
 
-    void record(const std::string& pointer, SourcePos key, std::size_t valueOffset) {
-        ValueLocation loc{at(valueOffset), key};
-        auto [it, inserted] = out_.locations_.emplace(pointer, loc);
-        if (!inserted) out_.duplicates_.push_back(Duplicate{pointer, it->second.key, key});
+    // The node of the value at valueOffset; a repeated key's value is recorded as a duplicate and
+    // gets a node of its own that find() never returns.
+    std::uint32_t record(std::uint32_t parent, std::string&& token, SourcePos key, std::size_t valueOffset) {
+        const auto node = static_cast<std::uint32_t>(out_.nodes_.size());
+        out_.nodes_.push_back(Node{ValueLocation{at(valueOffset), key}, parent, nullptr});
+        if (parent == kNoParent) return node;
+        auto [it, inserted] = out_.children_.emplace(ChildKey{parent, std::move(token)}, node);
+        out_.nodes_[node].token = &it->first.token;
+        if (!inserted)
+            out_.duplicates_.push_back(Duplicate{out_.pointerOf(it->second), out_.nodes_[it->second].location.key, key});
+        return node;
     }
 
-    bool value(const std::string& pointer, SourcePos key, int depth) {
+    bool value(std::uint32_t parent, std::string&& token, SourcePos key, int depth) {
         if (atEnd()) return false;
         if (depth > int(scenefmt::kMaxJsonDepth)) return false;   // the parser refuses it too
-        record(pointer, key, pos_);
+        const std::uint32_t node = record(parent, std::move(token), key, pos_);
         switch (peek()) {
-        case '{': return object(pointer, depth);
-        case '[': return array(pointer, depth);
+        case '{': return object(node, depth);
+        case '[': return array(node, depth);
         case '"': return string(nullptr);
         default: return scalar();
         }
     }
 
-    bool object(const std::string& pointer, int depth) {
+    bool object(std::uint32_t node, int depth) {
         ++pos_;  // '{'
         if (!skipSpace()) return false;
         if (peek() == '}') {
@@ -118,7 +125,7 @@ private:
             if (!skipSpace() || peek() != ':') return false;
             ++pos_;
             if (!skipSpace()) return false;
-            if (!value(pointer + "/" + escapeToken(name), keyPos, depth + 1)) return false;
+            if (!value(node, std::move(name), keyPos, depth + 1)) return false;
             if (!skipSpace()) return false;
             if (peek() == ',') {
                 ++pos_;
@@ -132,7 +139,7 @@ private:
         }
     }
 
-    bool array(const std::string& pointer, int depth) {
+    bool array(std::uint32_t node, int depth) {
         ++pos_;  // '['
         if (!skipSpace()) return false;
         if (peek() == ']') {
@@ -141,7 +148,7 @@ private:
         }
         for (std::size_t index = 0;; ++index) {
             if (!skipSpace()) return false;
-            if (!value(pointer + "/" + std::to_string(index), SourcePos{}, depth + 1)) return false;
+            if (!value(node, std::to_string(index), SourcePos{}, depth + 1)) return false;
             if (!skipSpace()) return false;
             if (peek() == ',') {
                 ++pos_;
@@ -250,9 +257,45 @@ JsonLocator::JsonLocator(std::string_view text) : text_(text) {
     complete_ = scanner.run();
 }
 
+std::size_t JsonLocator::ChildKeyHash::operator()(const ChildKey& k) const noexcept {
+    return std::hash<std::string>{}(k.token) ^ (std::size_t(k.parent) * 0x9E3779B97F4A7C15ull);
+}
+
+// RFC 6901: tokens separated by '/', with "~1" for '/' and "~0" for '~'.
 const ValueLocation* JsonLocator::find(std::string_view pointer) const {
-    auto it = locations_.find(std::string(pointer));
-    return it == locations_.end() ? nullptr : &it->second;
+    if (nodes_.empty()) return nullptr;
+    if (pointer.empty()) return &nodes_[0].location;
+    if (pointer.front() != '/') return nullptr;
+    std::uint32_t node = 0;
+    ChildKey key{0, {}};
+    while (!pointer.empty()) {
+        pointer.remove_prefix(1);   // '/'
+        const std::size_t end = std::min(pointer.find('/'), pointer.size());
+        key.parent = node;
+        key.token.clear();
+        for (std::size_t i = 0; i < end; ++i) {
+            if (pointer[i] == '~' && i + 1 < end && (pointer[i + 1] == '0' || pointer[i + 1] == '1')) {
+                key.token += pointer[i + 1] == '0' ? '~' : '/';
+                ++i;
+            } else {
+                key.token += pointer[i];
+            }
+        }
+        const auto it = children_.find(key);
+        if (it == children_.end()) return nullptr;
+        node = it->second;
+        pointer.remove_prefix(end);
+    }
+    return &nodes_[node].location;
+}
+
+std::string JsonLocator::pointerOf(std::uint32_t node) const {
+    std::vector<const std::string*> tokens;
+    for (; node != kNoParent && nodes_[node].parent != kNoParent; node = nodes_[node].parent)
+        tokens.push_back(nodes_[node].token);
+    std::string out;
+    for (auto t = tokens.rbegin(); t != tokens.rend(); ++t) out += "/" + escapeToken(**t);
+    return out;
 }
 
 SourcePos JsonLocator::position(std::size_t byteOffset) const {

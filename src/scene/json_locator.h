@@ -3,8 +3,10 @@
 // semantic errors ("radius must be > 0") would have no line:column. JsonLocator scans the same text
 // once and maps the JSON pointer of every value ("/objects/2/radius", RFC 6901 escaping) to where the
 // value starts and, for object members, where its key starts. It understands // and /* */ comments
-// (as nlohmann's ignore_comments does) and a leading UTF-8 byte-order mark.
+// (as nlohmann's ignore_comments does) and a leading UTF-8 byte-order mark. Values are kept as a tree
+// of (parent, token) nodes, so its memory grows with the text, not with the keys' depth times length.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -45,16 +47,34 @@ public:
     const std::vector<Duplicate>& duplicates() const { return duplicates_; }
 
     bool complete() const { return complete_; }
-    std::size_t size() const { return locations_.size(); }
+    std::size_t size() const { return nodes_.size(); }
 
     // RFC 6901: '~' -> "~0", '/' -> "~1".
     static std::string escapeToken(std::string_view token);
 
 private:
     class Scanner;
+    // A child's address: its parent node and its token (an object key, decoded, or an array index).
+    struct ChildKey {
+        std::uint32_t parent;
+        std::string token;
+        bool operator==(const ChildKey&) const = default;
+    };
+    struct ChildKeyHash {
+        std::size_t operator()(const ChildKey& k) const noexcept;
+    };
+    struct Node {
+        ValueLocation location;
+        std::uint32_t parent;        // kNoParent for the root
+        const std::string* token;    // the key in children_ (stable: unordered_map nodes never move)
+    };
+    static constexpr std::uint32_t kNoParent = 0xffffffffu;
+    std::string pointerOf(std::uint32_t node) const;
+
     std::string text_;
     std::vector<std::size_t> lineStarts_;
-    std::unordered_map<std::string, ValueLocation> locations_;
+    std::vector<Node> nodes_;                                        // nodes_[0] is the root
+    std::unordered_map<ChildKey, std::uint32_t, ChildKeyHash> children_;   // first occurrence wins
     std::vector<Duplicate> duplicates_;
     bool complete_ = false;
 };

@@ -1,5 +1,6 @@
 #include "scene/scene_keys.h"
 
+#include "scene/json_parse.h"
 #include "scene/json_path.h"
 #include "scene/scene_builder.h"
 #include "scene/scene_error.h"
@@ -34,11 +35,16 @@ double number(const nlohmann::json& j, std::string_view key) {
     return j.get<double>();
 }
 
-// A JSON value, or a bare word taken as a string (aces, textures/glow.png).
-Json textValue(std::string_view text) {
-    Json j = Json::parse(text, nullptr, false);
-    if (j.is_discarded()) j = std::string(text);
-    return j;
+// A JSON value, or a bare word taken as a string (aces, textures/glow.png). Parsed by the scene
+// file's parser, so its depth limit holds here too: a value nested too deeply is an error at its
+// character, not a bare word.
+Json textValue(std::string_view text, std::string_view key) {
+    scenefmt::ParseResult parsed = scenefmt::parseJson(text);
+    if (parsed.ok) return std::move(parsed.doc);
+    if (parsed.errorPath)
+        throw EditError(std::string(key) + ": " + parsed.reason + " (the value's character " +
+                        std::to_string(parsed.errorOffset + 1) + ")");
+    return std::string(text);
 }
 
 // Runs one of the loader's checks; its complaint becomes an EditError at the document path.
@@ -77,8 +83,8 @@ SceneParam sceneTableKey(const ParamSpec& p, std::string_view key) {
 SceneParam skyMapKey(std::string_view key) {
     SceneParam k;
     k.key = std::string(key);
-    k.setText = [](Scene& sc, std::string_view text) {
-        const Json root = {{"sky", {{"map", textValue(text)}}}};
+    k.setText = [key = k.key](Scene& sc, std::string_view text) {
+        const Json root = {{"sky", {{"map", textValue(text, key)}}}};
         asLoaderChecks([&] { scenefmt::readSkyMap(root, sc); });
     };
     return k;
@@ -112,11 +118,11 @@ SceneParam materialKey(const Scene& scene, std::string_view key, std::string_vie
         if (slot.key != field) continue;
         SceneParam k;
         k.key = std::string(key);
-        k.setText = [&slot, i](Scene& sc, std::string_view text) {
+        k.setText = [&slot, i, key = k.key](Scene& sc, std::string_view text) {
             Material m = sc.materials.at(i);
             const JsonPath at = JsonPath{}.key("materials").key(m.name).key(slot.key);
             asLoaderChecks([&] {
-                scenefmt::readTextureSlot(slot, textValue(text), at, sc.sourcePath.parent_path(), sc.textures, m);
+                scenefmt::readTextureSlot(slot, textValue(text, key), at, sc.sourcePath.parent_path(), sc.textures, m);
             });
             sc.materials.at(i) = std::move(m);
         };
@@ -131,8 +137,8 @@ SceneParam materialKey(const Scene& scene, std::string_view key, std::string_vie
 SceneParam objectMaterialKey(std::string_view key, bool mesh, std::size_t i, const JsonPath& at) {
     SceneParam k;
     k.key = std::string(key);
-    k.setText = [mesh, i, at](Scene& sc, std::string_view text) {
-        const Json v = textValue(text);
+    k.setText = [mesh, i, at, key = k.key](Scene& sc, std::string_view text) {
+        const Json v = textValue(text, key);
         std::vector<std::string_view> names;
         for (const Material& m : sc.materials)
             if (!m.fromGltf) names.push_back(m.name);
@@ -252,9 +258,8 @@ std::vector<std::string> sceneKeys(const Scene& scene) {
 }
 
 ParamValue parseParamValue(const ValueSpec& spec, std::string_view text) {
-    nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-    if (j.is_discarded()) j = std::string(text);   // a bare word: an enum name
     const std::string key(spec.key);
+    nlohmann::json j = textValue(text, key);   // a bare word: an enum name
     ParamValue value;
     switch (spec.type) {
     case ParamType::Bool:

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <malloc.h>
+
 #include <string>
 
 using namespace raylab;
@@ -144,4 +146,33 @@ TEST(SceneLocator, BrokenInputKeepsWhatWasFoundAndNeverCrashes) {
     const JsonLocator d(deep);
     EXPECT_FALSE(d.complete());
     EXPECT_EQ(valueAt(d, "/0/0"), "1:3");
+}
+
+// A long key over many values: each value's place is a (parent, token) node, so the locator's heap
+// grows with the text: about 130 bytes a value (a node and its hash entry), here 7 characters each.
+// Storing a full pointer string per value took key length × value count (here 200 MB for a 139 kB
+// text). glibc's mallinfo2 counts the bytes; a sanitizer's allocator reports none.
+TEST(SceneLocator, MemoryIsLinearInTheTextForLongKeysOverManyValues) {
+    const std::string key(10000, 'k');
+    std::string text = "{\"" + key + "\": [";
+    for (int i = 0; i < 20000; ++i) text += (i ? ", " : "") + std::to_string(i);
+    text += "]}";
+    const std::size_t before = mallinfo2().uordblks;
+    const JsonLocator l(text);
+    const std::size_t used = mallinfo2().uordblks - before;
+    if (used == 0) GTEST_SKIP() << "the allocator reports no usage (sanitizer build)";
+    ASSERT_TRUE(l.complete());
+    EXPECT_EQ(l.size(), 20002u);
+    EXPECT_EQ(valueAt(l, "/" + key + "/19999"), "1:" + std::to_string(text.size() - 6));
+    EXPECT_LT(used, 32 * text.size()) << "bytes held for a " << text.size() << "-byte text";
+}
+
+TEST(SceneLocator, PointersWithEscapedTokensAndMissingPlaces) {
+    const JsonLocator l(R"({"a/b": {"~c": [0, {"": 5}]}})");
+    EXPECT_EQ(valueAt(l, ""), "1:1");
+    EXPECT_EQ(valueAt(l, "/a~1b/~0c/1/"), "1:25");
+    EXPECT_EQ(valueAt(l, "/a/b"), "-");
+    EXPECT_EQ(valueAt(l, "a~1b"), "-");
+    EXPECT_EQ(valueAt(l, "/a~1b/~0c/2"), "-");
+    EXPECT_EQ(valueAt(l, "/a~1b/~0c/0/x"), "-");
 }

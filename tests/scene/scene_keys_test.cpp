@@ -70,6 +70,24 @@ TEST(SceneKeys, RejectsBadKeysAndValuesWithoutChangingTheScene) {
     EXPECT_EQ(sceneToJson(s), sceneToJson(before));
 }
 
+// Live values go through the scene file's parser: its depth limit holds, and a value nested past it
+// is an error naming the key and the character, for table keys and text keys alike.
+TEST(SceneKeys, DeeplyNestedValuesAreLocatedErrorsNotCrashes) {
+    Scene s = twoSpheres();
+    const Scene before = s;
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    for (const char* key : {"camera.fov", "materials.red.albedo", "render.tone_map", "objects.0.material",
+                            "materials.red.albedo_texture", "sky.map"}) {
+        const std::string e = errorOf(s, key, deep);
+        EXPECT_NE(e.find("nested too deeply"), std::string::npos) << key << ": " << e.substr(0, 200);
+        EXPECT_NE(e.find("character 65"), std::string::npos) << key << ": " << e.substr(0, 200);
+        EXPECT_LT(e.size(), 300u) << key;
+    }
+    EXPECT_EQ(s.camera.fovY, before.camera.fovY);
+    EXPECT_EQ(s.materials[0].albedo, before.materials[0].albedo);
+    EXPECT_EQ(errorOf(s, "camera.fov", "[[[1]]]").find("nested"), std::string::npos) << "shallow values are plain type errors";
+}
+
 TEST(SceneKeys, BooleanKeysTakeTrueAndFalse) {
     Scene s = twoSpheres();
     for (const ParamSpec& p : sceneParameters()) {

@@ -20,8 +20,8 @@ struct BatchStats {
     std::vector<double> mean, varianceOfMean;
 };
 
-inline BatchStats renderBatches(Scene scene, int batches) {
-    PathTracer tracer;
+inline BatchStats renderBatches(Scene scene, int batches, TracerOptions options = {}) {
+    PathTracer tracer(options);
     std::vector<double> sum, sum2;
     for (int b = 0; b < batches; ++b) {
         scene.render.seed = 1000u + std::uint32_t(b) * 7919u;

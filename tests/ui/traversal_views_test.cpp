@@ -4,6 +4,7 @@
 #include "app/viewer.h"
 
 #include "accel/cpu_traversal.h"
+#include "render/camera_relative.h"
 #include "render/render_helpers.h"
 #include "render/scene_stats.h"
 #include "shaders/include/camera.glsl"
@@ -109,11 +110,16 @@ TEST_F(TraversalViewsTest, HeatMapsCountTheTestsOfTheCpuTraversalForTheSameRay) 
     const SceneGeometry& g = *viewer->geometry();
     ASSERT_GT(g.topNodes.size(), 1u);
     ASSERT_FALSE(viewer->tracer()->features().linearTopLevel);
+    // The GPU traverses the top level built over the camera-relative scene (render/gpu_scene.cpp,
+    // render/camera_relative.h): mirror that one.
+    const Scene relative = cameraRelative(s, viewer->tracer()->origin());
+    SceneGeometry uploaded = g;
+    updateTopLevel(uploaded, relative);
     int mismatches = 0;
     std::uint64_t boxSum = 0, triangleSum = 0, boxMax = 0;
     for (int y = 0; y < s.render.height; ++y)
         for (int x = 0; x < s.render.width; ++x) {
-            const CpuSample c = cpuSample(s, g, x, y);
+            const CpuSample c = cpuSample(relative, uploaded, x, y);
             const glm::vec3 v = heat.rgb(x, y);
             if (v.x != float(c.boxes) || v.y != float(c.triangles)) {
                 if (++mismatches <= 5)

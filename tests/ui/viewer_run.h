@@ -47,6 +47,7 @@ struct ViewerOptions {
     float scale = 0.5f;               // resolution scale of the traced image
     int windowWidth = 1280, windowHeight = 800;
     int scriptTimeout = 240;          // seconds
+    std::string extraArgs;            // appended to the command line as they are
 };
 
 // Runs the viewer with `script` (at scale 0.5, 320 x 180 traced for the default scene, in a
@@ -60,7 +61,7 @@ inline ViewerRun runViewer(const ::raylab::test::Xvfb& x, const fs::path& dir, c
                             "' --ini '' --scale " + std::to_string(options.scale) + " --window " +
                             std::to_string(options.windowWidth) + " " + std::to_string(options.windowHeight) + " --script '" +
                             (dir / "script.txt").string() + "' --script-timeout " + std::to_string(options.scriptTimeout) +
-                            " > '" + (dir / "log.txt").string() + "' 2>&1";
+                            " " + options.extraArgs + " > '" + (dir / "log.txt").string() + "' 2>&1";
     ViewerRun run;
     const int raw = std::system(cmd.c_str());
     run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -1,0 +1,51 @@
+#include "render/camera_relative.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace raylab {
+namespace {
+
+// scene/transform.cpp's T · Rz · Ry · Rx · S applied to a point, in double.
+glm::dvec3 transformPoint(const Transform& t, const glm::dvec3& p) {
+    const glm::dmat4 id(1.0);
+    const glm::dvec3 deg(t.rotation);
+    const glm::dmat4 r = glm::rotate(id, glm::radians(deg.z), glm::dvec3(0, 0, 1)) *
+                         glm::rotate(id, glm::radians(deg.y), glm::dvec3(0, 1, 0)) *
+                         glm::rotate(id, glm::radians(deg.x), glm::dvec3(1, 0, 0));
+    return glm::dvec3(t.translation) + glm::dvec3(r * glm::dvec4(p * glm::dvec3(t.scale), 1.0));
+}
+
+} // namespace
+
+glm::vec3 relativePoint(const glm::vec3& world, const glm::dvec3& origin) {
+    return glm::vec3(glm::dvec3(world) - origin);
+}
+
+Scene cameraRelative(const Scene& scene, const glm::dvec3& origin) {
+    Scene out;
+    out.sourcePath = scene.sourcePath;
+    out.render = scene.render;
+    out.sky = scene.sky;
+    out.materials = scene.materials;
+    out.meshes = scene.meshes;
+    out.camera = scene.camera;
+    out.camera.position = relativePoint(scene.camera.position, origin);
+    out.camera.lookAt = relativePoint(scene.camera.lookAt, origin);
+    out.spheres.reserve(scene.spheres.size());
+    for (const Sphere& s : scene.spheres) {
+        Sphere r = s;
+        r.center = glm::vec3(transformPoint(s.transform, glm::dvec3(s.center)) - origin);
+        r.radius = s.radius * s.transform.scale.x;
+        r.transform = Transform{};
+        out.spheres.push_back(r);
+    }
+    for (Mesh& m : out.meshes) m.transform.translation = relativePoint(m.transform.translation, origin);
+    return out;
+}
+
+bool needsRebase(const Camera& camera, const glm::dvec3& origin) {
+    const double view = glm::length(glm::dvec3(camera.lookAt) - glm::dvec3(camera.position));
+    return glm::length(glm::dvec3(camera.position) - origin) > kRebaseViews * view;
+}
+
+} // namespace raylab
