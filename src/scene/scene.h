@@ -42,6 +42,7 @@ enum class SamplerKind {
     Independent = 0,   // hashed PCG: every number independent
     Stratified = 1,    // jittered strata per dimension, in a per-pixel random order
     Sobol = 2,         // Owen-scrambled Sobol (Burley 2020)
+    ZSobol = 3,        // one Sobol sequence over Morton-ordered pixels (Ahmed & Wonka 2020)
 };
 
 struct RenderSettings {

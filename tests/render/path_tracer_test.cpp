@@ -33,7 +33,7 @@ TEST_F(PathTracerTest, ClosedFurnaceConvergesToEmissionOverOneMinusAlbedo) {
     // (geometric series of bounces). With Russian roulette on, the mean over pixels (independent
     // estimates) must be within 3 standard errors of it.
     // Every sampler: each pixel has its own scrambles, so pixels stay independent estimates.
-    for (const char* sampler : {"independent", "stratified", "sobol"}) {
+    for (const char* sampler : {"independent", "stratified", "sobol", "zsobol"}) {
         const Scene scene = loadScene(test::scenePath("closed_furnace.json"), {std::string("render.sampler=") + sampler});
         const Material& m = scene.materials[size_t(scene.spheres.at(0).material)];
         ASSERT_LT(scene.render.rrDepth, scene.render.maxBounces) << "the test should exercise roulette";
