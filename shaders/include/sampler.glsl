@@ -137,16 +137,14 @@ RL_FN float sobolSample1D(uvec2 pixel, uint index, uint dim, uint seed) {
 // 2020, "Screen-space blue-noise diffusion of Monte Carlo sampling error via hierarchical ordering
 // of pixels", as pbrt-v4's ZSobolSampler), so neighbouring pixels take complementary strata ---
 
-// The 24 permutations of a base-4 digit, entry k in bits 2k and 2k + 1.
-#define RAYLAB_ZSOBOL_PERMUTATIONS \
-    0xe4u, 0xb4u, 0xd8u, 0x78u, 0x6cu, 0x9cu, 0xe1u, 0xb1u, 0xc9u, 0x39u, 0x2du, 0x8du, \
-    0xc6u, 0x36u, 0xd2u, 0x72u, 0x4eu, 0x1eu, 0x27u, 0x87u, 0x1bu, 0x4bu, 0x63u, 0x93u
-
-#ifdef __cplusplus
-inline constexpr uint ZSOBOL_PERMUTATIONS[24] = {RAYLAB_ZSOBOL_PERMUTATIONS};
-#else
-const uint ZSOBOL_PERMUTATIONS[24] = uint[24](RAYLAB_ZSOBOL_PERMUTATIONS);
-#endif
+// Permutation p of the 24 permutations of a base-4 digit (pbrt-v4's table), entry k in bits 2k and
+// 2k + 1, four a word; picked by selects, as a dynamically indexed constant array is a gather per
+// lane on llvmpipe.
+RL_FN uint zsobolPermutation(uint p) {
+    uint w = p < 12u ? (p < 4u ? 0x78d8b4e4u : p < 8u ? 0xb1e19c6cu : 0x8d2d39c9u)
+                     : (p < 16u ? 0x72d236c6u : p < 20u ? 0x87271e4eu : 0x93634b1bu);
+    return (w >> (8u * (p & 3u))) & 0xffu;
+}
 
 // A pixel's samples are the 2^ZSOBOL_LOG2 consecutive indices after its Morton code; samples past
 // that many start a new round with new permutations and scrambles.
@@ -197,7 +195,7 @@ RL_FN uint zsobolIndex(uvec2 pixel, uint index, uint log2Samples, uint salt) {
     for (uint shift = odd; shift < 24u; shift += 2u) {
         uint digit = shiftRight64(mortonIndex, shift).x & 3u;
         uint p = zsobolDigitHash(shiftRight64(mortonIndex, shift + 2u), salt) % 24u;
-        result |= ((ZSOBOL_PERMUTATIONS[p] >> (2u * digit)) & 3u) << shift;
+        result |= ((zsobolPermutation(p) >> (2u * digit)) & 3u) << shift;
     }
     if (odd != 0u) result |= (mortonIndex.x & 1u) ^ (zsobolDigitHash(shiftRight64(mortonIndex, 1u), salt) & 1u);
     return result;

@@ -135,6 +135,19 @@ TEST(Sampler, SobolIsAZeroTwoNetInEachPixel) {
             }
 }
 
+TEST(Sampler, ZSobolPermutesDigitsByAllTwentyFourPermutations) {
+    std::vector<uint> seen;
+    for (uint p = 0; p < 24; ++p) {
+        const uint perm = zsobolPermutation(p);
+        uint digits = 0;
+        for (uint k = 0; k < 4; ++k) digits |= 1u << ((perm >> (2u * k)) & 3u);
+        EXPECT_EQ(digits, 0xfu) << "permutation " << p << " is a bijection of 0-3";
+        seen.push_back(perm);
+    }
+    std::sort(seen.begin(), seen.end());
+    EXPECT_EQ(std::unique(seen.begin(), seen.end()), seen.end()) << "each permutation once";
+}
+
 TEST(Sampler, ZSobolPixelsOfAQuadTakeComplementaryStrata) {
     // At 1 spp zsobol's 2 × 2 pixel quads hold 4 consecutive indices of a (0,2)-sequence: the
     // four points of a quad fall one in each quadrant of the unit square (Ahmed & Wonka 2020, §4).
