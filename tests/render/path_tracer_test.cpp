@@ -32,7 +32,8 @@ TEST_F(PathTracerTest, ClosedFurnaceConvergesToEmissionOverOneMinusAlbedo) {
     // Inside a closed sphere of albedo a emitting Le everywhere, radiance is Le / (1 − a)
     // (geometric series of bounces). With Russian roulette on, the mean over pixels (independent
     // estimates) must be within 3 standard errors of it.
-    // Every sampler: each pixel has its own scrambles, so pixels stay independent estimates.
+    // Every sampler: pixels are independent estimates, except zsobol's, which share one sequence
+    // and are negatively correlated, so the standard error over pixels overestimates the mean's.
     for (const char* sampler : {"independent", "stratified", "sobol", "zsobol"}) {
         const Scene scene = loadScene(test::scenePath("closed_furnace.json"), {std::string("render.sampler=") + sampler});
         const Material& m = scene.materials[size_t(scene.spheres.at(0).material)];
