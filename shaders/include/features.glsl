@@ -66,6 +66,7 @@
 #define RAYLAB_SAMPLER_INDEPENDENT 0   // hashed PCG streams, numbers taken in call order
 #define RAYLAB_SAMPLER_STRATIFIED 1    // jittered strata in a per-pixel random order
 #define RAYLAB_SAMPLER_SOBOL 2         // Owen-scrambled Sobol (Burley 2020)
+#define RAYLAB_SAMPLER_ZSOBOL 3        // Sobol over Morton-ordered pixels (Ahmed & Wonka 2020)
 #ifndef RAYLAB_SAMPLER
 #define RAYLAB_SAMPLER RAYLAB_SAMPLER_INDEPENDENT
 #endif

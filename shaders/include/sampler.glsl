@@ -133,6 +133,96 @@ RL_FN float sobolSample1D(uvec2 pixel, uint index, uint dim, uint seed) {
     return sampleUnitFloat(nestedUniformScramble(sobolBits(i, dim & 3u), hashCombine(h.y, dim & 3u)));
 }
 
+// --- zsobol: one Owen-scrambled Sobol sequence over all pixels in Morton order (Ahmed & Wonka
+// 2020, "Screen-space blue-noise diffusion of Monte Carlo sampling error via hierarchical ordering
+// of pixels", as pbrt-v4's ZSobolSampler), so neighbouring pixels take complementary strata ---
+
+// Permutation p of the 24 permutations of a base-4 digit (pbrt-v4's table), entry k in bits 2k and
+// 2k + 1, four a word; picked by selects, as a dynamically indexed constant array is a gather per
+// lane on llvmpipe.
+RL_FN uint zsobolPermutation(uint p) {
+    uint w = p < 12u ? (p < 4u ? 0x78d8b4e4u : p < 8u ? 0xb1e19c6cu : 0x8d2d39c9u)
+                     : (p < 16u ? 0x72d236c6u : p < 20u ? 0x87271e4eu : 0x93634b1bu);
+    return (w >> (8u * (p & 3u))) & 0xffu;
+}
+
+// A pixel's samples are the 2^ZSOBOL_LOG2 consecutive indices after its Morton code; samples past
+// that many start a new round with new permutations and scrambles.
+RL_FN uint zsobolLog2Samples(uint count) {
+    return count <= 1u ? 0u : min(uint(findMSB(count - 1u)) + 1u, 20u);
+}
+
+// The bits of x and y, 16 each, interleaved (x in the even bits).
+RL_FN uint mortonSpread(uint v) {
+    v &= 0xffffu;
+    v = (v | (v << 8u)) & 0x00ff00ffu;
+    v = (v | (v << 4u)) & 0x0f0f0f0fu;
+    v = (v | (v << 2u)) & 0x33333333u;
+    return (v | (v << 1u)) & 0x55555555u;
+}
+RL_FN uint mortonEncode(uvec2 pixel) { return mortonSpread(pixel.x) | (mortonSpread(pixel.y) << 1u); }
+
+// murmur3's finaliser.
+RL_FN uint mix32(uint h) {
+    h ^= h >> 16u; h *= 0x85ebca6bu; h ^= h >> 13u; h *= 0xc2b2ae35u;
+    return h ^ (h >> 16u);
+}
+
+// (lo, hi) >> shift for a 64-bit value as two words, shift < 64.
+RL_FN uvec2 shiftRight64(uvec2 v, uint shift) {
+    if (shift == 0u) return v;
+    if (shift >= 32u) return uvec2(v.y >> (shift - 32u), 0u);
+    return uvec2((v.x >> shift) | (v.y << (32u - shift)), v.y >> shift);
+}
+
+// A hash of the digits above one of the Morton index (a 64-bit value as (lo, hi)); the words are
+// folded before one mix, as two nodes of the quadtree sharing a permutation costs nothing.
+RL_FN uint zsobolDigitHash(uvec2 higherDigits, uint salt) {
+    return mix32(higherDigits.x ^ (higherDigits.y * 0x9e3779b9u) ^ salt);
+}
+
+// The global Sobol index of sample `index` of `pixel` (pbrt-v4 ZSobolSampler::GetSampleIndex):
+// each base-4 digit of (Morton code, sample) is permuted by a hash of the digits above it, so
+// the order of pixels is random at every level of the quadtree but each level stays a Sobol block.
+// Index bits from 24 up move a sample only below float precision, so only digits below bit 24 are
+// made.
+RL_FN uint zsobolIndex(uvec2 pixel, uint index, uint log2Samples, uint salt) {
+    uint m = mortonEncode(pixel);
+    uint s = index & ((1u << log2Samples) - 1u);
+    uvec2 mortonIndex = log2Samples == 0u ? uvec2(m, 0u) : uvec2((m << log2Samples) | s, m >> (32u - log2Samples));
+    uint odd = log2Samples & 1u;   // an odd power of two ends in a single base-2 digit
+    uint result = 0u;
+    for (uint shift = odd; shift < 24u; shift += 2u) {
+        uint digit = shiftRight64(mortonIndex, shift).x & 3u;
+        uint p = zsobolDigitHash(shiftRight64(mortonIndex, shift + 2u), salt) % 24u;
+        result |= ((zsobolPermutation(p) >> (2u * digit)) & 3u) << shift;
+    }
+    if (odd != 0u) result |= (mortonIndex.x & 1u) ^ (zsobolDigitHash(shiftRight64(mortonIndex, 1u), salt) & 1u);
+    return result;
+}
+
+// Hash words for (dimension, round, seed): .x the digit permutations' salt, .y and .z the Owen
+// scrambles of the two components; the same for every pixel, so the pixels share one sequence.
+RL_FN uvec4 zsobolHash(uint index, uint dim, uint seed, uint log2Samples) {
+    return pcg4d(uvec4(dim, index >> log2Samples, seed, 0x2b50b01u));
+}
+
+RL_FN float zsobolSample1D(uvec2 pixel, uint index, uint dim, uint seed, uint count) {
+    uint l = zsobolLog2Samples(count);
+    uvec4 h = zsobolHash(index, dim, seed, l);
+    uint i = zsobolIndex(pixel, index, l, h.x);
+    return sampleUnitFloat(nestedUniformScramble(sobolBits(i, 0u), h.y));
+}
+
+// Dimensions dim and dim + 1 as Sobol dimensions 0 and 1 of one index: a (0,2)-sequence.
+RL_FN vec2 zsobolSample2D(uvec2 pixel, uint index, uint dim, uint seed, uint count) {
+    uint l = zsobolLog2Samples(count);
+    uvec4 h = zsobolHash(index, dim, seed, l);
+    uint i = zsobolIndex(pixel, index, l, h.x);
+    return vec2(sampleUnitFloat(nestedUniformScramble(sobolBits(i, 0u), h.y)),
+                sampleUnitFloat(nestedUniformScramble(sobolBits(i, 1u), h.z)));
+}
+
 // --- the sampler the tracer was compiled with ---
 
 struct Sampler {
@@ -140,7 +230,7 @@ struct Sampler {
     uvec2 pixel;
     uint index;    // sample index of the pixel, across passes
     uint seed;
-    uint count;    // samples per pixel of the whole render (stratified's strata)
+    uint count;    // samples per pixel of the whole render (stratified's strata, zsobol's block)
 };
 
 RL_FN Sampler samplerCreate(uvec2 pixel, uint index, uint seed, uint count) {
@@ -149,7 +239,9 @@ RL_FN Sampler samplerCreate(uvec2 pixel, uint index, uint seed, uint count) {
 
 // independent ignores `dim`: it is the PCG stream of random.glsl, taken in call order.
 RL_FN float sample1D(RL_INOUT(Sampler) s, uint dim) {
-#if RAYLAB_SAMPLER == RAYLAB_SAMPLER_SOBOL
+#if RAYLAB_SAMPLER == RAYLAB_SAMPLER_ZSOBOL
+    return zsobolSample1D(s.pixel, s.index, dim, s.seed, s.count);
+#elif RAYLAB_SAMPLER == RAYLAB_SAMPLER_SOBOL
     return sobolSample1D(s.pixel, s.index, dim, s.seed);
 #elif RAYLAB_SAMPLER == RAYLAB_SAMPLER_STRATIFIED
     return stratifiedSample1D(s.pixel, s.index, dim, s.seed, s.count);
@@ -161,10 +253,13 @@ RL_FN float sample1D(RL_INOUT(Sampler) s, uint dim) {
 #endif
 }
 
-// Dimensions dim and dim + 1; stratified's cells are 2D, the others' pairs are two 1D numbers.
+// Dimensions dim and dim + 1; stratified's cells and zsobol's pairs are 2D, the others' pairs
+// are two 1D numbers.
 RL_FN vec2 sample2D(RL_INOUT(Sampler) s, uint dim) {
 #if RAYLAB_SAMPLER == RAYLAB_SAMPLER_STRATIFIED
     return stratifiedSample2D(s.pixel, s.index, dim, s.seed, s.count);
+#elif RAYLAB_SAMPLER == RAYLAB_SAMPLER_ZSOBOL
+    return zsobolSample2D(s.pixel, s.index, dim, s.seed, s.count);
 #else
     float a = sample1D(s, dim);
     float b = sample1D(s, dim + 1u);

@@ -71,6 +71,7 @@ std::string featureName(const SceneFeatures& f) {
     add(f.stage != RenderStage::Full, stages[std::min(int(f.stage), 4)]);
     add(f.sampler == SamplerKind::Stratified, "stratified");
     add(f.sampler == SamplerKind::Sobol, "sobol");
+    add(f.sampler == SamplerKind::ZSobol, "zsobol");
     return name.empty() ? "none" : name;
 }
 

@@ -105,7 +105,8 @@ std::vector<ParamSpec> buildSceneTable() {
     // --- render ---
     const std::vector<EnumName> samplerNames = {{"independent", static_cast<int>(SamplerKind::Independent)},
                                                 {"stratified", static_cast<int>(SamplerKind::Stratified)},
-                                                {"sobol", static_cast<int>(SamplerKind::Sobol)}};
+                                                {"sobol", static_cast<int>(SamplerKind::Sobol)},
+                                                {"zsobol", static_cast<int>(SamplerKind::ZSobol)}};
     add(spec("render.width", T::Int, atLeast(1), atMost(16384), "pixels",
              "Image width (changing it reallocates the image).", G::ReloadScene),
         [](auto& s) -> auto& { return s.render.width; });
@@ -167,8 +168,9 @@ std::vector<ParamSpec> buildSceneTable() {
         [](auto& s) -> auto& { return s.render.stage; });
     add(spec("render.sampler", T::Enum, kAny, kAny, "",
              "How each path's random numbers are made: independent (hashed PCG), stratified (jittered "
-             "strata, in a random order per pixel and dimension) or sobol (Owen-scrambled Sobol, Burley "
-             "2020). Dimensions: pixel 0-1, lens 2-3, then 8 per bounce from 4 (sampler.glsl).",
+             "strata, in a random order per pixel and dimension), sobol (Owen-scrambled Sobol, Burley "
+             "2020) or zsobol (one Sobol sequence over the pixels in Morton order, so that the error is "
+             "blue noise across the screen, Ahmed & Wonka 2020). Dimensions: pixel 0-1, lens 2-3, then 8 per bounce from 4 (sampler.glsl).",
              G::RecompileShader, samplerNames),
         [](auto& s) -> auto& { return s.render.sampler; });
 

@@ -42,6 +42,7 @@ enum class SamplerKind {
     Independent = 0,   // hashed PCG: every number independent
     Stratified = 1,    // jittered strata per dimension, in a per-pixel random order
     Sobol = 2,         // Owen-scrambled Sobol (Burley 2020)
+    ZSobol = 3,        // one Sobol sequence over Morton-ordered pixels (Ahmed & Wonka 2020)
 };
 
 struct RenderSettings {
@@ -53,13 +54,13 @@ struct RenderSettings {
     int maxBounces = 8;          // scattering events per path; 0 = emission and sky only
     int rrDepth = 3;             // Russian roulette starts after this many bounces
     std::uint32_t seed = 1;      // sampler seed: same seed, same image bit for bit
-    bool nee = false;            // next-event estimation: sample emissive spheres and the sky
+    bool nee = true;             // next-event estimation: sample emissive spheres and the sky
     bool mis = true;             // with nee: weight light and BSDF samples by the power heuristic
     float exposure = 0.0f;       // EV stops: display value = linear × 2^exposure
     ToneMap toneMap = ToneMap::AcesFit;
     int showMipLevel = 0;        // 1: textured surfaces show their mip level as colours (debug)
     RenderStage stage = RenderStage::Full;   // teaching: build the renderer up stage by stage
-    SamplerKind sampler = SamplerKind::Independent;
+    SamplerKind sampler = SamplerKind::Sobol;    // the best of bench/samplers.md
 };
 
 struct Material {

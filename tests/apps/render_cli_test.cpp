@@ -84,7 +84,7 @@ TEST(RenderCli, RendersPngAndExrAndPrintsThePath) {
     EXPECT_EQ(in->spec().width, 16);
     EXPECT_EQ(in->spec().get_int_attribute("raylab:spp"), 3);
     EXPECT_EQ(in->spec().get_int_attribute("raylab:seed"), 77);
-    EXPECT_EQ(in->spec().get_string_attribute("raylab:sampler"), "independent");
+    EXPECT_EQ(in->spec().get_string_attribute("raylab:sampler"), "sobol");   // the default
     EXPECT_NE(in->spec().get_string_attribute("raylab:scene").find("default.json"), std::string::npos);
 }
 

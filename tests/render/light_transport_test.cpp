@@ -74,7 +74,7 @@ TEST_F(LightTransportTest, EverySamplerConvergesToTheSameImage) {
     // their means are independent whatever the sampler).
     constexpr int batches = 32;
     const BatchStats reference = renderBatches(transportScene({"render.nee=false"}), batches);
-    for (const char* sampler : {"stratified", "sobol"}) {
+    for (const char* sampler : {"stratified", "sobol", "zsobol"}) {
         const std::string set = std::string("render.sampler=") + sampler;
         const BatchStats bsdf = renderBatches(transportScene({"render.nee=false", set}), batches);
         const BatchStats mis = renderBatches(transportScene({"render.nee=true", "render.mis=true", set}), batches);

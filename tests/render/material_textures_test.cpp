@@ -41,7 +41,7 @@ std::string quadScene(const std::string& material, int maxBounces = 1) {
     return R"({
   "camera": { "position": [0, 0, 2], "look_at": [0, 0, 0], "fov": 40 },
   "render": { "width": 16, "height": 16, "spp": 16, "max_bounces": )" +
-           std::to_string(maxBounces) + R"(, "rr_depth": 100, "tone_map": "clamp" },
+           std::to_string(maxBounces) + R"(, "rr_depth": 100, "nee": false, "sampler": "independent", "tone_map": "clamp" },
   "sky": { "type": "constant", "color": 1 },
   "materials": { "m": )" + material + R"( },
   "objects": [ { "type": "mesh", "material": "m",
@@ -275,7 +275,8 @@ TEST_F(MaterialTexturesTest, GltfMaterialsPerPrimitiveOnTheGpu) {
     test::writeGltf(dir / "models" / "two.gltf", s);
     const std::string view = R"(
   "camera": { "position": [0, 0, 3], "look_at": [0, 0, 0], "fov": 30 },
-  "render": { "width": 16, "height": 8, "spp": 16, "max_bounces": 1, "rr_depth": 100, "seed": 5 },
+  "render": { "width": 16, "height": 8, "spp": 16, "max_bounces": 1, "rr_depth": 100, "seed": 5, "nee": false,
+              "sampler": "independent" },
   "sky": { "type": "constant", "color": 1 },)";
     const Image gltf = test::render(load(dir, "{" + view + R"(
   "objects": [ { "type": "mesh", "file": "models/two.gltf" } ] })"));

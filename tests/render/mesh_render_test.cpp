@@ -10,7 +10,7 @@ namespace {
 // towards the camera and scales it unevenly; the camera sees nothing but the cube.
 constexpr const char* kCubeFurnace = R"({
   "camera": { "position": [0, 0, 4], "look_at": [0, 0, 0], "fov": 8 },
-  "render": { "width": 32, "height": 32, "spp": 8, "max_bounces": 8, "rr_depth": 100, "tone_map": "clamp" },
+  "render": { "width": 32, "height": 32, "spp": 8, "max_bounces": 8, "rr_depth": 100, "nee": false, "tone_map": "clamp" },
   "sky": { "type": "constant", "color": 1 },
   "materials": { "grey": { "albedo": 0.5 } },
   "objects": [ { "type": "mesh", "material": "grey",

@@ -13,7 +13,7 @@ using namespace raylab;
 
 namespace {
 
-const char* const kSamplers[] = {"independent", "stratified", "sobol"};
+const char* const kSamplers[] = {"independent", "stratified", "sobol", "zsobol"};
 
 Scene withSampler(const std::string& scene, const std::string& sampler, std::vector<std::string> extra = {}) {
     extra.push_back("render.sampler=" + sampler);
@@ -65,7 +65,7 @@ TEST_F(SamplerErrorTest, StratifiedAndSobolRenderWithLessErrorThanIndependent) {
     };
     const Image reference = test::render(with("independent", {"render.spp=1024", "render.seed=999"}));
     const double independent = test::rmse(test::render(with("independent", {"render.spp=16", "render.seed=7"})), reference);
-    for (const char* sampler : {"stratified", "sobol"}) {
+    for (const char* sampler : {"stratified", "sobol", "zsobol"}) {
         const double e = test::rmse(test::render(with(sampler, {"render.spp=16", "render.seed=7"})), reference);
         std::printf("%s RMSE %.5f, independent %.5f\n", sampler, e, independent);
         EXPECT_LT(e, independent) << sampler;

@@ -46,7 +46,7 @@ fs::path scratch() {
 
 constexpr const char* kQuadScene = R"({
   "camera": { "position": [0, 0, 2], "look_at": [0, 0, 0], "fov": 40 },
-  "render": { "width": 16, "height": 16, "spp": 4, "max_bounces": 1, "rr_depth": 100, "tone_map": "clamp" },
+  "render": { "width": 16, "height": 16, "spp": 4, "max_bounces": 1, "rr_depth": 100, "nee": false, "tone_map": "clamp" },
   "sky": { "type": "constant", "color": 1 },
   "materials": { "checker": { "albedo": 1, "albedo_texture": "textures/quadrants.png" } },
   "objects": [ { "type": "mesh", "material": "checker",
@@ -156,7 +156,7 @@ TEST_F(TextureRenderTest, ManyTexturesOfDifferentSizes) {
     uniform("cyan.png", 2, 7, {0, 255, 255});
     std::ofstream(dir / "two.json") << R"({
       "camera": { "position": [0, 0, 2], "look_at": [0, 0, 0], "fov": 40 },
-      "render": { "width": 16, "height": 16, "spp": 4, "max_bounces": 1, "rr_depth": 100, "tone_map": "clamp" },
+      "render": { "width": 16, "height": 16, "spp": 4, "max_bounces": 1, "rr_depth": 100, "nee": false, "tone_map": "clamp" },
       "sky": { "type": "constant", "color": 1 },
       "materials": { "a": { "albedo": 1, "albedo_texture": "textures/quadrants.png" },
                      "b": { "albedo": 1, "albedo_texture": "textures/magenta.png" },
@@ -198,7 +198,7 @@ TEST_F(TextureRenderTest, NormalMapChangesShadingAsPredicted) {
     }
     std::ofstream(dir / "nm.json") << R"({
       "camera": { "position": [0, 0, 2], "look_at": [0, 0, 0], "fov": 40 },
-      "render": { "width": 16, "height": 16, "spp": 256, "max_bounces": 1, "rr_depth": 100, "tone_map": "clamp" },
+      "render": { "width": 16, "height": 16, "spp": 256, "max_bounces": 1, "rr_depth": 100, "nee": false, "tone_map": "clamp" },
       "sky": { "type": "gradient", "top": 1, "bottom": 0 },
       "materials": { "bumpy": { "albedo": 1, "normal_texture": "textures/tilt.exr" } },
       "objects": [ { "type": "mesh", "material": "bumpy",
@@ -238,7 +238,7 @@ TEST_F(TextureRenderTest, UvCheckerLandsWhereExpectedOnASphere) {
     const glm::vec3 centre(0.5f, -0.2f, 0.3f);
     const float radius = 1.2f;
     std::ofstream(dir / "sphere.json") << R"({
-      "render": { "width": 64, "height": 64, "spp": 4, "max_bounces": 1, "rr_depth": 100, "tone_map": "clamp" },
+      "render": { "width": 64, "height": 64, "spp": 4, "max_bounces": 1, "rr_depth": 100, "nee": false, "tone_map": "clamp" },
       "sky": { "type": "constant", "color": 1 },
       "materials": { "checker": { "albedo": 1, "albedo_texture": "textures/checker.exr" } },
       "objects": [ { "type": "sphere", "center": [0.5, -0.2, 0.3], "radius": 1.2, "material": "checker" } ] })";
@@ -322,7 +322,7 @@ TEST_F(TextureRenderTest, UvCheckerLandsWhereExpectedOnAMeshFromAnObjFile) {
     }
     std::ofstream(dir / "cube.json") << R"({
       "camera": { "position": [1.1, 2.75, 5.01], "look_at": [0.2, 0.1, -0.3], "fov": 35 },
-      "render": { "width": 96, "height": 96, "spp": 4, "max_bounces": 1, "rr_depth": 100, "tone_map": "clamp" },
+      "render": { "width": 96, "height": 96, "spp": 4, "max_bounces": 1, "rr_depth": 100, "nee": false, "tone_map": "clamp" },
       "sky": { "type": "constant", "color": 1 },
       "materials": { "checker": { "albedo": 1, "albedo_texture": "textures/checker.exr" } },
       "objects": [ { "type": "mesh", "file": "cube.obj", "material": "checker",

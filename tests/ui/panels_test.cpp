@@ -70,5 +70,23 @@ TEST_F(PanelsTest, HeatMapsAndBvhOverlaysDraw) {
     EXPECT_GT(dd->TotalVtxCount, 0);
 }
 
+TEST_F(PanelsTest, TheRenderPanelShowsTheEstimatorAndTheSamplePointsOfAPixel) {
+    // The defaults' estimator, in the progress line and the Estimator header; an edit shows at once.
+    frame();
+    std::string text = windowText([&] { drawRenderPanel(*viewer, ui); });
+    EXPECT_NE(text.find("spp, sobol sampler, NEE + MIS"), std::string::npos) << text;
+    EXPECT_NE(text.find("estimator: sobol sampler, NEE + MIS"), std::string::npos) << text;
+    EXPECT_NE(text.find("pixel (16, 9) (centre): samples 0-63, dimensions 0-1"), std::string::npos) << text;
+    ASSERT_TRUE(viewer->document().set("render.sampler", "\"zsobol\""));
+    ASSERT_TRUE(viewer->document().set("render.nee", "false"));
+    ui.samplePoints.pair = SamplePair::Light;
+    ui.samplePoints.bounce = 1;
+    ui.samplePoints.count = 16;
+    text = windowText([&] { drawRenderPanel(*viewer, ui); });
+    EXPECT_NE(text.find("estimator: zsobol sampler, BSDF sampling only"), std::string::npos) << text;
+    EXPECT_NE(text.find("samples 0-15, dimensions 16-17"), std::string::npos) << text;
+    EXPECT_EQ(ui.samplePoints.sampler, SamplerKind::ZSobol);
+}
+
 } // namespace
 } // namespace raylab::ui

@@ -4,6 +4,7 @@
 #include "app/viewer.h"
 
 #include "accel/cpu_traversal.h"
+#include "inspect/sample_points.h"
 #include "render/camera_relative.h"
 #include "render/render_helpers.h"
 #include "render/scene_stats.h"
@@ -13,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace raylab::ui {
@@ -68,8 +70,13 @@ struct CpuSample {
 CpuSample cpuSample(const Scene& s, const SceneGeometry& g, int x, int y) {
     const int w = s.render.width, h = s.render.height;
     const glm::uvec2 pixel(unsigned(x), unsigned(h - 1 - y));   // GL rows start at the bottom
-    glsl::Rng rng = glsl::rngCreate(pixel, 0u, s.render.seed);
-    const glm::vec2 ndc = (glm::vec2(pixel) + glsl::rngNext2(rng)) / glm::vec2(float(w), float(h)) * 2.0f - 1.0f;
+    SamplePointsQuery jitter;   // the scene's sampler, as the tracer draws it (inspect/sample_points.h)
+    jitter.sampler = s.render.sampler;
+    jitter.pixel = pixel;
+    jitter.seed = s.render.seed;
+    jitter.spp = std::uint32_t(std::max(s.render.spp, 1));
+    jitter.count = 1;
+    const glm::vec2 ndc = (glm::vec2(pixel) + samplePoints(jitter)[0]) / glm::vec2(float(w), float(h)) * 2.0f - 1.0f;
     const auto cam = glsl::cameraBasis(s.camera.position, s.camera.lookAt, s.camera.up, s.camera.fovY, float(w) / float(h));
     CpuSample out;
     out.ray = glsl::cameraRay(cam, ndc);

@@ -3,6 +3,7 @@
 // out (a screenshot needs the finished frame), and where the viewport drew the image last frame.
 #include "app/lesson_session.h"
 #include "app/split_screen.h"
+#include "inspect/sample_points.h"
 #include "selftest/self_test.h"
 
 #include <cstdint>
@@ -46,6 +47,7 @@ struct UiState {
     std::uint64_t convergenceRun = ~std::uint64_t(0);   // the viewer's restart count it belongs to
     SelfTestReport selfTest;       // the last self-test (empty before the first run)
     bool selfTestRequested = false;   // run it at the start of the next frame
+    SamplePointsQuery samplePoints;   // the Render panel's sample-points plot (pair, bounce, count)
 };
 
 } // namespace raylab::ui

@@ -1,14 +1,32 @@
-// Render panel: files (open, save, screenshot, export), pause/resume/reset, resolution scale and
-// every render.* key of the parameter table except the display ones (camera panel).
+// Render panel: files (open, save, screenshot, export), pause/resume/reset, resolution scale, every
+// render.* key of the parameter table except the display ones (camera panel), and the estimator:
+// sampler, next-event estimation, MIS and the sample points of a pixel.
 #include "panels/panels.h"
 
 #include "app/actions.h"
 #include "panels/param_widget.h"
+#include "panels/sample_points_plot.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 namespace raylab::ui {
+namespace {
+
+bool isEstimatorKey(const ParamSpec& p) { return p.key == "render.sampler" || p.key == "render.nee" || p.key == "render.mis"; }
+
+// "zsobol sampler, NEE + MIS": what the progress line and the Estimator header say.
+std::string estimatorLabel(const Scene& scene) {
+    const RenderSettings& r = scene.render;
+    std::string sampler = "?";
+    for (const ParamSpec& p : sceneParameters())
+        if (p.key == "render.sampler")
+            for (const EnumName& n : p.enumNames)
+                if (n.value == int(r.sampler) && !n.alias) sampler = std::string(n.name);
+    return sampler + " sampler, " + (!r.nee ? "BSDF sampling only" : r.mis ? "NEE + MIS" : "NEE without MIS");
+}
+
+} // namespace
 
 void drawRenderPanel(Viewer& viewer, UiState& ui) {
     if (!ImGui::Begin("Render")) {
@@ -60,12 +78,18 @@ void drawRenderPanel(Viewer& viewer, UiState& ui) {
         const double target = double(viewer.scene().render.spp);
         const float progress = t ? float(double(t->samplesPerPixel()) / target) : 0.0f;
         const std::string text = std::to_string(t ? t->samplesPerPixel() : 0) + " / " +
-                                 std::to_string(viewer.scene().render.spp) + " spp";
+                                 std::to_string(viewer.scene().render.spp) + " spp, " + estimatorLabel(viewer.scene());
         ImGui::ProgressBar(progress, ImVec2(-1, 0), text.c_str());
         for (const ParamSpec& p : sceneParameters()) {
-            if (p.section() != "render" || p.name() == "exposure" || p.name() == "tone_map") continue;
+            if (p.section() != "render" || p.name() == "exposure" || p.name() == "tone_map" || isEstimatorKey(p)) continue;
             paramWidget(viewer, resolveParam(viewer.scene(), p.key));
         }
+    }
+    if (ImGui::CollapsingHeader("Estimator", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Text("estimator: %s", estimatorLabel(viewer.scene()).c_str());
+        for (const ParamSpec& p : sceneParameters())
+            if (isEstimatorKey(p)) paramWidget(viewer, resolveParam(viewer.scene(), p.key));
+        drawSamplePointsPlot(viewer, ui);
     }
     if (ImGui::CollapsingHeader("Sky")) {
         for (const ParamSpec& p : sceneParameters())
