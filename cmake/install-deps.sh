@@ -7,7 +7,7 @@ PACKAGES="cmake g++ make pkg-config python3-glad
   libglm-dev libopenimageio-dev openimageio-tools libosmesa6-dev libegl-dev libegl-mesa0
   nlohmann-json3-dev libcli11-dev libgtest-dev libmd4c-dev libtinyobjloader-dev libtinygltf-dev
   libglfw3-dev libimgui-dev xvfb fonts-dejavu-core
-  clang-16 libclang-rt-16-dev
+  clang-16 libclang-rt-16-dev llvm-16
   libembree-dev"
 missing=""
 for p in $PACKAGES; do

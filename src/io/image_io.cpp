@@ -1,5 +1,6 @@
 #include "io/image_io.h"
 
+#include "io/stderr_capture.h"
 #include "shaders/include/tone_map.glsl"
 #include "texture/image_size.h"
 
@@ -119,8 +120,9 @@ void writeImage(const fs::path& path, const Image& image, const RenderMetadata& 
 
 Image readImage(const fs::path& path) {
     using namespace OIIO;
+    StderrCapture decoder;   // the decoders' own lines belong in the message
     auto in = ImageInput::open(path.string());
-    if (!in) throw ImageIoError(path.string() + ": error: cannot read: " + OIIO::geterror());
+    if (!in) throw ImageIoError(path.string() + ": error: cannot read: " + withDecoderText(OIIO::geterror(), decoder.finish()));
     const ImageSpec& spec = in->spec();
     if (const auto problem = imageSizeProblem(spec.width, spec.height))
         throw ImageIoError(path.string() + ": error: cannot read: " + *problem);
@@ -129,7 +131,9 @@ Image readImage(const fs::path& path) {
     const int channels = std::min(spec.nchannels, 4);   // rgba: further channels are never used
     std::vector<float> pixels(size_t(spec.width) * spec.height * size_t(channels));
     if (!in->read_image(0, 0, 0, channels, TypeDesc::FLOAT, pixels.data()))
-        throw ImageIoError(path.string() + ": error: cannot read: " + in->geterror());
+        throw ImageIoError(path.string() + ": error: cannot read: " + withDecoderText(in->geterror(), decoder.finish()));
+    in->close();
+    (void)decoder.finish();
     Image image(spec.width, spec.height);
     for (size_t i = 0, n = size_t(spec.width) * spec.height; i < n; ++i)
         for (int c = 0; c < 4; ++c) {

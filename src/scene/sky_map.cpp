@@ -1,5 +1,6 @@
 #include "scene/sky_map.h"
 
+#include "io/stderr_capture.h"
 #include "texture/image_size.h"
 
 #include <OpenImageIO/imageio.h>
@@ -21,8 +22,11 @@ std::string oiioError(const std::string& error, const char* otherwise) {
 
 std::optional<std::string> skyMapProblem(const std::filesystem::path& file) {
     using namespace OIIO;
+    StderrCapture decoder;   // the decoders' own lines belong in the message
     auto in = ImageInput::open(file.string());
-    if (!in) return "cannot read: " + oiioError(OIIO::geterror(), "not an image file OpenImageIO knows");
+    if (!in)
+        return "cannot read: " +
+               withDecoderText(oiioError(OIIO::geterror(), "not an image file OpenImageIO knows"), decoder.finish());
     const ImageSpec spec = in->spec();
     const std::int64_t w = spec.width, h = spec.height;
     if (w <= 0 || h <= 0) return "cannot read: " + std::to_string(w) + "x" + std::to_string(h) + " is not an image size";
@@ -37,8 +41,9 @@ std::optional<std::string> skyMapProblem(const std::filesystem::path& file) {
                             ? in->read_tiles(0, 0, spec.x, spec.x + spec.width, y, end, spec.z, spec.z + 1, 0, channels,
                                              TypeDesc::FLOAT, pixels.data())
                             : in->read_scanlines(0, 0, y, end, spec.z, 0, channels, TypeDesc::FLOAT, pixels.data());
-        if (!ok) return "cannot read: " + oiioError(in->geterror(), "the pixels do not decode");
+        if (!ok) return "cannot read: " + withDecoderText(oiioError(in->geterror(), "the pixels do not decode"), decoder.finish());
     }
+    in->close();
     return std::nullopt;
 }
 

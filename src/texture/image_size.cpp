@@ -1,5 +1,7 @@
 #include "texture/image_size.h"
 
+#include "io/stderr_capture.h"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
@@ -22,6 +24,8 @@ std::optional<ImageSize> encodedImageSize(const unsigned char* bytes, std::size_
     if (size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0) format = "png";
     else if (size >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff) format = "jpg";
     if (!format) return std::nullopt;
+    // libpng's lines are dropped: the full decoder that runs next reports the problem itself.
+    StderrCapture decoder;
     OIIO::Filesystem::IOMemReader memory(bytes, size);
     auto in = OIIO::ImageInput::create(format, false, nullptr, &memory);
     if (!in) return std::nullopt;

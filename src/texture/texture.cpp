@@ -1,5 +1,6 @@
 #include "texture/texture.h"
 
+#include "io/stderr_capture.h"
 #include "texture/image_size.h"
 
 #include <OpenImageIO/imageio.h>
@@ -48,11 +49,12 @@ std::vector<MipLevel> buildMipPyramid(MipLevel base) {
 Texture loadTexture(const std::filesystem::path& path, bool linearData) {
     using namespace OIIO;
     const std::string name = path.string();
+    StderrCapture decoder;   // libpng prints its errors; they belong in the message
     auto in = ImageInput::open(name);
     if (!in) {
         std::string err = geterror();
         if (err.empty()) err = "cannot open";
-        throw TextureError(name + ": " + err);
+        throw TextureError(name + ": " + withDecoderText(err, decoder.finish()));
     }
     const ImageSpec& spec = in->spec();
     const int w = spec.width, h = spec.height, c = spec.nchannels;
@@ -73,8 +75,10 @@ Texture loadTexture(const std::filesystem::path& path, bool linearData) {
     if (!in->read_image(0, 0, 0, read, TypeDesc::FLOAT, raw.data())) {
         std::string err = in->geterror();
         if (err.empty()) err = "cannot read the pixels";
-        throw TextureError(name + ": " + err);
+        throw TextureError(name + ": " + withDecoderText(err, decoder.finish()));
     }
+    in->close();
+    (void)decoder.finish();   // a decoder's remarks on an image it read are not the user's concern
     const bool encoded = !linearData && !spec.format.is_floating_point();
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
