@@ -32,7 +32,9 @@ protected:
         const auto c = projectPoint(s, 320, 180, s.spheres[1].center);
         clickX_ = kImageX + c->x / 320.0f * kImageW;
         clickY_ = kImageY + c->y / 180.0f * kImageH;
+        // The estimator these checks were tuned with (8-spp pixels, bit-identical unaffected pixels).
         run_ = new ViewerRun(runViewer(*xvfb_, dir_,
+                                 "set render.nee false\nset render.sampler independent\n"
                                  "wait-spp 8\npause\nscreenshot " + d + "/beauty.png\n"
                                  "overlay boxes on\nscreenshot " + d + "/overlay.png\noverlay boxes off\n"
                                  "click " + std::to_string(clickX_) + " " + std::to_string(clickY_) + "\n"
