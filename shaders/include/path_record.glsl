@@ -18,9 +18,10 @@ layout(std430, binding = BINDING_INSPECT_BOUNCES) buffer InspectBounceBuffer { v
 layout(std430, binding = BINDING_INSPECT_PATHS) writeonly buffer InspectPathBuffer { vec4 inspectPaths[]; };
 uniform ivec2 uInspectPixel;       // GL pixel (bottom row 0) whose samples are recorded
 uniform int uInspectMaxRecords;    // bounce records per path that fit the buffer
+uniform uint uInspectFirstSample;  // sample index of the first recorded path (the host may split it into draws)
 
 bool gRecording = false;   // this invocation is the inspected pixel's
-int gRecordPath = 0;       // sample index within the pass
+int gRecordPath = 0;       // recorded path: sample index minus uInspectFirstSample
 int gRecordCount = 0;      // bounce records written for the current path
 bool gRecordTruncated = false;
 
@@ -38,20 +39,21 @@ void recordPut(int bounce, int field, vec4 v) {
 void recordPathBegin(ivec2 pixel, int path, Ray ray) {
     gRecording = pixel == uInspectPixel;
     if (!gRecording) return;
+    path += int(params.sampleStart - uInspectFirstSample);
     gRecordPath = path;
     gRecordCount = 0;
     gRecordTruncated = false;
     // Every field of every slot defaults to "not played" so the host reads no stale values.
     for (int b = 0; b < uInspectMaxRecords; ++b)
         for (int f = 0; f < PR_VEC4S; ++f) inspectBounces[recordSlot(b, f)] = vec4(0.0f);
-    int base = path * PR_PATH_VEC4S;
+    int base = gRecordPath * PR_PATH_VEC4S;
     inspectPaths[base + 2] = vec4(ray.origin, 0.0f);
     inspectPaths[base + 3] = vec4(normalize(ray.dir), 0.0f);
 }
 
 void recordPathEnd(ivec2 pixel, int path, vec3 L) {
     if (!gRecording) return;
-    int base = path * PR_PATH_VEC4S;
+    int base = gRecordPath * PR_PATH_VEC4S;
     inspectPaths[base] = vec4(L, float(gRecordCount));
     inspectPaths[base + 1] = vec4(float(params.sampleStart + uint(path)), float(pixel.x), float(pixel.y),
                                   gRecordTruncated ? 1.0f : 0.0f);

@@ -60,6 +60,12 @@ void tracePixelPass(ivec2 pixel) {
         mean = old + (sum - float(params.rpp) * old) / float(params.sampleStart + uint(params.rpp));
     }
     imageStore(uAccum, pixel, vec4(mean, 1.0f));
+    // llvmpipe (gallivm) ends every loop of an invocation once 65535 loop iterations have run in
+    // all, silently. A loop of rpp + 1 iterations that stops early shows the budget ran out, so
+    // the host can report it and draw fewer samples per invocation (PathTracer::traceBand).
+    uint probe = 0u;
+    for (int i = 0; i <= params.rpp; ++i) ++probe;
+    if (probe <= uint(params.rpp)) atomicAdd(loopLimited, 1u);
 #if RAYLAB_DEBUG_MOMENTS
     debugMomentsStore(moments, pixel);
 #endif

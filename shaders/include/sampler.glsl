@@ -101,12 +101,23 @@ inline constexpr uint SOBOL_MATRICES[128] = {RAYLAB_SOBOL_MATRICES};
 const uint SOBOL_MATRICES[128] = uint[128](RAYLAB_SOBOL_MATRICES);
 #endif
 
+// Written out without a loop: llvmpipe allows an invocation 65535 loop iterations in all
+// (path_tracer.glsl), and a loop here would spend 32 of them on every number.
+#define RAYLAB_SOBOL_BIT(b) x ^= SOBOL_MATRICES[base + b] & (0u - ((index >> b) & 1u));
 RL_FN uint sobolBits(uint index, uint dim) {
+    uint base = dim * 32u;
     uint x = 0u;
-    for (uint bit = 0u; index != 0u; index >>= 1u, ++bit)
-        if ((index & 1u) != 0u) x ^= SOBOL_MATRICES[dim * 32u + bit];
+    RAYLAB_SOBOL_BIT(0u) RAYLAB_SOBOL_BIT(1u) RAYLAB_SOBOL_BIT(2u) RAYLAB_SOBOL_BIT(3u)
+    RAYLAB_SOBOL_BIT(4u) RAYLAB_SOBOL_BIT(5u) RAYLAB_SOBOL_BIT(6u) RAYLAB_SOBOL_BIT(7u)
+    RAYLAB_SOBOL_BIT(8u) RAYLAB_SOBOL_BIT(9u) RAYLAB_SOBOL_BIT(10u) RAYLAB_SOBOL_BIT(11u)
+    RAYLAB_SOBOL_BIT(12u) RAYLAB_SOBOL_BIT(13u) RAYLAB_SOBOL_BIT(14u) RAYLAB_SOBOL_BIT(15u)
+    RAYLAB_SOBOL_BIT(16u) RAYLAB_SOBOL_BIT(17u) RAYLAB_SOBOL_BIT(18u) RAYLAB_SOBOL_BIT(19u)
+    RAYLAB_SOBOL_BIT(20u) RAYLAB_SOBOL_BIT(21u) RAYLAB_SOBOL_BIT(22u) RAYLAB_SOBOL_BIT(23u)
+    RAYLAB_SOBOL_BIT(24u) RAYLAB_SOBOL_BIT(25u) RAYLAB_SOBOL_BIT(26u) RAYLAB_SOBOL_BIT(27u)
+    RAYLAB_SOBOL_BIT(28u) RAYLAB_SOBOL_BIT(29u) RAYLAB_SOBOL_BIT(30u) RAYLAB_SOBOL_BIT(31u)
     return x;
 }
+#undef RAYLAB_SOBOL_BIT
 
 // Laine & Karras 2011's hash as Burley §4 improves it: each bit depends only on lower bits, so
 // applied to reversed bits it is a nested uniform (Owen) scramble.

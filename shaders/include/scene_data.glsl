@@ -12,6 +12,7 @@ layout(std430, binding = BINDING_MATERIALS) readonly buffer MaterialBuffer { Gpu
 layout(std430, binding = BINDING_COUNTERS) buffer CounterBuffer {
     uint nonFiniteSamples;   // samples that were NaN or Inf and were replaced by 0
     uint raysTraced;         // ray casts this pass (camera and bounce rays)
+    uint loopLimited;        // invocations whose loops the driver cut short (path_tracer.glsl)
 };
 
 layout(std430, binding = BINDING_SPHERE_LIGHTS) readonly buffer LightBuffer { GpuLight lights[]; };

@@ -286,6 +286,10 @@ int main(int argc, char** argv) {
     if (tracer->nonFiniteSamples() > 0)
         std::cerr << "raylab-render: warning: " << tracer->nonFiniteSamples()
                   << " NaN/Inf samples were replaced by 0\n";
+    if (tracer->loopLimitedInvocations() > 0)
+        std::cerr << "raylab-render: warning: the GL driver cut " << tracer->loopLimitedInvocations()
+                  << " pixel draws short at its limit of loop iterations per shader invocation; those pixels "
+                     "lack light (later draws took " << tracer->samplesPerDraw() << " samples per pixel at once)\n";
 
     try {
         RenderMetadata meta;

@@ -118,6 +118,7 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
     const ShaderProgram& p = tracer_->program();
     p.set("uInspectPixel", glm::ivec2(x, glY));
     p.set("uInspectMaxRecords", maxRecords_);
+    p.set("uInspectFirstSample", unsigned(firstSample));
     setTracedView(p, DebugView(int(filter_)), filterBounce_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_BOUNCES, buffers_[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_INSPECT_PATHS, buffers_[1]);

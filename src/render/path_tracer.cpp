@@ -44,7 +44,7 @@ PathTracer::PathTracer(TracerOptions options) : options_(options) {
     glCreateFramebuffers(1, &framebuffer_);
     glCreateVertexArrays(1, &vertexArray_);
     glCreateBuffers(1, &counterBuffer_);
-    const GLuint zeros[2] = {0, 0};
+    const GLuint zeros[3] = {0, 0, 0};
     glNamedBufferStorage(counterBuffer_, sizeof(zeros), zeros,
                          GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
     glCreateBuffers(1, &paramsBuffer_);
@@ -161,6 +161,7 @@ void PathTracer::reset() {
     passes_ = 0;
     nonFinite_ = 0;
     rays_ = 0;
+    loopLimited_ = 0;
     boxTests_ = 0;
     triangleTests_ = 0;
 }
@@ -192,19 +193,27 @@ void PathTracer::renderPass(int rpp) {
 
 void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
     if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
+    for (int done = 0; done < rpp;) {
+        const int n = std::min(rpp - done, samplesPerDraw_);
+        drawBand(y, rows, sampleOffset + done, n);
+        done += n;
+    }
+}
+
+void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     params_.sampleStart = unsigned(samplesPerPixel_ + std::uint64_t(sampleOffset));
     params_.rpp = rpp;
     glNamedBufferSubData(paramsBuffer_, offsetof(glsl::TracerParams, sampleStart),
                          sizeof(params_.sampleStart) + sizeof(params_.rpp), &params_.sampleStart);
 
-    const GLuint zeros[2] = {0, 0};
+    const GLuint zeros[3] = {0, 0, 0};
     glNamedBufferSubData(counterBuffer_, 0, sizeof(zeros), zeros);
     glBindImageTexture(BINDING_ACCUM_IMAGE, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     gpuScene_.bind();
     glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_TRACER_PARAMS_UBO, paramsBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_COUNTERS, counterBuffer_);
     if (traversalBuffer_) {
-        glNamedBufferSubData(traversalBuffer_, 0, sizeof(zeros), zeros);
+        glNamedBufferSubData(traversalBuffer_, 0, 2 * sizeof(GLuint), zeros);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRAVERSAL_COUNTERS, traversalBuffer_);
     }
     glUseProgram(program_->id());
@@ -227,12 +236,14 @@ void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
     // The next pass reads what this one stored; the counters are read back below.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
-    GLuint counters[2] = {0, 0};
+    GLuint counters[3] = {0, 0, 0};
     glGetNamedBufferSubData(counterBuffer_, 0, sizeof(counters), counters);   // waits for the pass
     nonFinite_ += counters[0];
     rays_ += counters[1];
+    loopLimited_ += counters[2];
+    if (counters[2] > 0) samplesPerDraw_ = std::max(1, samplesPerDraw_ / 2);
     if (traversalBuffer_) {
-        glGetNamedBufferSubData(traversalBuffer_, 0, sizeof(counters), counters);
+        glGetNamedBufferSubData(traversalBuffer_, 0, 2 * sizeof(GLuint), counters);
         boxTests_ += counters[0];
         triangleTests_ += counters[1];
     }

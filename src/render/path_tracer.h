@@ -62,6 +62,7 @@ public:
     // sample chunks. traceBand traces samples [spp + sampleOffset, + rpp) of rows [y, y + rows) and
     // adds to the counters; call it for every band of a chunk, chunk after chunk, then finishPass
     // with the pass's total rpp. Bands need the fragment entry (the compute entry traces all rows).
+    // traceBand draws at most samplesPerDraw() samples per pixel at once (below).
     void traceBand(int y, int rows, int sampleOffset, int rpp);
     void finishPass(int rpp);
     unsigned accumulationTexture() const { return accumTexture_; }   // RGBA32F, bottom row first
@@ -71,6 +72,14 @@ public:
     std::uint64_t passes() const { return passes_; }
     std::uint64_t nonFiniteSamples() const { return nonFinite_; }   // replaced by 0, counted
     std::uint64_t raysTraced() const { return rays_; }
+    // llvmpipe ends all loops of a shader invocation after 65535 iterations in all (gallivm's loop
+    // limiter), which would cut paths short without a word. So a draw traces at most this many
+    // samples per pixel (a pass of more is several draws, the same samples in the same order), the
+    // shader counts invocations that still ran out, and after such a draw later ones take half as
+    // many. loopLimitedInvocations() > 0 means the image lacks light; raylab-render reports it.
+    static constexpr int kSamplesPerDraw = 16;
+    int samplesPerDraw() const { return samplesPerDraw_; }
+    std::uint64_t loopLimitedInvocations() const { return loopLimited_; }
     // With RAYLAB_COUNT_TRAVERSAL in extraDefines: BVH boxes and triangles tested (else 0).
     std::uint64_t boxTests() const { return boxTests_; }
     std::uint64_t triangleTests() const { return triangleTests_; }
@@ -93,6 +102,7 @@ public:
 
 private:
     void allocateImage(int width, int height);
+    void drawBand(int y, int rows, int sampleOffset, int rpp);   // one draw of traceBand
 
     static ShaderProgram compileVariant(const ShaderDefines& features, const void* self);
 
@@ -115,6 +125,8 @@ private:
     std::uint64_t passes_ = 0;
     std::uint64_t nonFinite_ = 0;
     std::uint64_t rays_ = 0;
+    std::uint64_t loopLimited_ = 0;
+    int samplesPerDraw_ = kSamplesPerDraw;
     unsigned traversalBuffer_ = 0;   // only when counting traversal
     std::uint64_t boxTests_ = 0;
     std::uint64_t triangleTests_ = 0;

@@ -102,7 +102,7 @@ TEST(RenderResume, RefusesAnotherSceneOrSettingsAndLeavesTheFileAlone) {
     const std::vector<Case> cases = {
         {kScene + " --spp 4 --seed 9", "raylab:seed is 1 in the EXR but render.seed 9"},
         {kScene + " --spp 4 --rpp 2", "raylab:rpp"},
-        {kScene + " --spp 4 --set render.sampler=sobol", "raylab:sampler"},
+        {kScene + " --spp 4 --set render.sampler=independent", "raylab:sampler"},
         {kScene + " --spp 4 --set camera.fov=20", "raylab:settings_hash differs"},
         {"scenes/furnace.json --width 12 --height 8 --set render.max_bounces=3 --spp 4", "raylab:settings_hash differs"},
         {kScene + " --spp 1", "holds 2 spp already"},

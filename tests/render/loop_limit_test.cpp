@@ -1,0 +1,85 @@
+// llvmpipe ends every loop of a shader invocation once 65535 loop iterations have run in all
+// (gallivm's loop limiter). A pass of many samples must not lose light to it: the tracer splits a
+// pass into draws of a few samples, and counts the draws the driver still cut short.
+#include "render_helpers.h"
+#include "support/gl_test.h"
+
+#include <glad/gl.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+using namespace raylab;
+
+namespace {
+
+// Largest difference, relative to the value (at least 1e-3 absolute), over every channel.
+double largestRelativeDifference(const Image& a, const Image& b) {
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        const double d = std::abs(double(a.rgba[i]) - double(b.rgba[i]));
+        worst = std::max(worst, d / std::max(1e-3, std::abs(double(b.rgba[i]))));
+    }
+    return worst;
+}
+
+bool onLlvmpipe() {
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return renderer != nullptr && std::strstr(renderer, "llvmpipe") != nullptr;
+}
+
+// A closed box of triangles around the camera whose walls glow and reflect 99.9 %: with roulette
+// off, every path makes all 256 bounces, each a traversal of the mesh, so a draw of 16 samples
+// runs out of the driver's loop budget (one of 1024 bounces runs out alone).
+constexpr const char* kClosedBox = R"({
+  "camera": {"position": [0, 0, 0], "look_at": [0, 0, 1], "fov": 60},
+  "render": {"width": 8, "height": 8, "rpp": 16, "spp": 32, "max_bounces": 256, "rr_depth": 256,
+             "nee": false, "sampler": "independent"},
+  "sky": {"type": "constant", "color": 0},
+  "materials": {"wall": {"albedo": 0.999, "emission": 1, "strength": 0.001}},
+  "objects": [{"type": "mesh", "material": "wall",
+    "positions": [-1,-1,-1, 1,-1,-1, 1,1,-1, -1,1,-1, -1,-1,1, 1,-1,1, 1,1,1, -1,1,1],
+    "indices": [0,1,2, 0,2,3, 4,6,5, 4,7,6, 0,4,5, 0,5,1, 3,2,6, 3,6,7, 0,3,7, 0,7,4, 1,5,6, 1,6,2]}]
+})";
+
+} // namespace
+
+class LoopLimitTest : public test::GlTest {};
+
+// The Cornell box (a mesh: every ray is a BVH traversal, a loop) at 1024 spp: one pass of 1024
+// samples and 1024 passes of one take the same samples, so the means agree to float rounding.
+// Before the split, the pass of 1024 lost 88 % of the image's light.
+TEST_F(LoopLimitTest, APassOfManySamplesEqualsThePassesOfOneEach) {
+    for (const char* sampler : {"independent", "sobol"}) {
+        const Scene scene = loadScene(test::scenePath("cornell_box.json"),
+                                      {"render.width=16", "render.height=16", std::string("render.sampler=") + sampler});
+        PathTracer onePass, manyPasses;
+        onePass.setScene(scene);
+        manyPasses.setScene(scene);
+        onePass.renderPass(1024);
+        for (int i = 0; i < 1024; ++i) manyPasses.renderPass(1);
+        EXPECT_LT(largestRelativeDifference(onePass.readImage(), manyPasses.readImage()), 1e-4) << sampler;
+        EXPECT_EQ(onePass.loopLimitedInvocations(), 0u) << sampler;
+        EXPECT_EQ(onePass.samplesPerDraw(), PathTracer::kSamplesPerDraw) << sampler;
+    }
+}
+
+// Where even a draw of 16 samples runs out, the shader's count says so and later draws take fewer.
+TEST_F(LoopLimitTest, ADrawTheDriverCutsShortIsCountedAndLaterDrawsTakeFewerSamples) {
+    if (!onLlvmpipe()) GTEST_SKIP() << "only llvmpipe limits loop iterations";
+    const Scene scene = parseScene(kClosedBox, "closed_box.json");
+    PathTracer tracer;
+    tracer.setScene(scene);
+    tracer.renderPass(16);
+    EXPECT_GT(tracer.loopLimitedInvocations(), 0u);
+    EXPECT_LT(tracer.samplesPerDraw(), PathTracer::kSamplesPerDraw);
+    // With few enough samples per draw no invocation runs out.
+    while (tracer.loopLimitedInvocations() > 0 && tracer.samplesPerDraw() > 1) {
+        tracer.reset();
+        tracer.renderPass(16);
+    }
+    EXPECT_EQ(tracer.loopLimitedInvocations(), 0u) << "at " << tracer.samplesPerDraw() << " samples per draw";
+    tracer.reset();
+    EXPECT_EQ(tracer.loopLimitedInvocations(), 0u) << "reset clears the count";
+}
