@@ -37,6 +37,10 @@ public:
             result.errorOffset = position >= lastToken.size() ? position - lastToken.size() : 0;
             result.reason = "must be finite, got " + lastToken + " (too large for a double)";
             result.errorPath = currentPath();
+        } else if (std::string_view(ex.what()).find("missing closing '*/'") != std::string_view::npos) {
+            // Where the comment opens, not at the end of the file where the lexer gave up.
+            result.errorOffset = position >= lastToken.size() ? position - lastToken.size() : 0;
+            result.reason = "a /* comment is never closed (no */ before the end of the file)";
         } else if (std::string_view(ex.what()).ends_with("expected end of input")) {
             result.reason = "unexpected text after the end of the document (only whitespace and comments may follow it)";
         } else {

@@ -83,6 +83,11 @@ TEST(HostileJson, TextAfterTheDocumentIsAnErrorAtItsPlace) {
                                      "whitespace and comments may follow it)");
     EXPECT_LT(errorOf(doc + std::string(100000, ' ') + "x").size(), 200u) << "the parser's 'last read' is not quoted";
     EXPECT_EQ(errorOf(doc + "\n// a comment\n/* another */\n"), "<no error>");
+    // A comment left open says so where it opens, after the document or inside it.
+    EXPECT_EQ(errorOf(doc + "\n  /* never closed\n"),
+              "test.json:2:3: error: a /* comment is never closed (no */ before the end of the file)");
+    EXPECT_EQ(errorOf("{ \"objects\": [ {} ] /* open"),
+              "test.json:1:22: error: a /* comment is never closed (no */ before the end of the file)");
 }
 
 TEST(HostileJson, ANulByteAnywhereIsAnErrorAtItsPlace) {
