@@ -7,6 +7,8 @@
 namespace raylab::scenefmt {
 namespace {
 
+constexpr const char* kUnclosedComment = "a /* comment is never closed (no */ before the end of the file)";
+
 class DomBuilder : public nlohmann::json_sax<Json> {
 public:
     ParseResult result;
@@ -38,9 +40,7 @@ public:
             result.reason = "must be finite, got " + lastToken + " (too large for a double)";
             result.errorPath = currentPath();
         } else if (std::string_view(ex.what()).find("missing closing '*/'") != std::string_view::npos) {
-            // Where the comment opens, not at the end of the file where the lexer gave up.
-            result.errorOffset = position >= lastToken.size() ? position - lastToken.size() : 0;
-            result.reason = "a /* comment is never closed (no */ before the end of the file)";
+            result.reason = kUnclosedComment;   // parseJson places it where the comment opens
         } else if (std::string_view(ex.what()).ends_with("expected end of input")) {
             result.reason = "unexpected text after the end of the document (only whitespace and comments may follow it)";
         } else {
@@ -127,26 +127,48 @@ private:
     std::vector<Level> stack_;
 };
 
+// The last character of the string or comment that starts at text[i], i itself when none starts
+// there, npos for a /* comment that is never closed.
+std::size_t skipStringOrComment(std::string_view text, std::size_t i) {
+    if (text[i] == '"') {
+        for (++i; i < text.size() && text[i] != '"'; ++i)
+            if (text[i] == '\\') ++i;
+        return i;
+    }
+    if (text[i] != '/' || i + 1 >= text.size()) return i;
+    if (text[i + 1] == '/') {
+        while (i < text.size() && text[i] != '\n' && text[i] != '\r' && text[i] != '\0') ++i;
+        return i;
+    }
+    if (text[i + 1] != '*') return i;
+    const std::size_t close = text.find("*/", i + 2);
+    return close == std::string_view::npos ? std::string_view::npos : close + 1;
+}
+
 // Offset of the first '[' or '{' that opens level `depth` + 1, skipping strings and comments; the
 // text up to there has been accepted by the parser, so this simple scan agrees with it.
 std::size_t openingPastDepth(std::string_view text, std::size_t depth) {
     std::size_t level = 0;
     for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (c == '"') {
-            for (++i; i < text.size() && text[i] != '"'; ++i)
-                if (text[i] == '\\') ++i;
-        } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
-            while (i < text.size() && text[i] != '\n' && text[i] != '\r' && text[i] != '\0') ++i;
-        } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
-            const std::size_t close = text.find("*/", i + 2);
-            if (close == std::string_view::npos) break;
-            i = close + 1;
-        } else if (c == '[' || c == '{') {
+        const std::size_t skipped = skipStringOrComment(text, i);
+        if (skipped == std::string_view::npos) break;
+        if (skipped != i) {
+            i = skipped;
+        } else if (text[i] == '[' || text[i] == '{') {
             if (++level > depth) return i;
-        } else if (c == ']' || c == '}') {
+        } else if (text[i] == ']' || text[i] == '}') {
             --level;
         }
+    }
+    return text.size();
+}
+
+// Offset of the /* that is never closed (the lexer reports the end of the file instead).
+std::size_t unclosedCommentAt(std::string_view text) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const std::size_t skipped = skipStringOrComment(text, i);
+        if (skipped == std::string_view::npos) return i;
+        i = skipped;
     }
     return text.size();
 }
@@ -164,6 +186,7 @@ ParseResult parseJson(std::string_view text) {
         result.errorOffset = openingPastDepth(text, kMaxJsonDepth);
         return result;
     }
+    if (!result.ok && result.reason == kUnclosedComment) result.errorOffset = unclosedCommentAt(text);
     // nlohmann takes a NUL byte for the end of the input, so text after one would pass unread.
     const std::size_t nul = text.find('\0');
     if (nul == std::string_view::npos) return result;

@@ -1,6 +1,7 @@
 // raylab-render as a user runs it: exit codes, messages, outputs, Ctrl-C.
 #include "io/image_io.h"
 #include "render/debug_views.h"
+#include "support/render_cli.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <csignal>
 #include <fstream>
-#include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,37 +17,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
+using raylab::test::CliRun;
+using raylab::test::slurp;
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-fs::path scratchDir() {
-    fs::path d = fs::temp_directory_path() / ("raylab_cli_test_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-}
+fs::path scratchDir() { return raylab::test::scratchDir("raylab_cli_test"); }
 
 // Runs raylab-render with the arguments (shell-quoted by the caller) from the repository root.
-CliRun render(const std::string& args) {
-    const fs::path dir = scratchDir();
-    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_RENDER_EXE + "' " +
-                            args + " > '" + (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
-    const int raw = std::system(cmd.c_str());
-    CliRun r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(dir / "out.txt");
-    r.err = slurp(dir / "err.txt");
-    return r;
-}
+CliRun render(const std::string& args) { return raylab::test::runRender(args, scratchDir()); }
 
 fs::path writeScene(const std::string& name, const std::string& text) {
     const fs::path p = scratchDir() / name;

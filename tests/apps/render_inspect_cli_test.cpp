@@ -1,38 +1,21 @@
 // raylab-render --inspect X,Y --inspect-out FILE: the pixel path inspector from the command line.
+#include "support/render_cli.h"
+
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-    int status = -1;
-    std::string err;
-};
+using raylab::test::CliRun;
 
-fs::path scratch() {
-    fs::path d = fs::temp_directory_path() / ("raylab_inspect_cli_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-}
+fs::path scratch() { return raylab::test::scratchDir("raylab_inspect_cli"); }
 
-CliRun renderCli(const std::string& args) {
-    const fs::path err = scratch() / "err.txt";
-    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_RENDER_EXE + "' " + args +
-                            " > /dev/null 2> '" + err.string() + "'";
-    const int raw = std::system(cmd.c_str());
-    std::ifstream in(err);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, ss.str()};
-}
+CliRun renderCli(const std::string& args) { return raylab::test::runRender(args, scratch()); }
 
 TEST(RenderInspectCli, WritesJsonAndCsv) {
     const fs::path json = scratch() / "path.json", csv = scratch() / "path.csv";

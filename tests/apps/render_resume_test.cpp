@@ -2,44 +2,24 @@
 // and an EXR that does not belong to the scene and settings given is refused, left as it was.
 #include "io/image_io.h"
 
+#include "support/render_cli.h"
+
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <fstream>
-#include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-    int status = -1;
-    std::string err;
-};
+using raylab::test::CliRun;
+using raylab::test::slurp;
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+fs::path scratchDir() { return raylab::test::scratchDir("raylab_resume_test"); }
 
-fs::path scratchDir() {
-    fs::path d = fs::temp_directory_path() / ("raylab_resume_test_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-}
-
-CliRun render(const std::string& args) {
-    const fs::path dir = scratchDir();
-    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_RENDER_EXE + "' " + args +
-                            " -q > /dev/null 2> '" + (dir / "err.txt").string() + "'";
-    const int raw = std::system(cmd.c_str());
-    return CliRun{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "err.txt")};
-}
+CliRun render(const std::string& args) { return raylab::test::runRender(args + " -q", scratchDir()); }
 
 std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
@@ -191,6 +171,9 @@ TEST(RenderResume, TheResumedMeanStartsFromThePixelsInTheExr) {
     const CliRun r = render(kScene + " --spp 8 --resume " + quoted(part));
     ASSERT_EQ(r.status, 0) << r.err;
     const raylab::Image a = raylab::readImage(whole), b = raylab::readImage(part);
-    for (std::size_t i = 0; i < a.rgba.size(); ++i)
-        if (i % 4 != 3) ASSERT_NEAR(b.rgba[i] - a.rgba[i], 3.0f / 8.0f, 1e-4f) << "channel " << i;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+        if (i % 4 != 3) {
+            ASSERT_NEAR(b.rgba[i] - a.rgba[i], 3.0f / 8.0f, 1e-4f) << "channel " << i;
+        }
+    }
 }

@@ -87,7 +87,7 @@ TEST(HostileJson, TextAfterTheDocumentIsAnErrorAtItsPlace) {
     EXPECT_EQ(errorOf(doc + "\n  /* never closed\n"),
               "test.json:2:3: error: a /* comment is never closed (no */ before the end of the file)");
     EXPECT_EQ(errorOf("{ \"objects\": [ {} ] /* open"),
-              "test.json:1:22: error: a /* comment is never closed (no */ before the end of the file)");
+              "test.json:1:21: error: a /* comment is never closed (no */ before the end of the file)");
 }
 
 TEST(HostileJson, ANulByteAnywhereIsAnErrorAtItsPlace) {
