@@ -207,6 +207,10 @@ std::vector<Fence> scanFences(const std::vector<std::string>& lines, const std::
 
 enum class Section { BeforeTitle, Introduction, Goals, Step, Questions, Exercise, TeacherNotes, Sources };
 
+// Step numbers are checked to count 1, 2, 3...; one read as more than this is out of order anyway,
+// so reading stops growing it there (no overflow).
+constexpr int kMaxStepNumber = 9999;
+
 // "Step N: TITLE" (also "Step N. TITLE"); nullopt when the heading is not a step.
 std::optional<std::pair<int, std::string>> parseStepHeading(const std::string& heading) {
     if (lower(heading.substr(0, 5)) != "step ") return std::nullopt;
@@ -214,7 +218,7 @@ std::optional<std::pair<int, std::string>> parseStepHeading(const std::string& h
     int n = 0;
     bool digits = false;
     while (i < heading.size() && std::isdigit(static_cast<unsigned char>(heading[i]))) {
-        n = n * 10 + (heading[i++] - '0');
+        n = std::min(n * 10 + (heading[i++] - '0'), kMaxStepNumber + 1);   // past the limit: out of order
         digits = true;
     }
     if (!digits || i >= heading.size() || (heading[i] != ':' && heading[i] != '.')) return std::nullopt;
@@ -348,8 +352,10 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             if (auto step = parseStepHeading(heading)) {
                 const int expected = int(lesson.steps.size()) + 1;
                 if (step->first != expected)
-                    throw fail(b.line, "step numbered " + std::to_string(step->first) + ", expected " +
-                                           std::to_string(expected));
+                    throw fail(b.line, "step numbered " +
+                                           (step->first > kMaxStepNumber ? "above " + std::to_string(kMaxStepNumber)
+                                                                         : std::to_string(step->first)) +
+                                           ", expected " + std::to_string(expected));
                 if (step->second.empty()) throw fail(b.line, "step " + std::to_string(expected) + " has no title");
                 std::string title = step->second;
                 const std::string mark = "(optional)";

@@ -337,6 +337,28 @@ struct MaterialReader {
     }
 };
 
+// The files a glTF names (buffers, images), read for tinygltf: its own reader takes a directory's
+// size as 2^63 - 1 and allocates that, so only regular files up to this size are read.
+constexpr std::uintmax_t kMaxReferencedFileBytes = std::uintmax_t(1) << 31;
+
+bool readReferencedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    auto refuse = [&](const std::string& what) {
+        if (err) *err += path + ": " + what + "\n";
+        return false;
+    };
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return refuse("cannot read: not a file");
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) return refuse("cannot read: " + ec.message());
+    if (size > kMaxReferencedFileBytes)
+        return refuse("cannot read: " + std::to_string(size) + " bytes, more than the limit of " +
+                      std::to_string(kMaxReferencedFileBytes));
+    std::ifstream in(path, std::ios::binary);
+    out->resize(std::size_t(size));
+    if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) return refuse("cannot read: read failed");
+    return true;
+}
+
 // tinygltf's image decoding, after checking what it cannot: that an image's buffer view lies
 // inside its buffer and that the header's size is within raylab's limits.
 struct ImageLoad {
@@ -376,9 +398,12 @@ std::string withoutTrailingNewlines(std::string s) {
 
 GltfAsset loadGltfAsset(const std::filesystem::path& file) {
     const std::string name = file.string();
-    if (!std::filesystem::is_regular_file(file)) throw GltfError(name + ": cannot read: no such file");
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) throw GltfError(name + ": cannot read: no such file");
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readReferencedFile,
+                           &tinygltf::WriteWholeFile, nullptr});
     ImageLoad images{&model};
     loader.SetImageLoader(&loadImageChecked, &images);
     std::string err, warn;

@@ -183,7 +183,8 @@ void rejectWarnings(const std::string& name, const std::string& warnings) {
 
 Mesh loadObj(const std::filesystem::path& file) {
     const std::string name = file.string();
-    if (!std::filesystem::is_regular_file(file)) throw ObjError(name + ": cannot read: no such file");
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) throw ObjError(name + ": cannot read: no such file");
     std::ifstream in(file, std::ios::binary);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!in.good() && !in.eof()) throw ObjError(name + ": cannot read");

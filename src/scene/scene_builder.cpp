@@ -124,7 +124,8 @@ void readTextureSlot(const TextureSlot& slot, const Json& v, const JsonPath& p, 
             return;
         }
     }
-    if (!std::filesystem::is_regular_file(path)) fail(p, path.string() + ": cannot read: no such file");
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) fail(p, path.string() + ": cannot read: no such file");
     try {
         Texture t = loadTexture(path, slot.linearData);
         t.file = key;

@@ -134,6 +134,9 @@ TEST(Lesson, UnclosedFenceNamesItsOpeningLine) {
 TEST(Lesson, StructureMistakesNameFileAndLine) {
     EXPECT_EQ(errorOf(replaced(kGood, "## Step 2: Change", "## Step 3: Change")),
               "lessons/t.md:22: error: step numbered 3, expected 2");
+    // A number too large for an int (a fuzzer's find: it overflowed while being read).
+    EXPECT_EQ(errorOf(replaced(kGood, "## Step 2: Change", "## Step 4222222222222222: Change")),
+              "lessons/t.md:22: error: step numbered above 9999, expected 2");
     EXPECT_EQ(errorOf(replaced(kGood, "## Questions", "## Quiz")),
               "lessons/t.md:29: error: unknown section 'Quiz'; expected 'Learning goals', 'Step N: TITLE', "
               "'Questions', 'Exercise', 'Teacher's notes' or 'Sources'");
