@@ -350,6 +350,7 @@ bool readReferencedFile(std::vector<unsigned char>* out, std::string* err, const
     if (!std::filesystem::is_regular_file(path, ec)) return refuse("cannot read: not a file");
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) return refuse("cannot read: " + ec.message());
+    if (size == 0) return refuse("cannot read: the file is empty");
     if (size > kMaxReferencedFileBytes)
         return refuse("cannot read: " + std::to_string(size) + " bytes, more than the limit of " +
                       std::to_string(kMaxReferencedFileBytes));

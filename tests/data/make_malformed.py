@@ -260,7 +260,7 @@ def buffer_view_image(g):
 gltf("image_view_past_buffer", buffer_view_image, "images[0].bufferView: bufferViews[3] (byteOffset 64, byteLength 4000)")
 write("gltf_not_json.gltf", "this is not JSON\n", "gltf_not_json.gltf: parse error at line 1, column 2")
 write("gltf_truncated.gltf", json.dumps(base_gltf(), indent=1)[:300], "gltf_truncated.gltf: parse error at line 32")
-write("gltf_empty.gltf", "", "File is empty")
+write("gltf_empty.gltf", "", "cannot read: the file is empty")
 write("gltf_array.gltf", "[1, 2, 3]\n", "gltf_array.gltf: Root element is not a JSON object")
 write("gltf_nul_after_json.gltf", json.dumps(base_gltf()) + "\0garbage", "is a NUL byte (a .gltf file is JSON text)")
 
@@ -315,7 +315,7 @@ write("glb_view_missing_buffer.glb", glb(glb_model(setter(["bufferViews", 2, "bu
       "bufferViews[2].buffer: 2 is not a buffer")
 write("glb_index_past_vertices.glb", glb(glb_model(), POSITIONS + NORMALS + struct.pack("<3H", 0, 9, 2) + b"\0\0"),
       "accessors[2][1]: index 9 is out of range (3 vertices)")
-write("glb_empty.glb", b"", "File is empty")
+write("glb_empty.glb", b"", "cannot read: the file is empty")
 
 
 # --- Images (as a material's albedo_texture) ------------------------------------------------------
@@ -610,7 +610,7 @@ scene("syntax_missing_comma", '{\n  "camera": { "fov": 30 }\n  "objects": []\n}\
 scene("syntax_trailing_comma", '{\n  "objects": [ { "type": "sphere" }, ]\n}\n', ":2:38: error: syntax error")
 scene("syntax_single_quotes", "{ 'objects': [] }", ":1:3: error: syntax error")
 scene("syntax_unterminated_string", '{ "objects": [ { "type": "sph', ":1:30: error: syntax error{...}missing closing quote")
-scene("syntax_unterminated_comment", SPHERE + "\n/* never closed", ":2:16: error: unexpected text after the end")
+scene("syntax_unterminated_comment", SPHERE + "\n/* never closed", ":2:1: error: a /* comment is never closed")
 scene("syntax_truncated", SPHERE[:20], ":1:21: error: syntax error")
 scene("syntax_bare_word", '{ "render": { "nee": yes } }', ":1:22: error: syntax error")
 scene("syntax_nan_literal", '{ "camera": { "fov": NaN } }', ":1:22: error: syntax error")
