@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 namespace raylab {
@@ -17,6 +18,9 @@ float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * 
 
 glsl::BsdfParams explorerBsdf(const Material& m, const LobeToggles& lobes) {
     glsl::BsdfParams p{m.albedo, m.f0, glsl::ggxAlpha(m.roughness), m.transmission, m.ior};
+    // The metallic workflow as material_textures.glsl applies it to an untextured material.
+    p.f0 = glm::mix(p.f0, p.albedo, m.metallic);
+    p.albedo *= 1.0f - m.metallic;
     if (!lobes.diffuse) p.albedo = glm::vec3(0.0f);
     if (!lobes.specular) p.f0 = glm::vec3(0.0f);
     if (!lobes.transmission) p.transmission = 0.0f;
@@ -111,25 +115,41 @@ SamplerTest testSampler(const glsl::BsdfParams& m, glm::vec3 wo, const std::vect
         const float pdf = glsl::bsdfPdf(m, wo, s.wi());
         if (pdf > 0.0f) t.maxPdfMismatch = std::max(t.maxPdfMismatch, double(std::abs(s.pdf() - pdf) / pdf));
     }
-    // N × ∫cell pdf dω by the midpoint rule on k × k sub-cells (dω = 2 dA on the disk).
+    // N × ∫cell pdf dω (dω = 2 dA on the disk): the midpoint rule on k × k sub-cells, each refined
+    // where it disagrees with its four quarters, so that a narrow lobe at a grazing angle, a few
+    // sub-cells wide, is integrated as well as a broad one.
     const int k = 12;
-    const double subArea = (2.0 / n / k) * (2.0 / n / k);
     const double N = double(samples.size());
-    for (int h = 0; h < 2; ++h)
+    for (int h = 0; h < 2; ++h) {
+        const auto pdfAt = [&](double x, double y) {
+            const glm::vec2 p{float(x), float(y)};
+            return glm::dot(p, p) > 1.0f ? 0.0 : double(glsl::bsdfPdf(m, wo, diskToDirection(p, h == 1)));
+        };
+        // ∫ over the square of side s centred at (x, y), given its midpoint value.
+        const std::function<double(double, double, double, double, int)> integrate =
+            [&](double x, double y, double s, double mid, int depth) {
+                const double q = s / 4.0;
+                const double v[4] = {pdfAt(x - q, y - q), pdfAt(x + q, y - q), pdfAt(x - q, y + q), pdfAt(x + q, y + q)};
+                const double coarse = mid * s * s * 2.0;
+                const double fine = (v[0] + v[1] + v[2] + v[3]) * (s * s / 4.0) * 2.0;
+                if (depth >= 5 || std::abs(fine - coarse) <= 1e-7) return fine;
+                return integrate(x - q, y - q, s / 2.0, v[0], depth + 1) + integrate(x + q, y - q, s / 2.0, v[1], depth + 1) +
+                       integrate(x - q, y + q, s / 2.0, v[2], depth + 1) + integrate(x + q, y + q, s / 2.0, v[3], depth + 1);
+            };
+        const double sub = 2.0 / n / k;
         for (int row = 0; row < n; ++row)
             for (int col = 0; col < n; ++col) {
-                double sum = 0.0;
+                double integral = 0.0;
                 for (int i = 0; i < k; ++i)
                     for (int j = 0; j < k; ++j) {
-                        const glm::vec2 p(float(-1.0 + 2.0 * (col + (j + 0.5) / k) / n),
-                                          float(1.0 - 2.0 * (row + (i + 0.5) / k) / n));
-                        if (glm::dot(p, p) > 1.0f) continue;
-                        sum += double(glsl::bsdfPdf(m, wo, diskToDirection(p, h == 1)));
+                        const double x = -1.0 + 2.0 * (col + (j + 0.5) / k) / n;
+                        const double y = 1.0 - 2.0 * (row + (i + 0.5) / k) / n;
+                        integral += integrate(x, y, sub, pdfAt(x, y), 0);
                     }
-                const double integral = sum * 2.0 * subArea;
                 t.pdfIntegral += integral;
                 t.expected[std::size_t(h * n * n + row * n + col)] = N * integral;
             }
+    }
     t.expected[cells] = N * std::max(0.0, 1.0 - t.pdfIntegral);
     t.chi2 = stats::chiSquareTest(t.observed, t.expected);
     t.pass = !t.chi2.sampleInZeroCell && t.chi2.pValue >= alpha;
