@@ -205,7 +205,7 @@ std::vector<Fence> scanFences(const std::vector<std::string>& lines, const std::
     return fences;
 }
 
-enum class Section { BeforeTitle, Introduction, Goals, Step, Questions, Exercise, TeacherNotes, Sources };
+enum class Section { BeforeTitle, Introduction, Goals, Step, Questions, Exercise, GoingFurther, TeacherNotes, Sources };
 
 // Step numbers are checked to count 1, 2, 3...; one read as more than this is out of order anyway,
 // so reading stops growing it there (no overflow).
@@ -320,6 +320,7 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
         case Section::Introduction: lesson.introduction = slice(titleLine, last); break;
         case Section::Step: lesson.steps.back().text = slice(sectionLine, last); break;
         case Section::Exercise: lesson.exercise = slice(sectionLine, last); break;
+        case Section::GoingFurther: lesson.goingFurther = slice(sectionLine, last); break;
         case Section::TeacherNotes: lesson.teacherNotes = slice(sectionLine, last); break;
         case Section::Sources: lesson.sources = slice(sectionLine, last); break;
         default: break;
@@ -372,6 +373,8 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             } else if (key == "exercise") {
                 section = Section::Exercise;
                 exerciseLine = b.line;
+            } else if (key == "going further") {
+                section = Section::GoingFurther;
             } else if (key == "teacher's notes" || key == "teacher\u2019s notes" || key == "notes for the teacher") {
                 section = Section::TeacherNotes;
             } else if (key == "sources" || key == "references") {
@@ -379,7 +382,7 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             } else {
                 throw fail(b.line, "unknown section '" + heading +
                                        "'; expected 'Learning goals', 'Step N: TITLE', 'Questions', 'Exercise', "
-                                       "'Teacher's notes' or 'Sources'");
+                                       "'Going further', 'Teacher's notes' or 'Sources'");
             }
             break;
         }

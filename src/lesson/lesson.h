@@ -47,6 +47,7 @@ struct Lesson {
     std::vector<LessonStep> steps;        // "## Step N: TITLE" sections, N = 1, 2, ...
     std::vector<std::string> questions;   // "## Questions" list items
     std::string exercise;                 // "## Exercise" Markdown
+    std::string goingFurther;             // "## Going further" Markdown (optional): notebooks, reading
     std::string teacherNotes;             // "## Teacher's notes" Markdown (optional)
     std::string sources;                  // "## Sources" Markdown (optional)
 

@@ -55,6 +55,10 @@ wait-spp 4
 
 Do it.
 
+## Going further
+
+Open `notebooks/x.ipynb`.
+
 ## Sources
 
 - Kajiya 1986.
@@ -101,6 +105,7 @@ TEST(Lesson, ParsesEveryPart) {
     ASSERT_EQ(l.questions.size(), 2u);
     EXPECT_EQ(l.questions[1], "Why not, on two lines?");
     EXPECT_EQ(l.exercise, "Do it.");
+    EXPECT_EQ(l.goingFurther, "Open `notebooks/x.ipynb`.");
     EXPECT_EQ(l.sources, "- Kajiya 1986.");
     EXPECT_EQ(l.resolve("scenes/furnace.json"), (kRoot / "scenes/furnace.json").lexically_normal());
 }
@@ -139,7 +144,7 @@ TEST(Lesson, StructureMistakesNameFileAndLine) {
               "lessons/t.md:22: error: step numbered above 9999, expected 2");
     EXPECT_EQ(errorOf(replaced(kGood, "## Questions", "## Quiz")),
               "lessons/t.md:29: error: unknown section 'Quiz'; expected 'Learning goals', 'Step N: TITLE', "
-              "'Questions', 'Exercise', 'Teacher's notes' or 'Sources'");
+              "'Questions', 'Exercise', 'Going further', 'Teacher's notes' or 'Sources'");
     EXPECT_EQ(errorOf(replaced(kGood, "```raylab\nset", "```text\nset")),
               "lessons/t.md:22: error: step 2 has no ```raylab block");
     EXPECT_EQ(errorOf(replaced(kGood, "Some text.", "```raylab\nreset\n```")),
@@ -150,7 +155,7 @@ TEST(Lesson, StructureMistakesNameFileAndLine) {
               "lessons/t.md:7: error: no learning goals (a '## Learning goals' list)");
     EXPECT_EQ(errorOf(replaced(kGood, "Do it.", "")), "lessons/t.md:35: error: no exercise (a '## Exercise' section)");
     EXPECT_EQ(errorOf(replaced(kGood, "## Sources", "# Sources")),
-              "lessons/t.md:39: error: a second '# ' title; a lesson has one, sections are '## '");
+              "lessons/t.md:43: error: a second '# ' title; a lesson has one, sections are '## '");
     EXPECT_EQ(errorOf("Text first.\n\n## Step 1: x\n"), "lessons/t.md:3: error: the lesson must start with a '# TITLE' heading");
     EXPECT_EQ(errorOf(replaced(kGood, "## Questions", "Questions\n---------")),
               "lessons/t.md:29: error: write headings as '# ' and '## ', not underlined");

@@ -138,6 +138,12 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     ImGui::PushID("exercise");
     drawMarkdown(l.exercise);
     ImGui::PopID();
+    if (!l.goingFurther.empty()) {
+        heading("Going further");
+        ImGui::PushID("further");
+        drawMarkdown(l.goingFurther);
+        ImGui::PopID();
+    }
     if (!l.teacherNotes.empty() && ImGui::CollapsingHeader("Teacher's notes")) {
         ImGui::PushID("notes");
         drawMarkdown(l.teacherNotes);
