@@ -47,6 +47,32 @@ std::string fileHash(const fs::path& file) {
     return textHash(bytes.str());
 }
 
+Reference batchReference(int batches, const std::function<Image(int)>& renderBatch, const std::string& description,
+                         const std::string& command) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Image> images;
+    for (int k = 0; k < batches; ++k) images.push_back(renderBatch(k));
+    Reference r;
+    r.mean = Image(images[0].width, images[0].height);
+    r.variance = Image(images[0].width, images[0].height);
+    for (size_t i = 0; i < r.mean.rgba.size(); ++i) {
+        double sum = 0.0, sumSq = 0.0;
+        for (const Image& im : images) {
+            sum += im.rgba[i];
+            sumSq += double(im.rgba[i]) * im.rgba[i];
+        }
+        const double m = sum / batches;
+        // Variance of the mean of `batches` independent estimates.
+        const double var = batches > 1 ? std::max(0.0, (sumSq - batches * m * m) / (batches - 1)) / batches : 0.0;
+        r.mean.rgba[i] = float(m);
+        r.variance.rgba[i] = i % 4 == 3 ? 1.0f : float(var);
+    }
+    r.description = description;
+    r.command = command;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
 Reference cachedReference(const fs::path& cacheBase, const std::string& key, int batches,
                           const std::function<Image(int)>& renderBatch, const std::string& description,
                           const std::string& command) {
@@ -70,27 +96,7 @@ Reference cachedReference(const fs::path& cacheBase, const std::string& key, int
             // A broken cache is rebuilt below.
         }
     }
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<Image> images;
-    for (int k = 0; k < batches; ++k) images.push_back(renderBatch(k));
-    Reference r;
-    r.mean = Image(images[0].width, images[0].height);
-    r.variance = Image(images[0].width, images[0].height);
-    for (size_t i = 0; i < r.mean.rgba.size(); ++i) {
-        double sum = 0.0, sumSq = 0.0;
-        for (const Image& im : images) {
-            sum += im.rgba[i];
-            sumSq += double(im.rgba[i]) * im.rgba[i];
-        }
-        const double m = sum / batches;
-        // Variance of the mean of `batches` independent estimates.
-        const double var = batches > 1 ? std::max(0.0, (sumSq - batches * m * m) / (batches - 1)) / batches : 0.0;
-        r.mean.rgba[i] = float(m);
-        r.variance.rgba[i] = i % 4 == 3 ? 1.0f : float(var);
-    }
-    r.description = description;
-    r.command = command;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Reference r = batchReference(batches, renderBatch, description, command);
     fs::create_directories(cacheBase.parent_path());
     writeImage(meanFile, r.mean, {}, {});
     writeImage(varianceFile, r.variance, {}, {});

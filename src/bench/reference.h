@@ -25,7 +25,11 @@ struct Reference {
 
 Reference analyticReference(int width, int height, glm::vec3 value);
 
-// renderBatch(k) renders independent batch k (k = 0 … batches−1, a different seed each).
+// The mean of renderBatch(0 … batches−1) (independent renders, batches ≥ 1) and the variance of
+// that mean per pixel (0 for one batch), timed.
+Reference batchReference(int batches, const std::function<Image(int)>& renderBatch, const std::string& description,
+                         const std::string& command);
+// batchReference, cached on disk. renderBatch(k) renders independent batch k (k = 0 … batches−1, a different seed each).
 Reference cachedReference(const std::filesystem::path& cacheBase, const std::string& key, int batches,
                           const std::function<Image(int)>& renderBatch, const std::string& description,
                           const std::string& command);
