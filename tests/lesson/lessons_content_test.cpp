@@ -193,6 +193,28 @@ TEST(Lessons, AllTwelveLoadInOrder) {
     }
 }
 
+// The notebooks (notebooks/*.ipynb) are where a lesson's "Going further" sends a student: every
+// notebook a lesson names exists, and every notebook is named by some lesson.
+TEST(Lessons, GoingFurtherPointsToEveryNotebook) {
+    const fs::path root = kLessons.parent_path();
+    std::set<std::string> notebooks;
+    for (const auto& entry : fs::directory_iterator(root / "notebooks"))
+        if (entry.path().extension() == ".ipynb") notebooks.insert("notebooks/" + entry.path().filename().string());
+    ASSERT_GE(notebooks.size(), 4u);
+    std::set<std::string> named;
+    for (const Lesson& lesson : loadLessons(kLessons)) {
+        const std::string& text = lesson.goingFurther;
+        for (size_t at = text.find("notebooks/"); at != std::string::npos; at = text.find("notebooks/", at + 1)) {
+            const size_t end = text.find(".ipynb", at);
+            ASSERT_NE(end, std::string::npos) << lesson.file << ": 'notebooks/' without a notebook file";
+            const std::string path = text.substr(at, end + 6 - at);
+            EXPECT_TRUE(notebooks.count(path)) << lesson.file << " names " << path << ", which does not exist";
+            named.insert(path);
+        }
+    }
+    for (const std::string& n : notebooks) EXPECT_TRUE(named.count(n)) << n << " is in no lesson's Going further";
+}
+
 TEST_P(ShippedLesson, LoadsWithItsSceneAndEveryStepApplies) {
     const Lesson lesson = loadLesson(kLessons / GetParam());
     EXPECT_FALSE(lesson.title.empty());
