@@ -15,6 +15,13 @@ scenes and keys raise SceneError with raylab-render's located message.
 from __future__ import annotations
 
 import atexit
+import os
+
+# An installed package carries the shaders (cmake --install); in the build tree the tracer finds
+# them in the source tree.
+_SHADERS = os.path.join(os.path.dirname(__file__), "shaders")
+if not os.environ.get("RAYLAB_SHADER_DIR") and os.path.isdir(os.path.join(_SHADERS, "entry")):
+    os.environ["RAYLAB_SHADER_DIR"] = _SHADERS
 from typing import Any, Iterable, Iterator, Optional
 
 import numpy as np
