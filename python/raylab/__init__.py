@@ -106,7 +106,9 @@ def debug_view(scene: Scene, view: str, spp: Optional[int] = None, seed: Optiona
                bounce: int = 1, tracer: str = "fragment") -> Image:
     """Traces one of the viewer's debug views (debug_views() lists them) as raw per-pixel means,
     as raylab-render --debug-view does: normals, depth, albedo, the heat maps (R = box tests,
-    G = triangle tests of the camera ray; .meta has the largest counts), a bounce's light, ..."""
+    G = triangle tests of the camera ray; .meta has the largest counts), a bounce's light, ...
+    material-id and object-id hold one false colour per id, as the viewer shows them, not the id;
+    .meta["legend"] says how the viewer reads each view."""
     return _image(_raylab._debug_view(scene, view, spp=spp, seed=seed, bounce=bounce, tracer=tracer))
 
 

@@ -110,6 +110,7 @@ py::tuple debugView(const PyScene& s, const std::string& name, std::optional<int
             const RenderOutcome outcome = renderProgressively(tracer, scene.render, &stop);
             Rendered r{tracer.readImage(), metadata(tracer, scene, outcome, tracerName, gl)};
             r.meta["view"] = name;
+            r.meta["legend"] = std::string(debugViewInfo(*view).legend);   // how the viewer reads the values
             if (heat) {
                 const glm::uvec2 most = heat->heatMax();
                 r.meta["box_tests_max"] = most.x;

@@ -60,6 +60,8 @@ class RenderMatchesCli(unittest.TestCase):
                                         "--spp", "1", "--width", "32", "--height", "18")
             self.assertEqual(status, 0, err)
             self.assertTrue(np.array_equal(view, raylab.read_image(out)))
+        self.assertEqual(view.meta["view"], "normals")
+        self.assertIn("BVH boxes tested", raylab.debug_view(scene, "boxes", spp=1).meta["legend"])
 
     def test_inspect_matches_cli(self):
         scene = small("cornell_box.json")
