@@ -25,6 +25,14 @@ struct BsdfParams {
     float ior;
 };
 
+// The metallic workflow of other tools on raylab's f0 model: a metal's base colour becomes its f0
+// and it has no diffuse lobe (glTF 2.0, KHR metallic-roughness), blended by `metallic`.
+RL_FN BsdfParams bsdfWithMetallic(BsdfParams m, float metallic) {
+    m.f0 = mix(m.f0, m.albedo, metallic);
+    m.albedo = m.albedo * (1.0f - metallic);
+    return m;
+}
+
 RL_FN float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
 
 // Does sampling need a random number to choose a lobe? (Pure Lambert does not, which keeps its

@@ -44,15 +44,11 @@ void applyMaterialTextures(inout Hit hit, vec3 rayDir, float coneWidth, inout Bs
 #endif
     }
 #if RAYLAB_TEXTURE_METALLIC
-    // The metallic workflow of other tools on raylab's f0 model (scenes/FORMAT.md): the textured
-    // albedo is the base colour; f0 = mix(f0, base, m), albedo = base·(1 − m).
+    // The metallic workflow (scenes/FORMAT.md): the textured albedo is the base colour.
     float metallic = materials[hit.material].metallic;
     uint metallicTexture = materials[hit.material].metallicTexture;
     if (metallicTexture > 0u) metallic *= sampleHitTexture(metallicTexture, hit, rayDir, coneWidth).b;
-    if (metallic > 0.0f) {
-        bsdf.f0 = mix(bsdf.f0, bsdf.albedo, metallic);
-        bsdf.albedo *= 1.0f - metallic;
-    }
+    if (metallic > 0.0f) bsdf = bsdfWithMetallic(bsdf, metallic);
 #endif
 #if RAYLAB_TEXTURE_ROUGHNESS
     uint roughnessTexture = materials[hit.material].roughnessTexture;

@@ -17,10 +17,9 @@ float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * 
 } // namespace
 
 glsl::BsdfParams explorerBsdf(const Material& m, const LobeToggles& lobes) {
-    glsl::BsdfParams p{m.albedo, m.f0, glsl::ggxAlpha(m.roughness), m.transmission, m.ior};
-    // The metallic workflow as material_textures.glsl applies it to an untextured material.
-    p.f0 = glm::mix(p.f0, p.albedo, m.metallic);
-    p.albedo *= 1.0f - m.metallic;
+    // Untextured, so metallic applies as the scene upload bakes it (render/gpu_scene.cpp).
+    glsl::BsdfParams p = glsl::bsdfWithMetallic({m.albedo, m.f0, glsl::ggxAlpha(m.roughness), m.transmission, m.ior},
+                                                m.metallic);
     if (!lobes.diffuse) p.albedo = glm::vec3(0.0f);
     if (!lobes.specular) p.f0 = glm::vec3(0.0f);
     if (!lobes.transmission) p.transmission = 0.0f;

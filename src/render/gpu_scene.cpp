@@ -5,6 +5,7 @@
 #include "render/environment_distribution.h"
 #include "render/light_list.h"
 #include "shaders/include/bindings.glsl"
+#include "shaders/include/bsdf.glsl"
 #include "shaders/include/scene_types.glsl"
 
 #include <glad/gl.h>
@@ -91,11 +92,11 @@ void GpuScene::updateMaterials(const Scene& scene, const glm::dvec3& origin) {
 void GpuScene::uploadMaterials(const Scene& scene) {
     std::vector<glsl::GpuMaterial> materials;
     for (const Material& m : scene.materials) {
-        // Metallic on raylab's f0 model: f0 = mix(f0, base, m), albedo = base·(1 − m). Exact here
-        // when the base colour is constant; textured ones are mixed per hit (material_textures.glsl).
-        const bool bake = !metallicOnGpu(m);
-        const glm::vec3 albedo = bake ? m.albedo * (1.0f - m.metallic) : m.albedo;
-        const glm::vec3 f0 = bake ? glm::mix(m.f0, m.albedo, m.metallic) : m.f0;
+        // Metallic (bsdfWithMetallic) baked here when the base colour is constant; textured ones
+        // are mixed per hit (material_textures.glsl).
+        const glsl::BsdfParams baked = glsl::bsdfWithMetallic({m.albedo, m.f0, 0.0f, 0.0f, 1.0f},
+                                                              metallicOnGpu(m) ? 0.0f : m.metallic);
+        const glm::vec3 albedo = baked.albedo, f0 = baked.f0;
         materials.push_back({glm::vec4(albedo, m.roughness), glm::vec4(m.radiance(), m.transmission),
                              glm::vec4(f0, m.ior), unsigned(m.albedoTextureIndex + 1),
                              unsigned(m.normalTextureIndex + 1), unsigned(m.roughnessTextureIndex + 1),
