@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <numbers>
 
 namespace raylab {
@@ -95,6 +94,23 @@ int diskCell(int n, glm::vec3 w) {
     return (w.z < 0.0f ? n * n : 0) + row * n + col;
 }
 
+namespace {
+
+// ∫ f dω over the square of side s centred at (x, y) on the disk (dω = 2 dA), given f there: the
+// midpoints of its quarters, each quarter again where they disagree with the whole (5 levels).
+template <class F>
+double integrateSquare(const F& f, double x, double y, double s, double mid, int depth) {
+    const double q = s / 4.0;
+    const double v[4] = {f(x - q, y - q), f(x + q, y - q), f(x - q, y + q), f(x + q, y + q)};
+    const double coarse = mid * s * s * 2.0;
+    const double fine = (v[0] + v[1] + v[2] + v[3]) * (s * s / 4.0) * 2.0;
+    if (depth >= 5 || std::abs(fine - coarse) <= 1e-7) return fine;
+    return integrateSquare(f, x - q, y - q, s / 2.0, v[0], depth + 1) + integrateSquare(f, x + q, y - q, s / 2.0, v[1], depth + 1) +
+           integrateSquare(f, x - q, y + q, s / 2.0, v[2], depth + 1) + integrateSquare(f, x + q, y + q, s / 2.0, v[3], depth + 1);
+}
+
+} // namespace
+
 SamplerTest testSampler(const glsl::BsdfParams& m, glm::vec3 wo, const std::vector<GpuSample>& samples, int n,
                         double alpha) {
     SamplerTest t;
@@ -124,17 +140,6 @@ SamplerTest testSampler(const glsl::BsdfParams& m, glm::vec3 wo, const std::vect
             const glm::vec2 p{float(x), float(y)};
             return glm::dot(p, p) > 1.0f ? 0.0 : double(glsl::bsdfPdf(m, wo, diskToDirection(p, h == 1)));
         };
-        // ∫ over the square of side s centred at (x, y), given its midpoint value.
-        const std::function<double(double, double, double, double, int)> integrate =
-            [&](double x, double y, double s, double mid, int depth) {
-                const double q = s / 4.0;
-                const double v[4] = {pdfAt(x - q, y - q), pdfAt(x + q, y - q), pdfAt(x - q, y + q), pdfAt(x + q, y + q)};
-                const double coarse = mid * s * s * 2.0;
-                const double fine = (v[0] + v[1] + v[2] + v[3]) * (s * s / 4.0) * 2.0;
-                if (depth >= 5 || std::abs(fine - coarse) <= 1e-7) return fine;
-                return integrate(x - q, y - q, s / 2.0, v[0], depth + 1) + integrate(x + q, y - q, s / 2.0, v[1], depth + 1) +
-                       integrate(x - q, y + q, s / 2.0, v[2], depth + 1) + integrate(x + q, y + q, s / 2.0, v[3], depth + 1);
-            };
         const double sub = 2.0 / n / k;
         for (int row = 0; row < n; ++row)
             for (int col = 0; col < n; ++col) {
@@ -143,7 +148,7 @@ SamplerTest testSampler(const glsl::BsdfParams& m, glm::vec3 wo, const std::vect
                     for (int j = 0; j < k; ++j) {
                         const double x = -1.0 + 2.0 * (col + (j + 0.5) / k) / n;
                         const double y = 1.0 - 2.0 * (row + (i + 0.5) / k) / n;
-                        integral += integrate(x, y, sub, pdfAt(x, y), 0);
+                        integral += integrateSquare(pdfAt, x, y, sub, pdfAt(x, y), 0);
                     }
                 t.pdfIntegral += integral;
                 t.expected[std::size_t(h * n * n + row * n + col)] = N * integral;
