@@ -11,7 +11,6 @@
 #include "scene/parameters.h"
 #include "scene/scene_writer.h"
 
-#include <algorithm>
 #include <optional>
 
 namespace raylab::python {
@@ -60,8 +59,8 @@ py::dict errorOf(const py::object& image, const py::object& reference) {
     return out;
 }
 
-// raylab-bench's reference of a scene: the mean of `batches` renders of `spp` each, seeds 1000 + k,
-// at least 16 samples a pass; cached in `cache` (a path without extension) when given.
+// raylab-bench's reference of a scene (renderReferenceBatch), cached in `cache` (a path without
+// extension) when given.
 py::tuple reference(const PyScene& s, int spp, int batches, const std::optional<std::string>& cache) {
     if (spp < 1) throw py::value_error("spp must be at least 1");
     if (batches < 2) throw py::value_error("batches must be at least 2 (the variance of the mean needs two)");
@@ -69,14 +68,7 @@ py::tuple reference(const PyScene& s, int spp, int batches, const std::optional<
     std::atomic<bool> stop{false};
     auto renderBatch = [&](int k) {
         return onGlThread([&](GlState& gl) {
-            Scene batch = scene;
-            batch.render.seed = 1000u + unsigned(k);
-            batch.render.spp = spp;
-            batch.render.rpp = std::max(batch.render.rpp, 16);
-            PathTracer& tracer = gl.tracer(TracerEntry::Fragment, TracerVariant::Beauty);
-            tracer.setScene(batch);
-            while (tracer.samplesPerPixel() < std::uint64_t(spp) && !stop.load()) tracer.renderPass();
-            return tracer.readImage();
+            return renderReferenceBatch(gl.tracer(TracerEntry::Fragment, TracerVariant::Beauty), scene, k, spp, &stop);
         }, &stop);
     };
     const std::string description = "mean of " + std::to_string(batches) + " raylab renders × " + std::to_string(spp) + " spp";

@@ -188,14 +188,9 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     o.referenceDir / (s.name + "_" + std::to_string(mode.width) + "x" + std::to_string(mode.height)),
                     key, mode.referenceBatches,
                     [&](int k) {
-                        Scene batch = scene;
-                        batch.render.seed = 1000u + unsigned(k);
-                        batch.render.spp = mode.referenceSpp;
-                        batch.render.rpp = std::max(batch.render.rpp, 16);
-                        tracer.setScene(batch);
-                        while (tracer.samplesPerPixel() < std::uint64_t(mode.referenceSpp)) tracer.renderPass();
+                        Image image = renderReferenceBatch(tracer, scene, k, mode.referenceSpp);
                         std::cerr << "   reference batch " << k + 1 << "/" << mode.referenceBatches << "\n";
-                        return tracer.readImage();
+                        return image;
                     },
                     "mean of " + std::to_string(mode.referenceBatches) + " raylab renders × " +
                         std::to_string(mode.referenceSpp) + " spp",

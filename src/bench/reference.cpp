@@ -47,6 +47,16 @@ std::string fileHash(const fs::path& file) {
     return textHash(bytes.str());
 }
 
+Image renderReferenceBatch(PathTracer& tracer, const Scene& scene, int k, int spp, const std::atomic<bool>* stop) {
+    Scene batch = scene;
+    batch.render.seed = 1000u + unsigned(k);
+    batch.render.spp = spp;
+    batch.render.rpp = std::max(batch.render.rpp, 16);
+    tracer.setScene(batch);
+    while (tracer.samplesPerPixel() < std::uint64_t(spp) && !(stop && stop->load())) tracer.renderPass();
+    return tracer.readImage();
+}
+
 Reference batchReference(int batches, const std::function<Image(int)>& renderBatch, const std::string& description,
                          const std::string& command) {
     const auto start = std::chrono::steady_clock::now();

@@ -4,9 +4,11 @@
 // recording how it was made. A cache whose sidecar key differs (other scene text, size, spp,
 // renderer version) is rendered again.
 #include "render/image.h"
+#include "render/path_tracer.h"
 
 #include <glm/glm.hpp>
 
+#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -24,6 +26,11 @@ struct Reference {
 };
 
 Reference analyticReference(int width, int height, glm::vec3 value);
+
+// Batch k of raylab's reference of `scene`: spp samples with seed 1000 + k, at least 16 a pass.
+// Stops early (an incomplete image) once *stop is set.
+Image renderReferenceBatch(PathTracer& tracer, const Scene& scene, int k, int spp,
+                           const std::atomic<bool>* stop = nullptr);
 
 // The mean of renderBatch(0 … batches−1) (independent renders, batches ≥ 1) and the variance of
 // that mean per pixel (0 for one batch), timed.
