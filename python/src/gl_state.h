@@ -17,9 +17,9 @@ struct GlState {
 
     // The tracer of `variant` for `entry`, made on first use; each keeps its own compiled variants.
     PathTracer& tracer(TracerEntry entry, TracerVariant variant) {
-        auto& slot = tracers[entry == TracerEntry::Compute ? 1 : 0][int(variant)];
-        if (!slot) slot = std::make_unique<PathTracer>(variantOptions(variant, entry));
-        return *slot;
+        TracerVariants& cache = entry == TracerEntry::Compute ? compute_ : fragment_;
+        if (PathTracer* t = cache.find(variant)) return *t;
+        return cache.keep(variant, cache.compile(variant, nullptr));
     }
     PathInspector& inspector() {
         if (!inspector_) inspector_ = std::make_unique<PathInspector>();
@@ -31,7 +31,8 @@ struct GlState {
     }
 
 private:
-    std::unique_ptr<PathTracer> tracers[2][4];
+    TracerVariants fragment_{TracerEntry::Fragment};
+    TracerVariants compute_{TracerEntry::Compute};
     std::unique_ptr<PathInspector> inspector_;
     std::unique_ptr<GpuSampler> sampler_;
 };
