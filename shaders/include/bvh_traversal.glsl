@@ -4,7 +4,8 @@
 // includer first defines the accessors
 //   GpuBvhNode topNode(uint i); GpuBvhNode meshNode(uint i); GpuInstance instanceAt(uint i);
 //   GpuTriangle triangleAt(uint i); GpuVertex vertexAt(uint i); GpuSphere sphereAt(uint i);
-//   uint instanceCount(); uvec4 instanceInfo(uint i); uint sphereCount();
+//   uint instanceCount(); uvec4 instanceInfo(uint i); vec3 instanceWorldMin(uint i);
+//   vec3 instanceWorldMax(uint i); uint sphereCount();
 // (GLSL: scene_geometry.glsl reads buffers; C++: accel/cpu_traversal.h reads vectors), and may
 // define RL_COUNT_BOX() / RL_COUNT_TRIANGLE() to count tests (heat maps).
 #ifndef RAYLAB_BVH_TRAVERSAL_GLSL
@@ -57,8 +58,9 @@ RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool a
         RL_COUNT_BOX();
         bool descended = false;
         if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t - tOffset) >= 0.0f) {
-            if (n.info.w == 0u) {
-                for (uint i = n.info.x; i < n.info.x + n.info.y; ++i) {
+            if (bvhNodeIsLeaf(n)) {
+                uint first = bvhNodeLink(n);
+                for (uint i = first; i < first + bvhNodeCount(n); ++i) {
                     GpuTriangle tri = triangleAt(i);
                     RL_COUNT_TRIANGLE();
                     TriangleHit h;
@@ -71,9 +73,9 @@ RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool a
                 if (found && anyHit) done = true;
             } else {
                 // Visit the child on the near side of the split plane first.
-                bool dirNeg = ray.dir[int(n.info.z)] < 0.0f;
+                bool dirNeg = ray.dir[int(bvhNodeAxis(n))] < 0.0f;
                 uint first = node + 1u;
-                uint second = n.info.x;
+                uint second = bvhNodeLink(n);
                 if (sp < BVH_STACK_SIZE) stack[sp++] = dirNeg ? first : second;
                 node = dirNeg ? second : first;
                 descended = true;
@@ -141,9 +143,15 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
     }
 #endif
 #if RAYLAB_FEATURE_MESHES
+    // The object's world box first: it is read by the loop counter (one load for all lanes) and
+    // spares a ray the instance transform and the per-lane read of the mesh's root for every
+    // object it passes by.
+    vec3 invDir = safeInverseDir(ray.dir);
     uint count = instanceCount();
     for (uint i = 0u; i < count; ++i) {
         if (instanceInfo(i).x != INSTANCE_MESH) continue;
+        RL_COUNT_BOX();
+        if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) < 0.0f) continue;
         if (intersectInstance(ray, i, anyHit, rec)) found = true;
         if (found && anyHit) break;
     }
@@ -160,16 +168,17 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
         RL_COUNT_BOX();
         bool descended = false;
         if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t) >= 0.0f) {
-            if (n.info.w == 0u) {
-                for (uint i = n.info.x; i < n.info.x + n.info.y; ++i) {
+            if (bvhNodeIsLeaf(n)) {
+                uint first = bvhNodeLink(n);
+                for (uint i = first; i < first + bvhNodeCount(n); ++i) {
                     if (intersectInstance(ray, i, anyHit, rec)) found = true;
                     if (found && anyHit) break;
                 }
                 if (found && anyHit) done = true;
             } else {
-                bool dirNeg = ray.dir[int(n.info.z)] < 0.0f;
+                bool dirNeg = ray.dir[int(bvhNodeAxis(n))] < 0.0f;
                 uint first = node + 1u;
-                uint second = n.info.x;
+                uint second = bvhNodeLink(n);
                 if (sp < BVH_STACK_SIZE) stack[sp++] = dirNeg ? first : second;
                 node = dirNeg ? second : first;
                 descended = true;

@@ -5,16 +5,27 @@
 #include "compat.glsl"
 RL_NAMESPACE_BEGIN
 
-// One BVH node, depth-first order: an interior node's first child follows it directly.
+// One BVH node, depth-first order: an interior node's first child follows it directly. The links
+// ride in the bounds' w slots, so a node is 32 bytes read in two loads (pbrt-v4's LinearBVHNode
+// size; on llvmpipe every component of a per-lane load costs a scalar load, bench/mesh_rays.md).
 struct GpuBvhNode {
-    vec4 boundsMin;   // xyz; w unused
-    vec4 boundsMax;   // xyz; w unused
-    uvec4 info;       // x: leaf → first primitive, interior → second child; y: primitive count
-                      // (leaf); z: split axis (interior); w: 1 = interior, 0 = leaf
+    vec4 boundsMin;   // xyz; w: bits of the link: leaf → first primitive, interior → second child
+    vec4 boundsMax;   // xyz; w: bits of the kind: leaf → count << 3, interior → axis << 1 | 1
 };
 // A node of zeros is an empty leaf, so traversal ends at once for it. This matters on llvmpipe:
 // in fragment shaders, lanes outside the triangle read zeros from buffers; with "count 0 =
 // interior" those lanes looped until Mesa's loop limit, which also lost the live lanes' hits.
+RL_FN uint bvhNodeLink(GpuBvhNode n) { return floatBitsToUint(n.boundsMin.w); }
+RL_FN bool bvhNodeIsLeaf(GpuBvhNode n) { return (floatBitsToUint(n.boundsMax.w) & 1u) == 0u; }
+RL_FN uint bvhNodeCount(GpuBvhNode n) { return floatBitsToUint(n.boundsMax.w) >> 3u; }
+RL_FN uint bvhNodeAxis(GpuBvhNode n) { return (floatBitsToUint(n.boundsMax.w) >> 1u) & 3u; }
+RL_FN GpuBvhNode bvhLeaf(vec3 lo, vec3 hi, uint first, uint count) {
+    return GpuBvhNode(vec4(lo.x, lo.y, lo.z, uintBitsToFloat(first)), vec4(hi.x, hi.y, hi.z, uintBitsToFloat(count << 3u)));
+}
+RL_FN GpuBvhNode bvhInterior(vec3 lo, vec3 hi, uint secondChild, uint axis) {
+    return GpuBvhNode(vec4(lo.x, lo.y, lo.z, uintBitsToFloat(secondChild)),
+                      vec4(hi.x, hi.y, hi.z, uintBitsToFloat((axis << 1u) | 1u)));
+}
 
 const uint INSTANCE_SPHERE = 0u;
 const uint INSTANCE_MESH = 1u;
@@ -28,6 +39,8 @@ struct GpuInstance {
     vec4 objectToWorld0;
     vec4 objectToWorld1;
     vec4 objectToWorld2;
+    vec4 worldMin;   // xyz: the object's world-space box, as in the top level's leaves; w unused
+    vec4 worldMax;
     uvec4 info;   // x: INSTANCE_SPHERE / INSTANCE_MESH; y: sphere index / mesh root node;
                   // z: material; w: bit 0 = has vertex normals, bit 1 = has uvs, bits 2+ = the
                   // object id (instanceObjectId)

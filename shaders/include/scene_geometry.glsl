@@ -22,6 +22,8 @@ GpuVertex vertexAt(uint i) { return vertices[i]; }
 GpuSphere sphereAt(uint i) { return spheres[i]; }
 uint instanceCount() { return uint(instances.length()); }
 uvec4 instanceInfo(uint i) { return instances[i].info; }
+vec3 instanceWorldMin(uint i) { return instances[i].worldMin.xyz; }
+vec3 instanceWorldMax(uint i) { return instances[i].worldMax.xyz; }
 uint sphereCount() { return uint(spheres.length()); }
 
 #if RAYLAB_COUNT_TRAVERSAL

@@ -23,6 +23,8 @@ inline GpuVertex vertexAt(uint i) { return cpuTraversal.geometry->vertices[i]; }
 inline GpuSphere sphereAt(uint i) { return cpuTraversal.geometry->spheres[i]; }
 inline uint instanceCount() { return uint(cpuTraversal.geometry->instances.size()); }
 inline uvec4 instanceInfo(uint i) { return cpuTraversal.geometry->instances[i].info; }
+inline vec3 instanceWorldMin(uint i) { return vec3(cpuTraversal.geometry->instances[i].worldMin); }
+inline vec3 instanceWorldMax(uint i) { return vec3(cpuTraversal.geometry->instances[i].worldMax); }
 inline uint sphereCount() { return uint(cpuTraversal.geometry->spheres.size()); }
 
 } // namespace raylab::glsl

@@ -16,8 +16,8 @@ double secondsSince(Clock::time_point start) {
 glsl::GpuBvhNode gpuNode(const BvhNode& n, std::uint32_t nodeOffset, std::uint32_t primitiveOffset) {
     const bool leaf = n.count > 0;
     const Aabb b = n.bounds.empty() ? Aabb{glm::vec3(0.0f), glm::vec3(-1.0f)} : n.bounds;   // never hit
-    return {glm::vec4(b.min, 0.0f), glm::vec4(b.max, 0.0f),
-            glm::uvec4(leaf ? primitiveOffset + n.index : nodeOffset + n.index, n.count, n.axis, leaf ? 0u : 1u)};
+    return leaf ? glsl::bvhLeaf(b.min, b.max, primitiveOffset + n.index, n.count)
+                : glsl::bvhInterior(b.min, b.max, nodeOffset + n.index, n.axis);
 }
 
 // Rows of the upper 3×4 part of an affine matrix (glm is column-major: m[column][row]).
@@ -87,10 +87,12 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
         const unsigned objectId = unsigned(g.spheres.size());   // spheres first (instanceObjectId)
         inst.info = glm::uvec4(glsl::INSTANCE_SPHERE, objectId, unsigned(s.material), objectId << 2u);
         g.spheres.push_back({glm::vec4(w.center, w.radius), glm::uvec4(unsigned(s.material), 0u, 0u, 0u)});
-        objects.push_back(inst);
         // Widened by a few ulps: the rounded c ± r may fall just inside the sphere's extent.
         const glm::vec3 slack = 4.0f * 5.9604645e-8f * (glm::abs(w.center) + glm::vec3(w.radius));
         bounds.push_back(Aabb{w.center - glm::vec3(w.radius) - slack, w.center + glm::vec3(w.radius) + slack});
+        inst.worldMin = glm::vec4(bounds.back().min, 0.0f);
+        inst.worldMax = glm::vec4(bounds.back().max, 0.0f);
+        objects.push_back(inst);
     }
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
@@ -102,7 +104,6 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
         const unsigned flags = (mesh.normals.empty() ? 0u : 1u) | (mesh.uvs.empty() ? 0u : 2u);
         const unsigned objectId = unsigned(scene.spheres.size() + m);   // then meshes
         inst.info = glm::uvec4(glsl::INSTANCE_MESH, g.meshRoot.at(m), unsigned(mesh.material), flags | (objectId << 2u));
-        objects.push_back(inst);
         Aabb world = transformedBounds(g.meshBounds.at(m), toWorld);
         if (!world.empty()) {
             // The rounded corners may sit a little inside the exact box: widen by a few ulps.
@@ -111,6 +112,10 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
             world.max += slack;
         }
         bounds.push_back(world);
+        // An empty mesh gets an inverted box, which no ray enters.
+        inst.worldMin = glm::vec4(world.empty() ? glm::vec3(0.0f) : world.min, 0.0f);
+        inst.worldMax = glm::vec4(world.empty() ? glm::vec3(-1.0f) : world.max, 0.0f);
+        objects.push_back(inst);
     }
     const Bvh top = buildBvh(bounds, options);
     g.topNodes.clear();

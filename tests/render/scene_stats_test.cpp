@@ -11,17 +11,17 @@ namespace raylab {
 namespace {
 
 // Nodes reachable from `root` in a depth-first flattened BVH (interior: first child follows, the
-// second is info.x); counts leaves too.
+// second is its link); counts leaves too.
 std::size_t reachable(const std::vector<glsl::GpuBvhNode>& nodes, std::uint32_t root, std::size_t& leaves) {
     std::size_t n = 0;
     std::function<void(std::uint32_t)> walk = [&](std::uint32_t i) {
         ++n;
-        if (nodes.at(i).info.w == 0u) {
+        if (glsl::bvhNodeIsLeaf(nodes.at(i))) {
             ++leaves;
             return;
         }
         walk(i + 1);
-        walk(nodes.at(i).info.x);
+        walk(glsl::bvhNodeLink(nodes.at(i)));
     };
     walk(root);
     return n;

@@ -500,7 +500,7 @@ TEST(IntersectionStress, TransformedMeshesAndSpheresThroughTheBvhHaveNoSelfHits)
                 target = vec3(cr) + cr.w * s.unitVector();
                 size = cr.w;
             } else {
-                const glm::uvec4 v = g.triangles[g.meshNodes[in.info.y].info.x].vertices;
+                const glm::uvec4 v = g.triangles[bvhNodeLink(g.meshNodes[in.info.y])].vertices;
                 vec2 b = s.next2();
                 if (b.x + b.y > 1.0f) b = vec2(1.0f) - b;
                 const vec3 pObj = (1.0f - b.x - b.y) * vec3(g.vertices[v.x].positionU) + b.x * vec3(g.vertices[v.y].positionU) +

@@ -79,7 +79,7 @@ inline std::vector<AimedRay> raysAtEachObject(const SceneGeometry& g, int perObj
         const bool sphere = in.info.x == glsl::INSTANCE_SPHERE;
         glm::vec3 v[3];
         if (!sphere) {
-            const glm::uvec4 tri = g.triangles[g.meshNodes[in.info.y].info.x].vertices;
+            const glm::uvec4 tri = g.triangles[glsl::bvhNodeLink(g.meshNodes[in.info.y])].vertices;
             for (int k = 0; k < 3; ++k) v[k] = glm::vec3(g.vertices[tri[k]].positionU);
         }
         // The object-to-world map in double: x ↦ M·x + t, from the stored float rows.

@@ -7,14 +7,14 @@ namespace {
 
 void collect(const std::vector<glsl::GpuBvhNode>& nodes, std::uint32_t i, int level, int depth, std::vector<Box>& out) {
     const glsl::GpuBvhNode& n = nodes.at(i);
-    const bool leaf = n.info.w == 0u;
+    const bool leaf = glsl::bvhNodeIsLeaf(n);
     if (level == depth || leaf) {
         const Box b{glm::vec3(n.boundsMin), glm::vec3(n.boundsMax)};
         if (b.lo.x <= b.hi.x) out.push_back(b);   // empty nodes are stored inverted
         return;
     }
     collect(nodes, i + 1, level + 1, depth, out);   // the first child follows its parent
-    collect(nodes, n.info.x, level + 1, depth, out);
+    collect(nodes, glsl::bvhNodeLink(n), level + 1, depth, out);
 }
 
 } // namespace
