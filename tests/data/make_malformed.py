@@ -433,7 +433,7 @@ def place(section, key):
         return {"materials": {"m": {key: SENTINEL}}, "objects": [{"material": "m"}]}, "materials.m." + key
     if key.startswith("transform."):
         return {"objects": [{"transform": {key.split(".")[1]: SENTINEL}}]}, "objects[0]." + key
-    if key in MESH or key in ("normals", "uvs", "file"):
+    if key in MESH or key in ("normals", "uvs", "file", "emission_sides"):
         obj = dict(MESH)
         if key == "file":
             obj = {"type": "mesh"}
@@ -650,17 +650,17 @@ scene("section_not_object", '{ "render": 3 }', ":1:13: error: render: expected a
 # Lights: each bad value of an entry of "lights", and a mesh's emission_sides.
 LIT = '{ "objects": [ { "type": "sphere" } ],\n  "lights": [ %s ] }\n'
 for name, light, expected in [
-        ("light_unknown_type", '{ "type": "lamp" }', ":2:24: error: lights[0].type: unknown value 'lamp' (allowed values: point, spot, distant)"),
+        ("light_unknown_type", '{ "type": "lamp" }', ":2:25: error: lights[0].type: unknown value 'lamp' (allowed values: point, spot, distant)"),
         ("light_no_type", '{ "position": [0, 1, 0] }', ":2:15: error: lights[0]: a light needs \"type\""),
-        ("light_intensity_and_power", '{ "type": "point", "intensity": 1, "power": 10 }', ":2:52: error: lights[0].power: give either \"intensity\" or \"power\", not both"),
-        ("light_inner_above_outer", '{ "type": "spot", "inner_angle": 40, "outer_angle": 30 }', ":2:47: error: lights[0].inner_angle: inner_angle (40) must not exceed outer_angle (30)"),
-        ("light_zero_direction", '{ "type": "distant", "direction": [0, 0, 0] }', ":2:51: error: lights[0].direction: must be a non-zero direction, got [0, 0, 0]"),
-        ("light_key_of_other_type", '{ "type": "point", "irradiance": 1 }', ":2:36: error: lights[0].irradiance: 'irradiance' does not apply to a point light"),
+        ("light_intensity_and_power", '{ "type": "point", "intensity": 1, "power": 10 }', ":2:50: error: lights[0].power: give either \"intensity\" or \"power\", not both"),
+        ("light_inner_above_outer", '{ "type": "spot", "inner_angle": 40, "outer_angle": 30 }', ":2:48: error: lights[0].inner_angle: inner_angle (40) must not exceed outer_angle (30)"),
+        ("light_zero_direction", '{ "type": "distant", "direction": [0, 0, 0] }', ":2:49: error: lights[0].direction: must be a non-zero direction, got [0, 0, 0]"),
+        ("light_key_of_other_type", '{ "type": "point", "irradiance": 1 }', ":2:34: error: lights[0].irradiance: 'irradiance' does not apply to a point light"),
         ("light_negative_intensity", '{ "type": "spot", "intensity": [1, -1, 1] }', ":2:50: error: lights[0].intensity[1]: must be >= 0, got -1"),
         ("light_spot_power_no_cone", '{ "type": "spot", "power": 5, "inner_angle": 0, "outer_angle": 0 }', ":2:42: error: lights[0].power: a spot with outer_angle 0 has no cone"),
         ("light_not_object", '3', ":2:15: error: lights[0]: expected an object")]:
     scene(name, LIT % light, expected)
-scene("lights_not_array", '{ "objects": [ { "type": "sphere" } ], "lights": { "type": "point" } }', ":1:51: error: lights: expected an array")
+scene("lights_not_array", '{ "objects": [ { "type": "sphere" } ], "lights": { "type": "point" } }', ":1:50: error: lights: expected an array")
 scene("lights_too_many", '{ "objects": [ { "type": "sphere" } ], "lights": [' + ", ".join(['{ "type": "point" }'] * 65) + "] }",
       "error: lights[64]: a scene takes at most 64 lights")
 
