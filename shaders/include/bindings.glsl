@@ -41,6 +41,7 @@
 #define BINDING_TRACER_PARAMS_UBO 0    // the tracer's parameters (TracerParams)
 #define BINDING_DEBUG_PARAMS_UBO 1     // the debug views' parameters
 #define BINDING_DISPLAY_PARAMS_UBO 2   // the display pass's parameters
+#define BINDING_ANALYTIC_LIGHTS_UBO 3  // point, spot and distant lights (analytic_lights.glsl)
 
 // Programs of their own: the self-test's sampler (entry/bsdf_samples.comp) and test shaders.
 #define BINDING_BSDF_SAMPLES 7

@@ -26,7 +26,9 @@
     RL_FEATURE(RAYLAB_TEXTURE_EMISSION, emissionTextures, textures, "emission-tex")              \
     RL_FEATURE(RAYLAB_TEXTURE_WRAP_MODES, textureWrapModes, textures, "wrap-modes")              \
     RL_FEATURE(RAYLAB_EMISSIVE_TRIANGLES, emissiveTriangles, always, "triangle-lights")          \
-    RL_FEATURE(RAYLAB_LIGHT_POWER_SELECTION, lightPowerSelection, always, "light-power")
+    RL_FEATURE(RAYLAB_LIGHT_POWER_SELECTION, lightPowerSelection, always, "light-power")         \
+    RL_FEATURE(RAYLAB_ANALYTIC_LIGHTS, analyticLights, always, "point-spot-sun")                 \
+    RL_FEATURE(RAYLAB_ONE_SIDED_EMITTERS, oneSidedEmitters, always, "one-sided")
 
 #define RAYLAB_FEATURES_SPECIALISED 1
 #define RAYLAB_FEATURE_SPHERES 1          // the scene has spheres
@@ -45,6 +47,8 @@
 #define RAYLAB_TEXTURE_WRAP_MODES 1       // some texture clamps or mirrors instead of repeating (glTF)
 #define RAYLAB_EMISSIVE_TRIANGLES 1       // with NEE: some mesh emits, its triangles are lights
 #define RAYLAB_LIGHT_POWER_SELECTION 1    // with NEE: lights differ in power, picked by power
+#define RAYLAB_ANALYTIC_LIGHTS 1          // the scene has point, spot or distant lights (scene `lights`)
+#define RAYLAB_ONE_SIDED_EMITTERS 1       // some mesh emits on its front side only (emission_sides front)
 #elif !defined(RAYLAB_FEATURES_SPECIALISED)
 #error "compiled without the scene's feature defines: pass featureDefines() (render/shader_variant.h)"
 #endif

@@ -96,6 +96,9 @@ float emitterLightPdf(vec3 p, vec3 q) {
 float triangleEmitterLightPdf(vec3 d, Hit hit) {
 #if RAYLAB_EMISSIVE_TRIANGLES
     uint light = triangleLightIndex[hit.primitive];
+#if RAYLAB_ONE_SIDED_EMITTERS
+    light &= ~TRIANGLE_FRONT_ONLY;
+#endif
     if (light == 0u) return 0.0f;
     int j = int(light) - 1;
     float len = length(d);
@@ -104,6 +107,17 @@ float triangleEmitterLightPdf(vec3 d, Hit hit) {
     return pdf * boundedLightPmf(params.lightCount + j);
 #else
     return 0.0f;
+#endif
+}
+
+// Whether the surface a ray hit emits nothing on the side the ray came from: the back of a mesh
+// with emission_sides front.
+bool emitterBackFace(vec3 rayDir, Hit hit) {
+#if RAYLAB_ONE_SIDED_EMITTERS
+    return instances[hit.instance].info.x == INSTANCE_MESH && (triangleLightIndex[hit.primitive] & TRIANGLE_FRONT_ONLY) != 0u &&
+           dot(rayDir, hit.normal) >= 0.0f;
+#else
+    return false;
 #endif
 }
 
@@ -129,6 +143,28 @@ float skyHitWeight(vec3 dir, PrevBounce prev, int lightCount) {
 #endif
     return w;
 }
+
+#if RAYLAB_ANALYTIC_LIGHTS
+// Radiance of the distant lights with a disc (angular radius > 0) that a ray leaving the scene
+// along unit dir looks into, each weighted against its light sample like the sky.
+vec3 distantLightsSeen(vec3 dir, PrevBounce prev, int lightCount) {
+    vec3 L = vec3(0.0f);
+    for (int a = 0; a < analyticLightCount(); ++a) {
+        GpuAnalyticLight l = analyticLights[a];
+        float oneMinusCos = l.axis.w;
+        if (int(l.positionType.w) != ANALYTIC_LIGHT_DISTANT || !(oneMinusCos > 0.0f) ||
+            !insideCone(dir, l.axis.xyz, oneMinusCos))
+            continue;
+        float w = 1.0f;
+#if RAYLAB_NEE
+        if (lightCount > 0 && !prev.delta)
+            w = bsdfHitWeight(prev.pdf, uniformConePdf(oneMinusCos) * boundedLightPmf(firstAnalyticLight() + a));
+#endif
+        L += l.emitted.rgb * w;
+    }
+    return L;
+}
+#endif
 
 // That weight for an emitting surface a ray hit.
 float surfaceHitWeight(Ray ray, Hit hit, PrevBounce prev, int lightCount) {
@@ -184,9 +220,45 @@ struct LightSample {
     vec3 point;     // triangle lights: the point sampled
 };
 
+#if RAYLAB_ANALYTIC_LIGHTS
+// Point and spot lights and a distant light without a disc are deltas (pbrt-v4 §12.1): their one
+// direction has pdf 1 in the estimator, and FLOAT_MAX for MIS, so the power heuristic gives the
+// light sample weight 1 (no BSDF sample can hit them). A distant disc is sampled as its cone.
+LightSample sampleAnalyticLight(GpuAnalyticLight l, vec3 p, vec2 u) {
+    LightSample ls = LightSample(vec3(0.0f), vec3(0.0f), 1.0f, FLOAT_MAX, vec3(0.0f));
+    int type = int(l.positionType.w);
+    if (type == ANALYTIC_LIGHT_DISTANT) {
+        float oneMinusCos = l.axis.w;
+        ls.wi = l.axis.xyz;
+        if (oneMinusCos > 0.0f) {
+            ls.wi = sampleUniformCone(l.axis.xyz, oneMinusCos, u);
+            ls.pdf = uniformConePdf(oneMinusCos);
+            ls.misPdf = ls.pdf;
+        }
+        ls.L = l.emitted.rgb;
+        return ls;
+    }
+    ls.point = l.positionType.xyz;
+    vec3 d = ls.point - p;
+    float dist2 = dot(d, d);
+    if (!(dist2 > 0.0f)) {
+        ls.pdf = 0.0f;
+        return ls;
+    }
+    ls.wi = d / sqrt(dist2);
+    // Intensity to radiance at p: I / r² (the inverse-square law).
+    ls.L = l.emitted.rgb / dist2;
+    if (type == ANALYTIC_LIGHT_SPOT) ls.L *= spotFalloff(dot(-ls.wi, l.axis.xyz), l.axis.w, l.emitted.w);
+    return ls;
+}
+#endif
+
 // Spheres by the cone they subtend, triangles by area, the sky map by its distribution and an
 // analytic sky uniformly; a pdf of 0 means no direction.
 LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
+#if RAYLAB_ANALYTIC_LIGHTS
+    if (k >= firstAnalyticLight()) return sampleAnalyticLight(analyticLights[k - firstAnalyticLight()], p, u);
+#endif
     LightSample ls = LightSample(vec3(0.0f), vec3(0.0f), 0.0f, 0.0f, vec3(0.0f));
     if (k >= params.lightCount) {
 #if RAYLAB_EMISSIVE_TRIANGLES
@@ -200,6 +272,10 @@ LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
             ls.pdf = triangleLightPdf(dist2, dot(normalize(cross(tl.p1.xyz - p0, tl.p2.xyz - p0)), ls.wi),
                                       tl.p0Area.w);
             ls.L = tl.radiance.rgb;
+#if RAYLAB_ONE_SIDED_EMITTERS
+            // The front faces along (p1 − p0) × (p2 − p0); p behind it receives nothing.
+            if (tl.radiance.a > 0.0f && dot(cross(tl.p1.xyz - p0, tl.p2.xyz - p0), ls.wi) >= 0.0f) ls.L = vec3(0.0f);
+#endif
         }
         ls.misPdf = ls.pdf;
 #endif
@@ -228,6 +304,11 @@ LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
 // Where a shadow ray towards light k must stop so that it does not hit the light itself: just
 // short of its surface (-1 when the ray misses it); the sky is at infinity.
 float shadowRayEnd(int k, Ray shadow, vec3 lightPoint) {
+#if RAYLAB_ANALYTIC_LIGHTS
+    // A distant light is at infinity; point and spot lights end at their point, as triangles.
+    if (k >= firstAnalyticLight() && int(analyticLights[k - firstAnalyticLight()].positionType.w) == ANALYTIC_LIGHT_DISTANT)
+        return FLOAT_MAX;
+#endif
     if (k >= params.lightCount) {
         float tMax = dot(lightPoint - shadow.origin, shadow.dir) * (1.0f - 1e-4f);
         return tMax > 0.0f ? tMax : -1.0f;
@@ -325,8 +406,15 @@ vec3 traceRadiance(Ray ray, inout Sampler smp, inout uint rays) {
 #endif
             vec3 dir = normalize(ray.dir);
             float w = skyHitWeight(dir, prev, lightCount);
+#if RAYLAB_ANALYTIC_LIGHTS
+            // The sky and the discs of distant lights, each weighted: one term, weight folded in.
+            vec3 Lesc = skyLookup(sky, dir) * w + distantLightsSeen(dir, prev, lightCount);
+            RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Lesc);
+            RAYLAB_RECORD(recordEmission(bounce, Lesc, 1.0f));
+#else
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * skyLookup(sky, dir) * w);
             RAYLAB_RECORD(recordEmission(bounce, skyLookup(sky, dir), w));
+#endif
             break;
         }
         GpuMaterial m = materials[hit.material];
@@ -341,6 +429,7 @@ vec3 traceRadiance(Ray ray, inout Sampler smp, inout uint rays) {
         coneWidth += coneSpread * hit.t * length(ray.dir);
         Le *= materialEmissionScale(hit, ray.dir, coneWidth);
 #endif
+        if (emitterBackFace(ray.dir, hit)) Le = vec3(0.0f);
         if (max(Le.r, max(Le.g, Le.b)) > 0.0f) {
             float w = surfaceHitWeight(ray, hit, prev, lightCount);
             RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);

@@ -1,5 +1,5 @@
 // Which light next-event estimation samples: the sky (when it is a light) or one of the bounded
-// lights (emissive spheres, then emissive triangles). GLSL only.
+// lights (emissive spheres, then emissive triangles, then point, spot and distant lights). GLSL only.
 // With RAYLAB_LIGHT_POWER_SELECTION (the lights differ in power) bounded lights are picked by
 // power through the alias table the host builds (render/light_list.h), and the sky gets 1/2 beside
 // them: its power is not comparable with a bounded light's (it depends on the scene's extent), so
@@ -23,7 +23,16 @@ int triangleLightCount() {
 #endif
 }
 
-int boundedLightCount() { return params.lightCount + triangleLightCount(); }
+#if RAYLAB_ANALYTIC_LIGHTS
+int analyticLightCount() { return analyticLightInfo.x; }
+#else
+int analyticLightCount() { return 0; }
+#endif
+
+// Index of the first point, spot or distant light among the bounded lights.
+int firstAnalyticLight() { return params.lightCount + triangleLightCount(); }
+
+int boundedLightCount() { return firstAnalyticLight() + analyticLightCount(); }
 
 #if RAYLAB_LIGHT_POWER_SELECTION
 float skySelectionPmf() {

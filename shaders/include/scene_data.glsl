@@ -4,6 +4,7 @@
 #define RAYLAB_SCENE_DATA_GLSL
 #include "features.glsl"
 #include "scene_types.glsl"
+#include "analytic_lights.glsl"
 #include "bindings.glsl"
 
 layout(rgba32f, binding = BINDING_ACCUM_IMAGE) uniform image2D uAccum;   // running mean, rgb; a = 1
@@ -28,8 +29,18 @@ layout(std430, binding = BINDING_ENV_CONDITIONAL) readonly buffer EnvConditional
 #if RAYLAB_EMISSIVE_TRIANGLES
 // Emissive triangles in world space (render/light_list.h).
 layout(std430, binding = BINDING_TRIANGLE_LIGHTS) readonly buffer TriangleLightBuffer { GpuTriangleLight triangleLights[]; };
-// Per triangle (global index): 1 + its index in triangleLights[], 0 when it is no light.
+#endif
+#if RAYLAB_EMISSIVE_TRIANGLES || RAYLAB_ONE_SIDED_EMITTERS
+// Per triangle (global index): 1 + its index in triangleLights[], 0 when it is no light; with
+// TRIANGLE_FRONT_ONLY set when its mesh emits on the front alone.
 layout(std430, binding = BINDING_TRIANGLE_LIGHT_INDEX) readonly buffer TriangleLightIndexBuffer { uint triangleLightIndex[]; };
+#endif
+#if RAYLAB_ANALYTIC_LIGHTS
+// Point, spot and distant lights (render/light_list.h), in a uniform block: no storage block is free.
+layout(std140, binding = BINDING_ANALYTIC_LIGHTS_UBO) uniform AnalyticLightBlock {
+    ivec4 analyticLightInfo;   // x: lights in use
+    GpuAnalyticLight analyticLights[MAX_ANALYTIC_LIGHTS];
+};
 #endif
 #if RAYLAB_LIGHT_POWER_SELECTION
 // The alias table that picks any light (spheres first, then triangles) by power: (q, alias, pmf,

@@ -33,13 +33,18 @@ struct GpuLight {
 };
 
 // An emissive triangle in world space, for next-event estimation (render/light_list.cpp). It
-// emits on both faces, as a BSDF ray that hits it scores it (integrator.glsl).
+// emits on both faces, as a BSDF ray that hits it scores it (integrator.glsl), unless its mesh
+// says emission_sides front.
 struct GpuTriangleLight {
     vec4 p0Area;     // xyz first vertex, w area
     vec4 p1;         // xyz second vertex, w unused
     vec4 p2;         // xyz third vertex, w unused
-    vec4 radiance;   // rgb emitted radiance, a unused
+    vec4 radiance;   // rgb emitted radiance, a 1 = only the (p1 − p0) × (p2 − p0) side emits
 };
+
+// Flag in the per-triangle light index (scene_data.glsl triangleLightIndex): the triangle's mesh
+// emits on its front (e01 × e02) side only.
+const uint TRIANGLE_FRONT_ONLY = 0x80000000u;
 
 RL_NAMESPACE_END
 #endif

@@ -40,6 +40,8 @@ Scene cameraRelative(const Scene& scene, const glm::dvec3& origin) {
         out.spheres.push_back(r);
     }
     for (Mesh& m : out.meshes) m.transform.translation = relativePoint(m.transform.translation, origin);
+    out.lights = scene.lights;
+    for (Light& l : out.lights) l.position = relativePoint(l.position, origin);
     return out;
 }
 

@@ -25,6 +25,8 @@ static_assert(offsetof(glsl::GpuMaterial, f0Ior) == 32 && offsetof(glsl::GpuMate
 static_assert(offsetof(glsl::GpuMaterial, emissionTexture) == 64 && offsetof(glsl::GpuMaterial, normalScale) == 72);
 // The geometry records are vec4s only, so their std430 layout is their C++ layout.
 static_assert(sizeof(glsl::GpuBvhNode) == 32 && sizeof(glsl::GpuInstance) == 144 && sizeof(glsl::GpuTriangle) == 64);
+// std140 offsets of AnalyticLightBlock: vec4s only.
+static_assert(sizeof(glsl::GpuAnalyticLight) == 48 && offsetof(glsl::AnalyticLightBlock, lights) == 16);
 
 // geometryBuffers_ in order: top nodes, mesh nodes, instances, triangles, vertices.
 constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, BINDING_INSTANCES,
@@ -53,12 +55,14 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &triangleLightBuffer_);
     glCreateBuffers(1, &lightAliasBuffer_);
     glCreateBuffers(1, &triangleLightIndexBuffer_);
+    glCreateBuffers(1, &analyticLightBuffer_);
 }
 
 GpuScene::~GpuScene() {
     glDeleteBuffers(1, &sphereBuffer_);
     glDeleteBuffers(1, &materialBuffer_);
     glDeleteBuffers(1, &lightBuffer_);
+    glDeleteBuffers(1, &analyticLightBuffer_);
     glDeleteTextures(1, &skyMapTexture_);
     glDeleteBuffers(1, &envMarginalBuffer_);
     glDeleteBuffers(1, &envConditionalBuffer_);
@@ -156,6 +160,11 @@ void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     uploadBuffer(lightBuffer_, std::move(lights.spheres));
     uploadBuffer(triangleLightBuffer_, std::move(lights.triangles));
     uploadBuffer(lightAliasBuffer_, std::move(lights.aliasTable));
+    analyticLightCount_ = int(lights.analytic.size());
+    glsl::AnalyticLightBlock block{};
+    block.info.x = analyticLightCount_;
+    std::copy(lights.analytic.begin(), lights.analytic.end(), block.lights);
+    glNamedBufferData(analyticLightBuffer_, sizeof block, &block, GL_STATIC_DRAW);
     uploadBuffer(geometryBuffers_[0], relativeTop_.topNodes);
     uploadBuffer(geometryBuffers_[2], relativeTop_.instances);
 }
@@ -195,6 +204,7 @@ void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHTS, triangleLightBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_LIGHT_ALIAS, lightAliasBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHT_INDEX, triangleLightIndexBuffer_);
+    glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_ANALYTIC_LIGHTS_UBO, analyticLightBuffer_);
 }
 
 } // namespace raylab

@@ -31,7 +31,8 @@ public:
     int sphereCount() const { return sphereCount_; }
     int lightCount() const { return lightCount_; }   // emissive spheres
     int triangleLightCount() const { return triangleLightCount_; }   // emissive triangles (with area)
-    // Power of each light (spheres, then triangles; render/light_list.h), which picks them.
+    int analyticLightCount() const { return analyticLightCount_; }   // point, spot, distant lights that emit
+    // Power of each light (spheres, triangles, then analytic; render/light_list.h), which picks them.
     const std::vector<double>& lightPower() const { return lightPower_; }
     float skyMapMax() const { return skyMapMax_; }    // largest channel of the sky map, 0 without
     float skyMapMeanWeight() const { return skyMapMeanWeight_; }   // of its sampling distribution
@@ -70,6 +71,8 @@ private:
     int triangleLightCount_ = 0;
     std::vector<double> lightPower_;
     unsigned triangleLightIndexBuffer_ = 0;   // per triangle 1 + its light index, 0 none
+    unsigned analyticLightBuffer_ = 0;        // uniform block of point, spot and distant lights
+    int analyticLightCount_ = 0;
     unsigned textureBuffers_[2] = {};    // texels, texture info
 };
 

@@ -13,13 +13,71 @@ double luminance(glm::vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.
 
 bool emits(glm::vec3 radiance) { return std::max({radiance.r, radiance.g, radiance.b}) > 0.0f; }
 
+// Radius of the sphere around the top level's root box: what a distant light illuminates.
+double sceneRadius(const SceneGeometry& g) {
+    if (g.topNodes.empty()) return 1.0;
+    const glm::dvec3 extent = glm::dvec3(g.topNodes[0].boundsMax) - glm::dvec3(g.topNodes[0].boundsMin);
+    const double r = 0.5 * glm::length(extent);
+    return std::isfinite(r) && r > 0.0 ? r : 1.0;
+}
+
 } // namespace
 
 double sphereLightPower(glm::vec3 radiance, float radius) {
     return luminance(radiance) * 4.0 * 3.14159265358979 * double(radius) * double(radius);
 }
 
-double triangleLightPower(glm::vec3 radiance, double area) { return luminance(radiance) * 2.0 * area; }
+double triangleLightPower(glm::vec3 radiance, double area, bool frontOnly) {
+    return luminance(radiance) * (frontOnly ? 1.0 : 2.0) * area;
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979;
+
+double cosDegrees(float degrees) { return std::cos(double(degrees) * kPi / 180.0); }
+
+// Solid angle of a spot's cone up to 2π, as pbrt-v4 SpotLight::Phi counts the smooth falloff:
+// 1 − (cos inner + cos outer)/2.
+double spotConeFactor(const Light& l) { return 1.0 - 0.5 * (cosDegrees(l.innerAngle) + cosDegrees(l.outerAngle)); }
+
+} // namespace
+
+glm::vec3 lightIntensity(const Light& l) {
+    if (!(l.power > 0.0f) || l.type == Light::Type::Distant) return l.intensity;
+    const double solid = l.type == Light::Type::Point ? 4.0 * kPi : 2.0 * kPi * spotConeFactor(l);
+    return glm::vec3(float(double(l.power) / solid));
+}
+
+double analyticLightPower(const Light& l, double sceneRadius) {
+    switch (l.type) {
+    case Light::Type::Point: return 4.0 * luminance(lightIntensity(l));
+    case Light::Type::Spot: return 2.0 * luminance(lightIntensity(l)) * spotConeFactor(l);
+    case Light::Type::Distant: return sceneRadius * sceneRadius * luminance(l.irradiance);
+    }
+    return 0.0;
+}
+
+glsl::GpuAnalyticLight gpuAnalyticLight(const Light& l) {
+    const glm::vec3 dir = glm::normalize(l.direction);
+    switch (l.type) {
+    case Light::Type::Point:
+        return {glm::vec4(l.position, float(glsl::ANALYTIC_LIGHT_POINT)), glm::vec4(0.0f), glm::vec4(lightIntensity(l), 0.0f)};
+    case Light::Type::Spot:
+        return {glm::vec4(l.position, float(glsl::ANALYTIC_LIGHT_SPOT)), glm::vec4(dir, float(cosDegrees(l.outerAngle))),
+                glm::vec4(lightIntensity(l), float(cosDegrees(l.innerAngle)))};
+    case Light::Type::Distant: {
+        // 1 − cos r as 2 sin²(r/2): no cancellation for the sun's 0.27°.
+        const double s = std::sin(double(l.angularRadius) * kPi / 360.0);
+        const float oneMinusCos = float(2.0 * s * s);
+        const glm::vec3 emitted =
+            oneMinusCos > 0.0f ? l.irradiance * glsl::distantConeRadianceScale(oneMinusCos) : l.irradiance;
+        return {glm::vec4(0.0f, 0.0f, 0.0f, float(glsl::ANALYTIC_LIGHT_DISTANT)), glm::vec4(-dir, oneMinusCos),
+                glm::vec4(emitted, 0.0f)};
+    }
+    }
+    return {};
+}
 
 std::vector<glm::vec4> buildAliasTable(const std::vector<double>& weights) {
     const std::size_t n = weights.size();
@@ -98,9 +156,16 @@ bool lightPowersDiffer(const Scene& scene) {
             glm::dvec3 p[3];
             for (int v = 0; v < 3; ++v) p[v] = glm::dvec3(toWorld * glm::vec4(mesh.positions.at(t[v]), 1.0f));
             const double area = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-            if (area > 0.0) add(triangleLightPower(L, area));
+            if (area > 0.0) add(triangleLightPower(L, area, mesh.emitsFrontOnly));
         }
     }
+    bool distant = false;
+    for (const Light& l : scene.lights) {
+        if (l.type == Light::Type::Distant) distant = true;
+        else add(analyticLightPower(l, 0.0));
+    }
+    const std::size_t lights = scene.lights.size() + (hi > 0.0 ? 1 : 0);
+    if (distant && lights > 1) return true;   // its power depends on the scene's extent (buildLightList)
     return hi > lo * 1.05;
 }
 
@@ -116,6 +181,8 @@ LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::
     std::size_t first = 0;   // the mesh's first triangle in g.triangles (buildSceneGeometry's order)
     for (const Mesh& mesh : scene.meshes) {
         const std::size_t count = mesh.triangles.size();
+        const std::uint32_t frontOnly = mesh.emitsFrontOnly ? glsl::TRIANGLE_FRONT_ONLY : 0u;
+        for (std::size_t t = first; t < first + count && t < g.triangles.size(); ++t) list.triangleLightIndex[t] = frontOnly;
         {
             const glm::mat4 toWorld = transformMatrix(mesh.transform);
             for (std::size_t t = first; t < first + count && t < g.triangles.size(); ++t) {
@@ -129,14 +196,21 @@ LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::
                 const double area = 0.5 * glm::length(glm::cross(glm::dvec3(p[1] - p[0]), glm::dvec3(p[2] - p[0])));
                 if (!(area > 0.0)) continue;   // never hit, never sampled
                 list.triangles.push_back({glm::vec4(p[0], float(area)), glm::vec4(p[1], 0.0f), glm::vec4(p[2], 0.0f),
-                                          glm::vec4(L, 0.0f)});
-                list.triangleLightIndex[t] = std::uint32_t(list.triangles.size());
-                list.power.push_back(triangleLightPower(L, area));
+                                          glm::vec4(L, mesh.emitsFrontOnly ? 1.0f : 0.0f)});
+                list.triangleLightIndex[t] = std::uint32_t(list.triangles.size()) | frontOnly;
+                list.power.push_back(triangleLightPower(L, area, mesh.emitsFrontOnly));
             }
         }
         first += count;
     }
     if (first != g.triangles.size()) throw std::logic_error("light list: scene and geometry disagree on triangles");
+    const double radius = sceneRadius(g);
+    for (const Light& l : scene.lights) {
+        const double power = analyticLightPower(l, radius);
+        if (!(power > 0.0)) continue;   // emits nothing: never sampled, as a black emitter
+        list.analytic.push_back(gpuAnalyticLight(l));
+        list.power.push_back(power);
+    }
     list.aliasTable = buildAliasTable(list.power);
     return list;
 }

@@ -5,6 +5,7 @@
 #include "accel/scene_geometry.h"
 #include "scene/scene.h"
 
+#include "shaders/include/analytic_lights.glsl"
 #include "shaders/include/scene_types.glsl"
 
 #include <cstdint>
@@ -14,9 +15,18 @@ namespace raylab {
 
 // Emitted power up to the common factor π (Φ = π·L·A for a diffuse emitter), from the Rec. 709
 // luminance of the radiance: a sphere emits from its whole surface 4πr², a triangle from both
-// faces (2·area), since a ray that hits either face scores its emission.
+// faces (2·area), since a ray that hits either face scores its emission, or from its front alone.
 double sphereLightPower(glm::vec3 radiance, float radius);
-double triangleLightPower(glm::vec3 radiance, double area);
+double triangleLightPower(glm::vec3 radiance, double area, bool frontOnly = false);
+
+// A point or spot light's intensity in W/sr: `intensity`, or `power` spread over its cone
+// (pbrt-v4 PointLight/SpotLight::Phi inverted: Φ = 4πI, Φ = 2πI(1 − (cos inner + cos outer)/2)).
+glm::vec3 lightIntensity(const Light& light);
+// The light's power by pbrt-v4's Phi, divided by π like the emitters' above; a distant light
+// lights the scene's bounding sphere of radius sceneRadius (DistantLight::Phi: π r² E).
+double analyticLightPower(const Light& light, double sceneRadius);
+// The GPU record of a light (positions as given: the caller makes them camera-relative).
+glsl::GpuAnalyticLight gpuAnalyticLight(const Light& light);
 
 // The material of a mesh's triangle (original order): its own (glTF primitives), else the mesh's.
 int triangleMaterial(const Mesh& mesh, std::size_t triangle);
@@ -38,14 +48,16 @@ std::vector<glm::vec4> buildAliasTable(const std::vector<double>& weights);
 struct LightList {
     std::vector<glsl::GpuLight> spheres;              // lights 0 … S−1
     std::vector<glsl::GpuTriangleLight> triangles;    // lights S … S+T−1
+    std::vector<glsl::GpuAnalyticLight> analytic;     // lights S+T … (Scene::lights)
     std::vector<double> power;                        // per light, in that order
     std::vector<glm::vec4> aliasTable;                // over all lights, by power
     // Per triangle of SceneGeometry::triangles: 1 + its index in `triangles`, 0 if it is no light
-    // (not emissive, or no area). The tracer stores it in GpuTriangle::vertices.w.
+    // (not emissive, or no area), plus TRIANGLE_FRONT_ONLY when its mesh emits on the front alone.
     std::vector<std::uint32_t> triangleLightIndex;
 };
 
-// Whether the scene's lights (emissive spheres, emissive triangles with area) differ in power by
+// Whether the scene's lights (emissive spheres, emissive triangles with area, point and spot
+// lights; a distant light beside any other counts as different) differ in power by
 // more than 5% (largest / smallest). When they do not, picking uniformly is as good as picking by
 // power (the variance gain is of second order in the differences), and the tracer is compiled
 // without the table (RAYLAB_LIGHT_POWER_SELECTION off, render/shader_variant.h): such scenes pick

@@ -1,19 +1,11 @@
 #include "render/scene_stats.h"
 
+#include "render/light_list.h"
+
 #include <algorithm>
 #include <cstdio>
 
 namespace raylab {
-namespace {
-
-bool emissive(const Scene& scene, int material) {
-    if (material < 0 || material >= int(scene.materials.size())) return false;
-    const glm::vec3 r = scene.materials[std::size_t(material)].radiance();
-    return std::max({r.r, r.g, r.b}) > 0.0f;
-}
-
-} // namespace
-
 SceneStats sceneStats(const Scene& scene, const SceneGeometry& geometry) {
     SceneStats s;
     s.spheres = scene.spheres.size();
@@ -33,9 +25,14 @@ SceneStats sceneStats(const Scene& scene, const SceneGeometry& geometry) {
         for (const MipLevel& l : t.levels) texels += l.texels.size();
     if (!scene.textures.empty())
         s.textureBytes = texels * sizeof(glm::vec4) + (1 + scene.materials.size() + scene.textures.size()) * sizeof(glm::uvec4);
-    for (const Sphere& sp : scene.spheres) s.emissiveSpheres += emissive(scene, sp.material) ? 1 : 0;
-    for (const Mesh& m : scene.meshes)
-        if (emissive(scene, m.material)) s.emissiveTriangles += m.triangles.size();
+    // The light list next-event estimation picks from, so the counts are the tracer's: per-triangle
+    // glTF materials count, zero-area triangles and textured emission do not.
+    std::vector<glm::vec3> radiance;
+    for (const Material& m : scene.materials) radiance.push_back(lightRadiance(m));
+    const LightList lights = buildLightList(scene, geometry, radiance);
+    s.emissiveSpheres = lights.spheres.size();
+    s.emissiveTriangles = lights.triangles.size();
+    s.analyticLights = lights.analytic.size();
     return s;
 }
 
@@ -57,10 +54,10 @@ std::string describeSceneStats(const SceneStats& s) {
     std::snprintf(buf, sizeof buf,
                   "scene: %zu objects (%zu spheres, %zu mesh instances), %zu triangles, %zu materials\n"
                   "scene: BVH %zu top + %zu mesh nodes (depth %d); %zu textures, %s on the GPU; "
-                  "lights: %zu emissive spheres, %zu emissive triangles",
+                  "lights: %zu emissive spheres, %zu emissive triangles, %zu point/spot/distant",
                   s.objects, s.spheres, s.instances, s.triangles, s.materials, s.topBvhNodes, s.meshBvhNodes,
                   s.bvhDepth, s.textures, formatBytes(s.textureBytes).c_str(), s.emissiveSpheres,
-                  s.emissiveTriangles);
+                  s.emissiveTriangles, s.analyticLights);
     return buf;
 }
 

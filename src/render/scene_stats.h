@@ -22,8 +22,10 @@ struct SceneStats {
     int bvhDepth = 0;                // the deepest of all BVHs, in edges
     std::size_t textures = 0;        // material textures (albedo, normal maps)
     std::size_t textureBytes = 0;    // their texel and table buffers on the GPU, all mip levels
-    std::size_t emissiveSpheres = 0;     // lights: spheres with an emissive material
-    std::size_t emissiveTriangles = 0;   // triangles of meshes with an emissive material
+    // The lights of next-event estimation's list (render/light_list.h):
+    std::size_t emissiveSpheres = 0;     // spheres with an emissive material
+    std::size_t emissiveTriangles = 0;   // triangles with an emissive material (their own or the mesh's) and area
+    std::size_t analyticLights = 0;      // point, spot and distant lights that emit
 };
 
 SceneStats sceneStats(const Scene& scene, const SceneGeometry& geometry);

@@ -41,6 +41,9 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.lightPowerSelection = f.nee && lightPowersDiffer(scene);
     f.emissiveTriangles = false;
     for (const Mesh& m : scene.meshes) f.emissiveTriangles |= f.nee && meshHasEmissiveTriangle(scene, m);
+    f.analyticLights = !scene.lights.empty();
+    f.oneSidedEmitters = false;
+    for (const Mesh& m : scene.meshes) f.oneSidedEmitters |= m.emitsFrontOnly;
     return f;
 }
 

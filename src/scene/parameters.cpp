@@ -330,8 +330,62 @@ const std::vector<TransformParamSpec>& transformParameters() {
     return table;
 }
 
+static std::vector<LightParamSpec> buildLightTable() {
+    using T = ParamType;
+    using L = Light::Type;
+    std::vector<LightParamSpec> t;
+    auto add = [&t](ValueSpec v, auto ref) { t.push_back(makeField<Light>(std::move(v), ref)); };
+    add(spec("lights[].type", T::Enum, kAny, kAny, "",
+             "point (intensity from a position), spot (a point limited to a cone) or distant (parallel light, the sun).",
+             Trigger::ReloadScene, {{"point", int(L::Point)}, {"spot", int(L::Spot)}, {"distant", int(L::Distant)}}),
+        [](auto& l) -> auto& { return l.type; });
+    add(spec("lights[].position", T::Vec3, kAny, kAny, "world units", "Point, spot: where the light is.",
+             Trigger::UpdateMaterials),
+        [](auto& l) -> auto& { return l.position; });
+    add(spec("lights[].direction", T::Vec3, kAny, kAny, "direction",
+             "Spot: the cone's axis; distant: the direction the light travels (any length > 0).",
+             Trigger::UpdateMaterials),
+        [](auto& l) -> auto& { return l.direction; });
+    add(spec("lights[].intensity", T::Rgb, atLeast(0), kAny, "W/sr",
+             "Point, spot: radiant intensity (a colour or one number); not with power.", Trigger::UpdateMaterials),
+        [](auto& l) -> auto& { return l.intensity; });
+    add(spec("lights[].power", T::Float, atLeast(0), kAny, "W",
+             "Point, spot: total emitted power instead of intensity (grey; point I = P / 4pi, spot I = P / (2pi (1 - (cos inner + cos outer) / 2))).",
+             Trigger::UpdateMaterials),
+        [](auto& l) -> auto& { return l.power; });
+    add(spec("lights[].inner_angle", T::Float, atLeast(0), atMost(90), "degrees",
+             "Spot: full intensity within this angle of the axis; smoothstep of cos down to outer_angle.",
+             Trigger::UpdateMaterials),
+        [](auto& l) -> auto& { return l.innerAngle; });
+    add(spec("lights[].outer_angle", T::Float, atLeast(0), atMost(90), "degrees",
+             "Spot: no light beyond this angle from the axis; >= inner_angle.", Trigger::UpdateMaterials),
+        [](auto& l) -> auto& { return l.outerAngle; });
+    add(spec("lights[].irradiance", T::Rgb, atLeast(0), kAny, "W/m^2",
+             "Distant: irradiance E on a surface facing the light.", Trigger::UpdateMaterials),
+        [](auto& l) -> auto& { return l.irradiance; });
+    add(spec("lights[].angular_radius", T::Float, atLeast(0), below(90), "degrees",
+             "Distant: half-angle of the light's disc (the sun: 0.27); 0 = a delta light no ray can hit.",
+             Trigger::UpdateMaterials),
+        [](auto& l) -> auto& { return l.angularRadius; });
+    return t;
+}
+
+const std::vector<LightParamSpec>& lightParameters() {
+    static const std::vector<LightParamSpec> table = buildLightTable();
+    return table;
+}
+
+std::vector<std::string_view> lightKeysOf(Light::Type type) {
+    switch (type) {
+    case Light::Type::Point: return {"position", "intensity", "power"};
+    case Light::Type::Spot: return {"position", "direction", "intensity", "power", "inner_angle", "outer_angle"};
+    case Light::Type::Distant: return {"direction", "irradiance", "angular_radius"};
+    }
+    return {};
+}
+
 const std::vector<std::string_view>& meshKeys() {
-    static const std::vector<std::string_view> keys = {"file", "positions", "indices", "normals", "uvs"};
+    static const std::vector<std::string_view> keys = {"file", "positions", "indices", "normals", "uvs", "emission_sides"};
     return keys;
 }
 

@@ -81,6 +81,7 @@ using ParamSpec = FieldSpec<Scene>;
 using MaterialParamSpec = FieldSpec<Material>;
 using SphereParamSpec = FieldSpec<Sphere>;
 using TransformParamSpec = FieldSpec<Transform>;
+using LightParamSpec = FieldSpec<Light>;
 
 // camera.*, render.*, sky.* in file-format order.
 const std::vector<ParamSpec>& sceneParameters();
@@ -92,6 +93,10 @@ const std::vector<MaterialParamSpec>& materialParameters();
 const std::vector<SphereParamSpec>& sphereParameters();
 // Keys of an object's "transform" (transform.translation, transform.rotation, transform.scale).
 const std::vector<TransformParamSpec>& transformParameters();
+// Keys of an entry of "lights", as "lights[].position" (section "lights[]"), type first.
+const std::vector<LightParamSpec>& lightParameters();
+// The keys (names) a light of that type takes besides "type".
+std::vector<std::string_view> lightKeysOf(Light::Type type);
 // Keys of a mesh object that the loader reads itself (arrays and the OBJ path), for FORMAT.md.
 const std::vector<std::string_view>& meshKeys();
 // Keys of a material that name files (image textures), read by the loader itself.

@@ -115,6 +115,23 @@ struct Mesh {
     // Per triangle (glTF materials): index into Scene::materials, -1 = `material`. Empty = all `material`.
     std::vector<int> triangleMaterials;
     Transform transform;
+    bool emitsFrontOnly = false;         // emission_sides front: only the e01 × e02 side emits
+};
+
+// A light without a surface (pbrt-v4 PointLight, SpotLight, DistantLight). Point and spot lights
+// emit intensity I (W/sr) from `position`, given as `intensity` or as `power` (exactly one);
+// render/light_list.h turns power into intensity.
+struct Light {
+    enum class Type { Point, Spot, Distant };
+    Type type = Type::Point;
+    glm::vec3 position{0.0f};           // point, spot: world units
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};   // spot: the cone's axis; distant: where the light travels (any length > 0)
+    glm::vec3 intensity{1.0f};          // point, spot: W/sr (when power is 0)
+    float power = 0.0f;                 // point, spot: W, > 0 replaces intensity (grey)
+    float innerAngle = 25.0f;           // spot: full intensity inside, degrees from the axis
+    float outerAngle = 30.0f;           // spot: nothing outside, degrees, in [inner, 90]
+    glm::vec3 irradiance{1.0f};         // distant: W/m² on a surface facing it
+    float angularRadius = 0.0f;         // distant: degrees, [0, 90); 0 = a delta light
 };
 
 // Radiance for rays that leave the scene.
@@ -137,6 +154,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Sphere> spheres;
     std::vector<Mesh> meshes;
+    std::vector<Light> lights;       // point, spot and distant lights (emitters are materials)
     std::vector<Texture> textures;   // loaded images, referenced by the materials' *TextureIndex
     std::vector<std::string> warnings;   // non-fatal notes from loading (glTF features ignored, ...)
 };

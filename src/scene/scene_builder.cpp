@@ -5,6 +5,8 @@
 #include "scene/scene_error.h"
 #include "scene/sky_map.h"
 
+#include "shaders/include/analytic_lights.glsl"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -19,7 +21,8 @@ namespace raylab::scenefmt {
 namespace {
 
 constexpr std::string_view kDefaultMaterial = "default";
-constexpr std::string_view kSectionKeys[] = {"camera", "render", "sky", "materials", "objects"};
+constexpr std::string_view kSectionKeys[] = {"camera", "render", "sky", "materials", "objects", "lights"};
+constexpr int kMaxLights = glsl::MAX_ANALYTIC_LIGHTS;
 constexpr std::string_view kObjectTypes[] = {"sphere", "mesh"};
 
 double numberOf(const Json& v) {
@@ -208,6 +211,18 @@ std::vector<double> readNumbers(const Json& o, const char* key, const JsonPath& 
     return out;
 }
 
+// "emission_sides": "front" (only the side the e01 x e02 normal faces emits) or "both" (default).
+bool readEmissionSides(const Json& o, const JsonPath& p) {
+    if (!o.contains("emission_sides")) return false;
+    const Json& v = o["emission_sides"];
+    const std::vector<std::string_view> names = {"both", "front"};
+    if (!v.is_string()) fail(p.key("emission_sides"), "expected a string (both, front), got " + typeOf(v));
+    const std::string& s = v.get_ref<const std::string&>();
+    if (s != "both" && s != "front")
+        fail(p.key("emission_sides"), "unknown value " + inQuotes(s) + suggestion(s, names, "allowed values"));
+    return s == "front";
+}
+
 // A mesh object: inline arrays, or "file" (OBJ, relative to the scene file's directory).
 Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sceneDir, GltfAsset* gltf) {
     std::vector<std::string_view> known = {"type", "material", "transform"};
@@ -243,6 +258,7 @@ Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sce
             fail(p.key("file"), e.what());
         }
         mesh.file = given;
+        mesh.emitsFrontOnly = readEmissionSides(o, p);
         return mesh;
     }
     for (const char* required : {"positions", "indices"})
@@ -278,7 +294,44 @@ Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sce
                                    " numbers), got " + std::to_string(uv.size()) + " numbers");
         for (std::size_t i = 0; i < uv.size(); i += 2) mesh.uvs.emplace_back(float(uv[i]), float(uv[i + 1]));
     }
+    mesh.emitsFrontOnly = readEmissionSides(o, p);
     return mesh;
+}
+
+// One entry of "lights": its type first, then only the keys that type takes, then the checks
+// between keys.
+Light readLight(const Json& o, const JsonPath& p) {
+    if (!o.is_object()) fail(p, "expected an object { \"type\": \"point\", ... }, got " + typeOf(o));
+    const LightParamSpec& typeSpec = lightParameters().front();
+    if (!o.contains("type")) fail(p, "a light needs \"type\" (point, spot or distant)");
+    Light light;
+    typeSpec.set(light, readValue(typeSpec, o["type"], p.key("type")));
+    const std::vector<std::string_view> own = lightKeysOf(light.type);
+    std::vector<std::string_view> all;
+    for (const LightParamSpec& s : lightParameters()) all.push_back(s.name());
+    for (const auto& [k, v] : o.items()) {
+        (void)v;
+        if (k == "type" || std::find(own.begin(), own.end(), k) != own.end()) continue;
+        if (std::find(all.begin(), all.end(), k) != all.end())
+            fail(p.key(k), inQuotes(k) + " does not apply to a " + std::string(typeSpec.enumName(int(light.type))) +
+                               " light (its keys: " + joinNames(own) + ")", true);
+        std::vector<std::string_view> known = own;
+        known.insert(known.begin(), "type");
+        fail(p.key(k), "unknown key " + inQuotes(k) + " " + inWhere(p) + suggestion(k, known, "known keys"), true);
+    }
+    readMembers(o, p, lightParameters(), "lights[]", light, {"type"});
+    if (o.contains("intensity") && o.contains("power"))
+        fail(p.key("power"), "give either \"intensity\" or \"power\", not both", true);
+    if (o.contains("direction") && !(glm::length(light.direction) > 0.0f && std::isfinite(glm::length(light.direction))))
+        fail(p.key("direction"), "must be a non-zero direction, got " +
+                                     formatValue(lightParameters()[2], light.direction));
+    if (light.innerAngle > light.outerAngle)
+        fail(p.key(o.contains("inner_angle") ? "inner_angle" : "outer_angle"),
+             "inner_angle (" + formatNumber(light.innerAngle) + ") must not exceed outer_angle (" +
+                 formatNumber(light.outerAngle) + ")");
+    if (light.type == Light::Type::Spot && light.power > 0.0f && !(light.outerAngle > 0.0f))
+        fail(p.key("power"), "a spot with outer_angle 0 has no cone to spread its power over; give intensity");
+    return light;
 }
 
 } // namespace
@@ -446,6 +499,16 @@ void buildScene(const Json& root, Scene& scene) {
                                                      [](const Material& a, const Material& b) { return a.name == b.name; });
         for (int& t : m.mesh.triangleMaterials) t = t < 0 ? -1 : gltfIndex[std::size_t(t)];
         scene.meshes.push_back(std::move(m.mesh));
+    }
+
+    scene.lights.clear();
+    if (root.contains("lights")) {
+        const JsonPath lp = top.key("lights");
+        const Json& lights = root["lights"];
+        if (!lights.is_array()) fail(lp, "expected an array [ { \"type\": ... }, ... ], got " + typeOf(lights));
+        if (lights.size() > std::size_t(kMaxLights))
+            fail(lp.index(std::size_t(kMaxLights)), "a scene takes at most " + std::to_string(kMaxLights) + " lights");
+        for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(lights[i], lp.index(i)));
     }
 
     checkCamera(scene.camera);

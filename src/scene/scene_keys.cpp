@@ -203,6 +203,33 @@ SceneParam objectKey(const Scene& scene, std::string_view key, std::string_view 
                    "' (keys: " + keys + keysOf(transformParameters()) + ", material)");
 }
 
+// A light's key (lights.N.FIELD) among its type's keys, checked as the loader checks the light.
+SceneParam lightKey(const Scene& scene, std::string_view key, std::string_view item, std::string_view field) {
+    const std::optional<std::size_t> index = parseIndex(item);
+    if (!index || *index >= scene.lights.size())
+        throw EditError(std::string(key) + ": no light " + std::string(item) + " (the scene has " +
+                        std::to_string(scene.lights.size()) + ")");
+    const std::size_t i = *index;
+    const std::vector<std::string_view> own = lightKeysOf(scene.lights[i].type);
+    for (const LightParamSpec& s : lightParameters()) {
+        if (s.name() != field || std::find(own.begin(), own.end(), field) == own.end()) continue;
+        return SceneParam{std::string(key), &s, [&s, i](const Scene& sc) { return s.get(sc.lights.at(i)); },
+                          [&s, i, key = std::string(key)](Scene& sc, const ParamValue& v) {
+                              Light l = sc.lights.at(i);
+                              s.set(l, v);
+                              if (s.name() == "intensity") l.power = 0.0f;   // the one given wins, as in the file
+                              if (!(glm::length(l.direction) > 0.0f)) throw EditError(key + ": must be a non-zero direction");
+                              if (l.innerAngle > l.outerAngle)
+                                  throw EditError(key + ": inner_angle must not exceed outer_angle");
+                              sc.lights.at(i) = l;
+                          },
+                          nullptr, s.trigger};
+    }
+    std::string keys;
+    for (std::string_view k : own) keys += (keys.empty() ? "" : ", ") + std::string(k);
+    throw EditError(std::string(key) + ": this light has no key '" + std::string(field) + "' (keys: " + keys + ")");
+}
+
 } // namespace
 
 std::vector<std::string> splitKey(std::string_view key) {
@@ -223,9 +250,10 @@ SceneParam resolveParam(const Scene& scene, std::string_view key) {
     const std::vector<std::string> parts = splitKey(key);
     if (const ParamSpec* p = findParameter(key)) return sceneTableKey(*p, key);
     if (key == "sky.map") return skyMapKey(key);
-    if ((parts[0] == "materials" || parts[0] == "objects") && parts.size() >= 3) {
+    if ((parts[0] == "materials" || parts[0] == "objects" || parts[0] == "lights") && parts.size() >= 3) {
         const std::string_view field = key.substr(parts[0].size() + parts[1].size() + 2);
         if (parts[0] == "materials") return materialKey(scene, key, parts[1], field);
+        if (parts[0] == "lights") return lightKey(scene, key, parts[1], field);
         return objectKey(scene, key, parts[1], field);
     }
     std::vector<std::string_view> candidates;
@@ -254,6 +282,8 @@ std::vector<std::string> sceneKeys(const Scene& scene) {
         for (const TransformParamSpec& p : transformParameters()) keys.push_back(prefix + std::string(p.key));
         keys.push_back(prefix + "material");
     }
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        for (std::string_view k : lightKeysOf(scene.lights[i].type)) keys.push_back("lights." + std::to_string(i) + "." + std::string(k));
     return keys;
 }
 

@@ -3,6 +3,7 @@
 #include "scene/parameters.h"
 #include "scene/scene_error.h"
 
+#include <algorithm>
 #include <charconv>
 #include <string>
 #include <variant>
@@ -121,6 +122,20 @@ nlohmann::json meshJson(const Mesh& m, const std::string& material) {
     }
     o["transform"] = transformJson(m.transform);
     if (m.triangleMaterials.empty()) o["material"] = material;   // else the glTF file's materials
+    if (m.emitsFrontOnly) o["emission_sides"] = "front";
+    return o;
+}
+
+// The light's type and the keys of that type; intensity or power, whichever it was given.
+nlohmann::json lightJson(const Light& l) {
+    nlohmann::json o = nlohmann::json::object();
+    const std::vector<std::string_view> own = lightKeysOf(l.type);
+    for (const LightParamSpec& spec : lightParameters()) {
+        const std::string_view name = spec.name();
+        if (name != "type" && std::find(own.begin(), own.end(), name) == own.end()) continue;
+        if (name == (l.power > 0.0f ? "intensity" : "power")) continue;
+        o[std::string(name)] = valueJson(spec, l);
+    }
     return o;
 }
 
@@ -171,6 +186,11 @@ nlohmann::json sceneToJson(const Scene& scene, const fs::path& savedFile) {
         objects.push_back(meshJson(m, scene.materials[static_cast<std::size_t>(m.material)].name));
     }
     j["objects"] = objects;
+    if (!scene.lights.empty()) {
+        nlohmann::json lights = nlohmann::json::array();
+        for (const Light& l : scene.lights) lights.push_back(lightJson(l));
+        j["lights"] = lights;
+    }
     const fs::path sceneDir = scene.sourcePath.parent_path();
     rebasePaths(j, sceneDir, savedFile.empty() ? sceneDir : savedFile.parent_path());
     return j;

@@ -130,6 +130,36 @@ TEST(BenchBlenderExport, ScriptRebuildsTheSceneInBlenderCoordinatesAndIsValidPyt
     EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
 }
 
+TEST(BenchBlenderExport, PointSpotAndDistantLightsBecomePointSpotAndSun) {
+    // Point: power 4πI; spot: the same, spot_size 2·outer, blend (cos inner − cos outer)/(1 − cos
+    // outer); distant: SUN of strength E and angle 2·radius, shining along its direction (z-up).
+    Scene scene = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json");
+    Light point, spot, sun;
+    point.position = glm::vec3(1, 2, 3);
+    point.intensity = glm::vec3(2, 1, 0.5f);
+    spot.type = Light::Type::Spot;
+    spot.position = glm::vec3(0, 4, 0);
+    spot.power = float(4.0 * 3.14159265358979);
+    spot.innerAngle = 20.0f;
+    spot.outerAngle = 30.0f;
+    sun.type = Light::Type::Distant;
+    sun.direction = glm::vec3(0, -1, -1);
+    sun.irradiance = glm::vec3(3.0f);
+    sun.angularRadius = 0.5f;
+    scene.lights = {point, spot, sun};
+    const std::string py = blenderScript(scene);
+    EXPECT_NE(py.find("light(\"light0\", \"POINT\", (1, -3, 2), (0, 0, -1), (1, 0.5, 0.25, 1.0), 25.13274)"),
+              std::string::npos) << py;
+    const double co = std::cos(glm::radians(30.0)), ci = std::cos(glm::radians(20.0));
+    char spotText[200];
+    std::snprintf(spotText, sizeof spotText, "\"SPOT\", (0, -0, 4), (0, -0, -1), (1, 1, 1, 1.0), %.7g, spot_size=1.047198, spot_blend=%.7g)",
+                  4.0 * 3.14159265358979 * double(spot.power) / (2.0 * 3.14159265358979 * (1.0 - 0.5 * (ci + co))),
+                  (ci - co) / (1.0 - co));
+    EXPECT_NE(py.find(spotText), std::string::npos) << spotText << "\n" << py;
+    EXPECT_NE(py.find("light(\"light2\", \"SUN\", (0, 0, 0), (0, 1, -1), (1, 1, 1, 1.0), 3, angle=0.01745329)"),
+              std::string::npos) << py;
+}
+
 TEST(BenchBlenderExport, NamesWhatItCanOnlyApproximate) {
     const auto load = [](const char* name) { return loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/" + name); };
     EXPECT_TRUE(blenderExportApproximations(load("default.json")).empty()) << "Lambert and emission map exactly";

@@ -433,7 +433,7 @@ def place(section, key):
         return {"materials": {"m": {key: SENTINEL}}, "objects": [{"material": "m"}]}, "materials.m." + key
     if key.startswith("transform."):
         return {"objects": [{"transform": {key.split(".")[1]: SENTINEL}}]}, "objects[0]." + key
-    if key in MESH or key in ("normals", "uvs", "file"):
+    if key in MESH or key in ("normals", "uvs", "file", "emission_sides"):
         obj = dict(MESH)
         if key == "file":
             obj = {"type": "mesh"}
@@ -441,6 +441,12 @@ def place(section, key):
         return {"objects": [obj]}, "objects[0]." + key
     if section == "objects":
         return {"objects": [{"type": "sphere", key: SENTINEL}]}, "objects[0]." + key
+    if section == "lights":
+        name = key.split(".")[1]
+        light = {"type": SENTINEL} if name == "type" else {
+            "type": {"direction": "spot", "inner_angle": "spot", "outer_angle": "spot", "irradiance": "distant",
+                     "angular_radius": "distant"}.get(name, "point"), name: SENTINEL}
+        return {"objects": [{"type": "sphere"}], "lights": [light]}, "lights[0]." + name
     raise SystemExit("make_malformed.py: no place in a scene for key %s of section %s" % (key, section))
 
 
@@ -476,7 +482,7 @@ def key_cases(section, key, kind, rng):
     """One case for every key (its range, else its type), and every kind of wrong value for the first
     key of each type: a new type in the table stops this script until it has its cases."""
     doc, path = place(section, key)
-    slug = key.replace(".", "_")
+    slug = key.replace("[]", "").replace(".", "_")
     integral = kind in ("int", "uint")
     bounded = out_of_range(rng, integral) if kind in ("int", "uint", "float", "vec3", "rgb") else None
     if bounded:
@@ -562,6 +568,9 @@ def key_cases(section, key, kind, rng):
         bad_value("key_type_unknown", doc, path, '"cube"', "unknown object type 'cube' (known types: sphere, mesh)")
         bad_value("key_type_typo", doc, path, '"shpere"', "unknown object type 'shpere'; did you mean 'sphere'?")
         bad_value("key_type_number", doc, path, "1", "expected a string (sphere, mesh), got number")
+    elif kind == "string" and key == "emission_sides":
+        bad_value("key_emission_sides_unknown", doc, path, '"back"', "unknown value 'back' (allowed values: both, front)")
+        bad_value("key_emission_sides_number", doc, path, "1", "expected a string (both, front), got number")
     elif kind == "string" and key == "material":
         bad_value("key_material_unknown", doc, path, '"nobody"', "unknown material 'nobody'")
         bad_value("key_material_number", doc, path, "0", "expected a material name (a string), got number")
@@ -637,6 +646,23 @@ scene("objects_not_array", '{ "objects": { "type": "sphere" } }', ":1:14: error:
 scene("materials_not_object", '{ "materials": [] }', ":1:16: error: materials: expected an object")
 scene("object_not_object", '{ "objects": [ 3 ] }', ":1:16: error: objects[0]: expected an object")
 scene("section_not_object", '{ "render": 3 }', ":1:13: error: render: expected an object")
+
+# Lights: each bad value of an entry of "lights", and a mesh's emission_sides.
+LIT = '{ "objects": [ { "type": "sphere" } ],\n  "lights": [ %s ] }\n'
+for name, light, expected in [
+        ("light_unknown_type", '{ "type": "lamp" }', ":2:25: error: lights[0].type: unknown value 'lamp' (allowed values: point, spot, distant)"),
+        ("light_no_type", '{ "position": [0, 1, 0] }', ":2:15: error: lights[0]: a light needs \"type\""),
+        ("light_intensity_and_power", '{ "type": "point", "intensity": 1, "power": 10 }', ":2:50: error: lights[0].power: give either \"intensity\" or \"power\", not both"),
+        ("light_inner_above_outer", '{ "type": "spot", "inner_angle": 40, "outer_angle": 30 }', ":2:48: error: lights[0].inner_angle: inner_angle (40) must not exceed outer_angle (30)"),
+        ("light_zero_direction", '{ "type": "distant", "direction": [0, 0, 0] }', ":2:49: error: lights[0].direction: must be a non-zero direction, got [0, 0, 0]"),
+        ("light_key_of_other_type", '{ "type": "point", "irradiance": 1 }', ":2:34: error: lights[0].irradiance: 'irradiance' does not apply to a point light"),
+        ("light_negative_intensity", '{ "type": "spot", "intensity": [1, -1, 1] }', ":2:50: error: lights[0].intensity[1]: must be >= 0, got -1"),
+        ("light_spot_power_no_cone", '{ "type": "spot", "power": 5, "inner_angle": 0, "outer_angle": 0 }', ":2:42: error: lights[0].power: a spot with outer_angle 0 has no cone"),
+        ("light_not_object", '3', ":2:15: error: lights[0]: expected an object")]:
+    scene(name, LIT % light, expected)
+scene("lights_not_array", '{ "objects": [ { "type": "sphere" } ], "lights": { "type": "point" } }', ":1:50: error: lights: expected an array")
+scene("lights_too_many", '{ "objects": [ { "type": "sphere" } ], "lights": [' + ", ".join(['{ "type": "point" }'] * 65) + "] }",
+      "error: lights[64]: a scene takes at most 64 lights")
 
 # The renderer's --set overrides (and so its number flags, which become overrides): each a case
 # with a valid scene file, the override in the manifest's third column.

@@ -75,6 +75,32 @@ TEST(SceneStats, TextureMemoryCountsEveryMipLevelAsFloatRgba) {
     EXPECT_EQ(formatBytes(s.textureBytes), "682.8 KiB");
 }
 
+TEST(SceneStats, CountsTheLightListPerTriangleMaterialsAndAnalyticLights) {
+    // A glTF that Blender exported, its checker plane made emissive: its triangles are lights by
+    // their own glTF material (the mesh's is the default); a black point light is no light.
+    Scene scene = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/tests/data/blender_suzanne/suzanne.json");
+    int checker = -1;
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materials[i].name.find("checker") != std::string::npos) checker = int(i);
+    ASSERT_GE(checker, 0);
+    scene.materials[size_t(checker)].emission = glm::vec3(1.0f);
+    scene.materials[size_t(checker)].emissionStrength = 2.0f;
+    const Mesh& mesh = scene.meshes.at(0);
+    std::size_t expected = 0;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) expected += mesh.triangleMaterials.at(t) == checker ? 1 : 0;
+    ASSERT_GT(expected, 0u);
+    ASSERT_LT(expected, mesh.triangles.size());
+    Light point, sun, black;
+    sun.type = Light::Type::Distant;
+    black.intensity = glm::vec3(0.0f);
+    scene.lights = {point, sun, black};
+    const SceneStats s = sceneStats(scene, buildSceneGeometry(scene));
+    EXPECT_EQ(s.emissiveTriangles, expected);
+    EXPECT_EQ(s.emissiveSpheres, 1u);   // the lamp
+    EXPECT_EQ(s.analyticLights, 2u);
+    EXPECT_NE(describeSceneStats(s).find("2 point/spot/distant"), std::string::npos);
+}
+
 TEST(SceneStats, DescriptionNamesEveryFigure) {
     const Scene scene = loadScene(test::scenePath("cornell_box.json"));
     const std::string d = describeSceneStats(sceneStats(scene, buildSceneGeometry(scene)));

@@ -40,8 +40,8 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
     EXPECT_EQ(d[2].first, "RAYLAB_TOP_LEVEL_LINEAR");
     // 5 geometry features + NEE, BSDF, sky map + roughness, metallic, emission textures, wrap modes
-    // + triangle lights, light power selection
-    EXPECT_EQ(on(featureDefines(allFeatures())).size(), 15u);
+    // + triangle lights, light power selection + point/spot/distant lights, one-sided emitters
+    EXPECT_EQ(on(featureDefines(allFeatures())).size(), 17u);
 }
 
 TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore) {

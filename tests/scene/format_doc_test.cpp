@@ -81,6 +81,7 @@ TEST(SceneFormatDoc, EveryMaterialAndObjectKeyHasATableRow) {
     for (const MaterialParamSpec& p : materialParameters()) expectRowMatches(rows, p, p.defaultValue());
     for (const SphereParamSpec& p : sphereParameters()) expectRowMatches(rows, p, p.defaultValue());
     for (const TransformParamSpec& p : transformParameters()) expectRowMatches(rows, p, p.defaultValue());
+    for (const LightParamSpec& p : lightParameters()) expectRowMatches(rows, p, p.defaultValue());
     // Keys of an object that the loader handles itself.
     for (const char* key : {"type", "material", "sky.map"}) EXPECT_EQ(rows.count(key), 1u) << "`" << key << "` undocumented";
     for (std::string_view key : meshKeys()) EXPECT_EQ(rows.count(std::string(key)), 1u) << "`" << key << "` undocumented";
@@ -96,6 +97,8 @@ TEST(SceneFormatDoc, NoRowsForKeysThatDoNotExist) {
                            std::any_of(sphereParameters().begin(), sphereParameters().end(),
                                        [&](const auto& p) { return p.key == key; }) ||
                            std::any_of(transformParameters().begin(), transformParameters().end(),
+                                       [&](const auto& p) { return p.key == key; }) ||
+                           std::any_of(lightParameters().begin(), lightParameters().end(),
                                        [&](const auto& p) { return p.key == key; }) ||
                            std::any_of(meshKeys().begin(), meshKeys().end(),
                                        [&](std::string_view k) { return k == key; }) ||

@@ -46,7 +46,7 @@ TEST(HostileJson, NestingPastTheLimitIsALocatedErrorWithAShortPath) {
     const std::string quoted = "{ \"a[\": \"" + std::string(200, '[') + "\", /* " + std::string(200, '{') +
                                " */ \"objects\": [ {} ] }";
     EXPECT_EQ(errorOf(quoted), "test.json:1:3: error: [\"a[\"]: unknown key 'a[' at the top level (known keys: camera, "
-                               "render, sky, materials, objects)");
+                               "render, sky, materials, objects, lights)");
 }
 
 TEST(HostileJson, AHundredThousandLevelsFailWithoutCrashingWhereTheLimitIsPassed) {

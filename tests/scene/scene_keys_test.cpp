@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 
@@ -52,6 +53,25 @@ TEST(SceneKeys, SetsMaterialsByNameOrIndexAndObjectsByIndex) {
     EXPECT_EQ(s.materials[red].albedo, glm::vec3(0.5f));
     EXPECT_EQ(setParam(s, "objects.1.radius", "2"), Trigger::MoveObjects);
     EXPECT_FLOAT_EQ(s.spheres[1].radius, 2.0f);
+}
+
+TEST(SceneKeys, LightsTakeTheKeysOfTheirTypeWithTheLoadersChecks) {
+    Scene s = parseScene(R"({"objects": [{"type": "sphere"}],
+                             "lights": [{"type": "spot", "power": 10}, {"type": "distant"}]})", "lights.json");
+    EXPECT_EQ(setParam(s, "lights.0.intensity", "[1, 2, 3]"), Trigger::UpdateMaterials);
+    EXPECT_EQ(s.lights[0].intensity, glm::vec3(1, 2, 3));
+    EXPECT_EQ(s.lights[0].power, 0.0f) << "the intensity given replaces the power";
+    setParam(s, "lights.1.angular_radius", "0.27");
+    EXPECT_FLOAT_EQ(s.lights[1].angularRadius, 0.27f);
+    EXPECT_NE(errorOf(s, "lights.1.position", "[0, 1, 0]").find("this light has no key 'position'"), std::string::npos);
+    EXPECT_NE(errorOf(s, "lights.0.inner_angle", "40").find("must not exceed outer_angle"), std::string::npos);
+    EXPECT_NE(errorOf(s, "lights.1.direction", "[0, 0, 0]").find("non-zero direction"), std::string::npos);
+    EXPECT_NE(errorOf(s, "lights.1.angular_radius", "90").find("must be in [0, 90)"), std::string::npos);
+    EXPECT_NE(errorOf(s, "lights.2.irradiance", "1").find("no light 2"), std::string::npos);
+    EXPECT_EQ(s.lights[0].innerAngle, 25.0f);
+    const std::vector<std::string> keys = sceneKeys(s);
+    EXPECT_NE(std::find(keys.begin(), keys.end(), "lights.1.irradiance"), keys.end());
+    EXPECT_EQ(std::find(keys.begin(), keys.end(), "lights.1.position"), keys.end());
 }
 
 TEST(SceneKeys, RejectsBadKeysAndValuesWithoutChangingTheScene) {

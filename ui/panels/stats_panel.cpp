@@ -38,7 +38,8 @@ void drawStatsPanel(Viewer& viewer, UiState&) {
             ImGui::Text("BVH nodes: %zu top + %zu mesh, depth %d", st.topBvhNodes, st.meshBvhNodes, st.bvhDepth);
             ImGui::Text("textures %zu (%s on the GPU), materials %zu", st.textures, formatBytes(st.textureBytes).c_str(),
                         st.materials);
-            ImGui::Text("lights: %zu emissive spheres, %zu triangles", st.emissiveSpheres, st.emissiveTriangles);
+            ImGui::Text("lights: %zu emissive spheres, %zu triangles, %zu point/spot/distant", st.emissiveSpheres,
+                        st.emissiveTriangles, st.analyticLights);
         }
         ImGui::Text("image %d x %d, restarts %llu", t->width(), t->height(), (unsigned long long)s.restarts);
     }
