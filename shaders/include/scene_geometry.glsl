@@ -7,6 +7,8 @@
 #include "scene_types.glsl"
 #include "geometry_types.glsl"
 #include "scene_data.glsl"
+#include "estimator_stages.glsl"
+#include "object_box.glsl"
 
 layout(std430, binding = BINDING_TOP_NODES) readonly buffer TopNodeBuffer { GpuBvhNode topNodes[]; };
 layout(std430, binding = BINDING_MESH_NODES) readonly buffer MeshNodeBuffer { GpuBvhNode meshNodes[]; };
@@ -23,6 +25,10 @@ GpuSphere sphereAt(uint i) { return spheres[i]; }
 uint instanceCount() { return uint(instances.length()); }
 uvec4 instanceInfo(uint i) { return instances[i].info; }
 uint sphereCount() { return uint(spheres.length()); }
+#if RAYLAB_ACCEL != RAYLAB_ACCEL_BVH
+layout(std430, binding = BINDING_OBJECT_BOXES) readonly buffer ObjectBoxBuffer { GpuObjectBox objectBoxes[]; };
+GpuObjectBox objectBoxAt(uint i) { return objectBoxes[i]; }
+#endif
 
 #if RAYLAB_COUNT_TRAVERSAL
 layout(std430, binding = BINDING_TRAVERSAL_COUNTERS) buffer TraversalCounters {

@@ -70,6 +70,7 @@ private:
     int triangleLightCount_ = 0;
     std::vector<double> lightPower_;
     unsigned triangleLightIndexBuffer_ = 0;   // per triangle 1 + its light index, 0 none
+    unsigned objectBoxBuffer_ = 0;            // the flat object list of render.accel boxes and none
     unsigned textureBuffers_[2] = {};    // texels, texture info
 };
 
