@@ -19,6 +19,15 @@ Material lambert(glm::vec3 albedo) {
     return m;
 }
 
+Material material(glm::vec3 albedo, glm::vec3 f0, float roughness, float transmission = 0.0f) {
+    Material m;
+    m.albedo = albedo;
+    m.f0 = f0;
+    m.roughness = roughness;
+    m.transmission = transmission;
+    return m;
+}
+
 TEST(BrdfExplorer, DiskMapIsAnInvertibleEqualAreaMap) {
     for (float x = -0.95f; x <= 0.95f; x += 0.1f)
         for (float y = -0.95f; y <= 0.95f; y += 0.1f) {
@@ -117,18 +126,9 @@ TEST_F(BrdfExplorerGpu, ChiSquareVerdictPassesTheRealSamplerAndFailsAWrongPdf) {
         Material m;
         float theta;
     };
-    Material ggx;
-    ggx.albedo = glm::vec3(0.5f);
-    ggx.f0 = glm::vec3(0.04f);
-    ggx.roughness = 0.5f;
-    Material glass;
-    glass.albedo = glm::vec3(0.0f);
-    glass.transmission = 1.0f;
-    glass.roughness = 0.5f;
-    Material smoothGlassOverDiffuse;
-    smoothGlassOverDiffuse.albedo = glm::vec3(0.7f);
-    smoothGlassOverDiffuse.transmission = 0.4f;
-    smoothGlassOverDiffuse.roughness = 0.0f;
+    const Material ggx = material(glm::vec3(0.5f), glm::vec3(0.04f), 0.5f);
+    const Material glass = material(glm::vec3(0.0f), glm::vec3(0.0f), 0.5f, 1.0f);
+    const Material smoothGlassOverDiffuse = material(glm::vec3(0.7f), glm::vec3(0.0f), 0.0f, 0.4f);
     const std::vector<Case> cases = {{"lambert", lambert(glm::vec3(0.8f)), 20.0f},
                                      {"ggx+diffuse", ggx, 60.0f},
                                      {"rough glass", glass, 35.0f},
@@ -166,18 +166,9 @@ TEST_F(BrdfExplorerGpu, ChiSquareVerdictPassesTheNaiveSamplers) {
     RenderSettings naive;
     naive.ggxSampling = GgxSampling::DCos;
     naive.diffuseSampling = DiffuseSampling::Uniform;
-    Material ggx;
-    ggx.albedo = glm::vec3(0.5f);
-    ggx.f0 = glm::vec3(0.04f);
-    ggx.roughness = 0.5f;
-    Material metal;
-    metal.albedo = glm::vec3(0.0f);
-    metal.f0 = glm::vec3(0.9f);
-    metal.roughness = 0.6f;
-    Material glass;
-    glass.albedo = glm::vec3(0.0f);
-    glass.transmission = 1.0f;
-    glass.roughness = 0.5f;
+    const Material ggx = material(glm::vec3(0.5f), glm::vec3(0.04f), 0.5f);
+    const Material metal = material(glm::vec3(0.0f), glm::vec3(0.9f), 0.6f);
+    const Material glass = material(glm::vec3(0.0f), glm::vec3(0.0f), 0.5f, 1.0f);
     const struct {
         const char* name;
         Material m;
