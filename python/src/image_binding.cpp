@@ -18,10 +18,12 @@ namespace raylab::python {
 namespace {
 
 nlohmann::json metadataJson(const RenderMetadata& m) {
-    return {{"spp", m.spp},           {"seconds", m.renderSeconds}, {"seed", m.seed},
+    nlohmann::json meta = {{"spp", m.spp},           {"seconds", m.renderSeconds}, {"seed", m.seed},
             {"scene", m.sceneFile},   {"non_finite", m.nonFiniteSamples}, {"sampler", m.sampler},
             {"target_spp", m.targetSpp}, {"rpp", m.rpp},             {"passes", m.passes},
             {"tracer", m.tracer},     {"settings_hash", m.settingsHash}, {"version", m.version}};
+    for (const auto& [name, value] : m.stages) meta[name] = value;
+    return meta;
 }
 
 py::tuple readImageFile(const std::string& path) {

@@ -8,6 +8,7 @@
 #include "render/progressive_render.h"
 #include "render/resume.h"
 #include "render/scene_stats.h"
+#include "scene/estimator_stages.h"
 #include "scene/parameters.h"
 #include "scene/scene_keys.h"
 
@@ -42,7 +43,7 @@ struct Rendered {
 
 nlohmann::json metadata(const PathTracer& tracer, const Scene& scene, const RenderOutcome& outcome,
                         const std::string& entry, const GlState& gl) {
-    return {
+    nlohmann::json meta = {
         {"spp", tracer.samplesPerPixel()},
         {"seconds", outcome.last.elapsed},
         {"non_finite", tracer.nonFiniteSamples()},
@@ -62,6 +63,8 @@ nlohmann::json metadata(const PathTracer& tracer, const Scene& scene, const Rend
         {"gl", gl.context},
         {"interrupted", outcome.interrupted},
     };
+    for (const auto& [name, value] : estimatorStages(scene)) meta[name] = value;
+    return meta;
 }
 
 py::tuple result(Rendered r) {

@@ -36,6 +36,8 @@ uniform vec3 uF0;
 uniform float uAlpha;
 uniform float uTransmission;
 uniform float uIor;
+uniform int uDiffuseSampling;   // mode 1: render.diffuse_sampling and render.ggx_sampling
+uniform int uGgxSampling;
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
@@ -78,7 +80,7 @@ void main() {
         samples[i] = SampleRecord(vec4(float(k), pmf, k >= 0 ? boundedLightPmf(k) : 0.0, 0.0), vec4(0.0));
         return;
     }
-    BsdfParams m = BsdfParams(uAlbedo, uF0, uAlpha, uTransmission, uIor);
+    BsdfParams m = BsdfParams(uAlbedo, uF0, uAlpha, uTransmission, uIor, uDiffuseSampling, uGgxSampling);
     BsdfSample s = bsdfSample(m, uWo, vec3(u.x, u.y, uLobe));
     samples[i] = SampleRecord(vec4(s.wi, s.pdf), vec4(s.weight, float(s.lobe + (s.delta ? 8 : 0))));
 }

@@ -23,6 +23,13 @@ struct BsdfParams {
     float alpha;          // GGX width, already clamped (ggxAlpha)
     float transmission;   // probability of the glass part
     float ior;
+#ifdef __cplusplus   // C++ callers that name only the material get the default estimator
+    int diffuseSampling = RAYLAB_DIFFUSE_COSINE;
+    int ggxSampling = RAYLAB_GGX_VNDF;
+#else
+    int diffuseSampling;  // render.diffuse_sampling: RAYLAB_DIFFUSE_*
+    int ggxSampling;      // render.ggx_sampling: RAYLAB_GGX_*
+#endif
 };
 
 // The metallic workflow of other tools on raylab's f0 model: a metal's base colour becomes its f0
@@ -69,15 +76,25 @@ RL_FN vec3 opaqueEval(BsdfParams m, vec3 wo, vec3 wi) {
     return result;
 }
 
+// The diffuse lobe's directions (render.diffuse_sampling) and their density.
+RL_FN vec3 diffuseSample(BsdfParams m, vec2 u) {
+    return m.diffuseSampling == RAYLAB_DIFFUSE_UNIFORM ? sampleUniformHemisphere(u) : sampleCosineHemisphere(u);
+}
+RL_FN float diffusePdf(BsdfParams m, float cosTheta) {
+    return m.diffuseSampling == RAYLAB_DIFFUSE_UNIFORM ? pdfUniformHemisphere(cosTheta) : pdfCosineHemisphere(cosTheta);
+}
+
 // Density of opaqueSample's non-delta directions.
 RL_FN float opaquePdf(BsdfParams m, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     float p = opaqueSpecularProbability(m, wo.z);
-    float pdf = (1.0f - p) * pdfCosineHemisphere(wi.z);
+    float pdf = (1.0f - p) * diffusePdf(m, wi.z);
     if (p > 0.0f && !ggxIsDelta(m.alpha)) {
-        // Reflection of visible normals: D_wo(h) / (4 wo·h) = G1(wo) D(h) / (4 cosθo).
         vec3 h = normalize(wo + wi);
-        pdf += p * ggxG1(wo, m.alpha) * ggxD(h, m.alpha) / (4.0f * wo.z);
+        if (m.ggxSampling == RAYLAB_GGX_D_COS)
+            pdf += p * ggxDCosPdf(h, m.alpha) / (4.0f * dot(wo, h));   // D cosθh / (4 wo·h)
+        else   // reflection of visible normals: D_wo(h) / (4 wo·h) = G1(wo) D(h) / (4 cosθo)
+            pdf += p * ggxG1(wo, m.alpha) * ggxD(h, m.alpha) / (4.0f * wo.z);
     }
     return pdf;
 }
@@ -91,15 +108,16 @@ RL_FN BsdfSample opaqueSample(BsdfParams m, vec3 wo, vec2 u, float uLobe) {
             vec3 F = opaqueViewFresnel(m, wo.z);
             return BsdfSample(vec3(-wo.x, -wo.y, wo.z), F / p, p, LOBE_SPECULAR, true);
         }
-        vec3 h = ggxSampleVisibleNormal(wo, m.alpha, u);
+        vec3 h = ggxSampleNormal(m.ggxSampling, wo, m.alpha, u);
         vec3 wi = 2.0f * dot(wo, h) * h - wo;
-        if (wi.z <= 0.0f) return bsdfNoSample();   // reflected below the surface: no light
+        // Reflected below the surface: no light (this drops every h facing away from wo too).
+        if (wi.z <= 0.0f) return bsdfNoSample();
         float pdf = opaquePdf(m, wo, wi);
         if (!(pdf > 0.0f)) return bsdfNoSample();
         return BsdfSample(wi, opaqueEval(m, wo, wi) / pdf, pdf, LOBE_SPECULAR, false);
     }
-    vec3 wi = sampleCosineHemisphere(u);
-    if (p <= 0.0f) {
+    vec3 wi = diffuseSample(m, u);
+    if (p <= 0.0f && m.diffuseSampling == RAYLAB_DIFFUSE_COSINE) {
         // Diffuse only: f·cos/pdf = (1 − F) ρ exactly (the furnace tests rely on exactness).
         return BsdfSample(wi, (vec3(1.0f) - opaqueViewFresnel(m, wo.z)) * m.albedo,
                           pdfCosineHemisphere(wi.z), LOBE_DIFFUSE, false);
@@ -133,7 +151,7 @@ RL_FN float bsdfPdf(BsdfParams m, vec3 wo, vec3 wi) {
         float s = wo.z < 0.0f ? -1.0f : 1.0f;
         pdf = (1.0f - m.transmission) * opaquePdf(m, mirrorZ(wo, s), mirrorZ(wi, s));
     }
-    if (bsdfRoughGlass(m)) pdf += m.transmission * roughDielectricPdf(wo, wi, m.alpha, m.ior);
+    if (bsdfRoughGlass(m)) pdf += m.transmission * roughDielectricPdf(wo, wi, m.alpha, m.ior, m.ggxSampling);
     return pdf;
 }
 
@@ -157,7 +175,7 @@ RL_FN BsdfSample bsdfSample(BsdfParams m, vec3 wo, vec3 u) {
             g.pdf *= m.transmission;   // the weight keeps t/t = 1
             return g;
         }
-        return bsdfCompleteSample(m, wo, roughDielectricSample(wo, m.alpha, m.ior, vec2(u.x, u.y), uGlass));
+        return bsdfCompleteSample(m, wo, roughDielectricSample(wo, m.alpha, m.ior, m.ggxSampling, vec2(u.x, u.y), uGlass));
     }
     float uLobe = (u.z - m.transmission) / (1.0f - m.transmission);
     if (wo.z == 0.0f) return bsdfNoSample();

@@ -43,8 +43,25 @@ RL_FN vec3 nodeMin(GpuBvhNode n) { return vec3(n.boundsMin.x, n.boundsMin.y, n.b
 RL_FN vec3 nodeMax(GpuBvhNode n) { return vec3(n.boundsMax.x, n.boundsMax.y, n.boundsMax.z); }
 
 #if RAYLAB_FEATURE_MESHES
+// Nearest of triangles [first, first + count) in (0, rec.t), in object space; updates rec.
+RL_FN bool intersectTriangles(TriangleRay triRay, float tOffset, uint instance, uint first, uint count, bool anyHit,
+                              RL_INOUT(TraceRecord) rec) {
+    bool found = false;
+    for (uint i = first; i < first + count; ++i) {
+        GpuTriangle tri = triangleAt(i);
+        RL_COUNT_TRIANGLE();
+        TriangleHit h;
+        if (intersectTriangle(triRay, xyzOf(tri.p0), xyzOf(tri.p1), xyzOf(tri.p2), rec.t - tOffset, h)) {
+            rec = TraceRecord(h.t + tOffset, instance, i, h.b1, h.b2);
+            found = true;
+            if (anyHit) break;
+        }
+    }
+    return found;
+}
+
 // Nearest triangle of one mesh in (0, rec.t), in the mesh's object space; updates rec. The
-// object-space ray starts tOffset further along than the world ray (see intersectInstance).
+// object-space ray starts tOffset further along than the world ray (see objectRay).
 RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool anyHit, RL_INOUT(TraceRecord) rec) {
     vec3 invDir = safeInverseDir(ray.dir);
     TriangleRay triRay = triangleRay(ray);
@@ -59,17 +76,7 @@ RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool a
         bool descended = false;
         if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t - tOffset) >= 0.0f) {
             if (bvhNodeIsLeaf(n)) {
-                uint first = bvhNodeLink(n);
-                for (uint i = first; i < first + bvhNodeCount(n); ++i) {
-                    GpuTriangle tri = triangleAt(i);
-                    RL_COUNT_TRIANGLE();
-                    TriangleHit h;
-                    if (intersectTriangle(triRay, xyzOf(tri.p0), xyzOf(tri.p1), xyzOf(tri.p2), rec.t - tOffset, h)) {
-                        rec = TraceRecord(h.t + tOffset, instance, i, h.b1, h.b2);
-                        found = true;
-                        if (anyHit) break;
-                    }
-                }
+                if (intersectTriangles(triRay, tOffset, instance, bvhNodeLink(n), bvhNodeCount(n), anyHit, rec)) found = true;
                 if (found && anyHit) done = true;
             } else {
                 // Visit the child on the near side of the split plane first.
@@ -87,6 +94,19 @@ RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool a
         }
     }
     return found;
+}
+
+// A mesh instance's ray in its object space; the direction is not renormalised, so t carries over.
+// The transformed origin is only known within its rounding error: it is moved forward along the
+// ray to the edge of that error box, by dt, so a surface the world ray starts on is not met again,
+// and the interval is shortened by as much (pbrt-v4 Transform::operator()(Ray), §6.8.6).
+RL_FN Ray objectRay(GpuInstance inst, Ray ray, RL_OUT(float) dt) {
+    vec3 o = transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin);
+    vec3 d = transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir);
+    vec3 oError = transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin,
+                                      vec3(0.0f));
+    dt = dot(abs(d), oError) / dot(d, d);
+    return Ray(o + dt * d, d);
 }
 #endif
 
@@ -106,16 +126,9 @@ RL_FN bool intersectInstance(Ray ray, uint i, bool anyHit, RL_INOUT(TraceRecord)
 #endif
 #if RAYLAB_FEATURE_MESHES
     if (inst.info.x == INSTANCE_MESH) {
-        // Into object space; the direction is not renormalised, so t carries over. The transformed
-        // origin is only known within its rounding error: move it forward along the ray to the
-        // edge of that error box, so a surface the world ray starts on is not met again, and
-        // shorten the interval by as much (pbrt-v4 Transform::operator()(Ray), §6.8.6).
-        vec3 o = transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin);
-        vec3 d = transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir);
-        vec3 oError = transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin,
-                                          vec3(0.0f));
-        float dt = dot(abs(d), oError) / dot(d, d);
-        if (dt < rec.t && traverseMesh(Ray(o + dt * d, d), dt, i, inst.info.y, anyHit, rec)) found = true;
+        float dt;
+        Ray o = objectRay(inst, ray, dt);
+        if (dt < rec.t && traverseMesh(o, dt, i, inst.info.y, anyHit, rec)) found = true;
     }
 #endif
     return found;

@@ -71,13 +71,13 @@ RL_FN float roughDielectricEvalUp(vec3 wo, vec3 wi, float alpha, float eta) {
     return DG * (1.0f - F) * jacobian * abs(dot(wo, h)) / (wo.z * eta * eta);
 }
 
-RL_FN float roughDielectricPdfUp(vec3 wo, vec3 wi, float alpha, float eta) {
+RL_FN float roughDielectricPdfUp(vec3 wo, vec3 wi, float alpha, float eta, int ggxSampling) {
     vec3 h;
     float jacobian;
     if (!roughDielectricHalf(wo, wi, eta, h, jacobian)) return 0.0f;
     float F = fresnelDielectric(dot(wo, h), eta);
     float choice = wi.z > 0.0f ? F : 1.0f - F;
-    return choice * ggxVisibleNormalPdf(wo, h, alpha) * jacobian;
+    return choice * ggxNormalPdf(ggxSampling, wo, h, alpha) * jacobian;
 }
 
 RL_FN float roughDielectricEval(vec3 wo, vec3 wi, float alpha, float ior) {
@@ -86,22 +86,23 @@ RL_FN float roughDielectricEval(vec3 wo, vec3 wi, float alpha, float ior) {
                                  dielectricEta(wo, ior));
 }
 
-RL_FN float roughDielectricPdf(vec3 wo, vec3 wi, float alpha, float ior) {
+RL_FN float roughDielectricPdf(vec3 wo, vec3 wi, float alpha, float ior, int ggxSampling) {
     float s = wo.z < 0.0f ? -1.0f : 1.0f;
     return roughDielectricPdfUp(vec3(wo.x, wo.y, s * wo.z), vec3(wi.x, wi.y, s * wi.z), alpha,
-                                dielectricEta(wo, ior));
+                                dielectricEta(wo, ior), ggxSampling);
 }
 
-// A visible normal h, then reflection with probability F(wo·h), else refraction through h.
-// Returns the direction only (lobe set, weight and pdf left to the caller); LOBE_NONE when the
-// direction ends on the wrong side.
-RL_FN BsdfSample roughDielectricSample(vec3 wo, float alpha, float ior, vec2 u, float uChoice) {
+// A microfacet normal h (render.ggx_sampling), then reflection with probability F(wo·h), else
+// refraction through h. Returns the direction only (lobe set, weight and pdf left to the caller);
+// LOBE_NONE when h faces away from wo or the direction ends on the wrong side.
+RL_FN BsdfSample roughDielectricSample(vec3 wo, float alpha, float ior, int ggxSampling, vec2 u, float uChoice) {
     if (wo.z == 0.0f) return bsdfNoSample();
     float s = wo.z < 0.0f ? -1.0f : 1.0f;
     float eta = dielectricEta(wo, ior);
     vec3 woUp = vec3(wo.x, wo.y, s * wo.z);
-    vec3 h = ggxSampleVisibleNormal(woUp, alpha, u);
+    vec3 h = ggxSampleNormal(ggxSampling, woUp, alpha, u);
     float cosI = dot(woUp, h);
+    if (cosI <= 0.0f) return bsdfNoSample();
     float F = fresnelDielectric(cosI, eta);
     vec3 wi;
     int lobe;

@@ -1,9 +1,10 @@
 // The Trowbridge–Reitz (GGX) microfacet distribution, isotropic, in the local frame (+z normal):
-// D, Smith masking with the height-correlated G2, and sampling of visible normals.
+// D, Smith masking with the height-correlated G2, and sampling of visible normals or of D·cos.
 // Shared by C++ and GLSL.
 #ifndef RAYLAB_GGX_GLSL
 #define RAYLAB_GGX_GLSL
 #include "compat.glsl"
+#include "estimator_stages.glsl"
 RL_NAMESPACE_BEGIN
 
 // α is clamped from below (pbrt-v4 TrowbridgeReitzDistribution); below GGX_DELTA_ALPHA the lobe
@@ -61,8 +62,8 @@ RL_FN float ggxVisibleNormalPdf(vec3 wo, vec3 h, float alpha) {
     return ggxG1(wo, alpha) * max(0.0f, dot(wo, h)) * ggxD(h, alpha) / wo.z;
 }
 
-// The classic alternative, kept for comparison (bench/materials.md): h drawn with density
-// D(h) cosθh (Walter et al. 2007, eq. 35–36). Its weights blow up at grazing wo.
+// The classic alternative (render.ggx_sampling d_cos; bench/estimator_stages.md): h drawn with
+// density D(h) cosθh (Walter et al. 2007, eq. 35–36), blind to wo, so its weights blow up at grazing wo.
 RL_FN vec3 ggxSampleDCos(float alpha, vec2 u) {
     float tan2 = alpha * alpha * u.x / max(1.0f - u.x, 1e-12f);
     float cosTheta = 1.0f / sqrt(1.0f + tan2);
@@ -71,6 +72,15 @@ RL_FN vec3 ggxSampleDCos(float alpha, vec2 u) {
     return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
 }
 RL_FN float ggxDCosPdf(vec3 h, float alpha) { return ggxD(h, alpha) * max(h.z, 0.0f); }
+
+// The normal render.ggx_sampling draws (method: RAYLAB_GGX_VNDF or RAYLAB_GGX_D_COS), h.z > 0, and
+// its density over h. D·cos also draws normals facing away from wo; callers drop those.
+RL_FN vec3 ggxSampleNormal(int method, vec3 wo, float alpha, vec2 u) {
+    return method == RAYLAB_GGX_D_COS ? ggxSampleDCos(alpha, u) : ggxSampleVisibleNormal(wo, alpha, u);
+}
+RL_FN float ggxNormalPdf(int method, vec3 wo, vec3 h, float alpha) {
+    return method == RAYLAB_GGX_D_COS ? ggxDCosPdf(h, alpha) : ggxVisibleNormalPdf(wo, h, alpha);
+}
 
 RL_NAMESPACE_END
 #endif

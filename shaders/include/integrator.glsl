@@ -57,9 +57,11 @@ float skyLightPdf(vec3 dir) { return skyByMap() ? environmentPdf(dir) : UNIFORM_
 
 BsdfParams materialBsdf(GpuMaterial m) {
 #if RAYLAB_STAGE < RAYLAB_STAGE_GGX
-    return BsdfParams(m.albedo.rgb, vec3(0.0f), 1.0f, 0.0f, 1.0f);   // render.stage: Lambert only
+    return BsdfParams(m.albedo.rgb, vec3(0.0f), 1.0f, 0.0f, 1.0f, RAYLAB_DIFFUSE_SAMPLING,
+                      RAYLAB_GGX_SAMPLING);   // render.stage: Lambert only
 #endif
-    return BsdfParams(m.albedo.rgb, m.f0Ior.rgb, ggxAlpha(m.albedo.a), m.emission.a, m.f0Ior.a);
+    return BsdfParams(m.albedo.rgb, m.f0Ior.rgb, ggxAlpha(m.albedo.a), m.emission.a, m.f0Ior.a,
+                      RAYLAB_DIFFUSE_SAMPLING, RAYLAB_GGX_SAMPLING);
 }
 
 // Lights that next-event estimation picks from (light_selection.glsl): the emissive spheres and
@@ -357,6 +359,9 @@ bool sampleLd(Hit hit, ShadingPoint sp, SkyParams sky, vec3 beta, int bounce, in
 // the same random numbers and f·cos/pdf = ρ exactly, without the general code's cost.
 BsdfSample sampleScattering(ShadingPoint sp, int bounce, inout Sampler smp) {
     vec2 u = sample2D(smp, sampleDim(bounce, SAMPLE_BOUNCE_BSDF));
+#if RAYLAB_DIFFUSE_SAMPLING == RAYLAB_DIFFUSE_UNIFORM
+    if (!bsdfNeedsLobeChoice(sp.bsdf)) return bsdfSample(sp.bsdf, sp.wo, vec3(u.x, u.y, 0.0f));   // the short path is cosine's
+#endif
 #if RAYLAB_GENERAL_BSDF
     if (bsdfNeedsLobeChoice(sp.bsdf))
         return bsdfSample(sp.bsdf, sp.wo, vec3(u.x, u.y, sample1D(smp, sampleDim(bounce, SAMPLE_BOUNCE_LOBE))));

@@ -34,5 +34,16 @@ RL_FN vec3 sampleCosineHemisphere(vec2 u) {
 
 RL_FN float pdfCosineHemisphere(float cosTheta) { return max(cosTheta, 0.0f) * INV_PI; }
 
+// Uniform hemisphere around +z (pbrt-v4 SampleUniformHemisphere): z = 1 − u.x is never 0, so the
+// direction stays above the surface; pdf = 1/(2π) (render.diffuse_sampling uniform).
+RL_FN vec3 sampleUniformHemisphere(vec2 u) {
+    float z = 1.0f - u.x;
+    float r = sqrt(max(0.0f, 1.0f - z * z));
+    float phi = 2.0f * PI * u.y;
+    return vec3(r * cos(phi), r * sin(phi), z);
+}
+
+RL_FN float pdfUniformHemisphere(float cosTheta) { return cosTheta > 0.0f ? 0.5f * INV_PI : 0.0f; }
+
 RL_NAMESPACE_END
 #endif

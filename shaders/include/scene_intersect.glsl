@@ -1,5 +1,6 @@
 // Nearest hit of a ray against the scene's geometry, and shadow-ray occlusion, through the
-// two-level BVH (bvh_traversal.glsl). GLSL only.
+// two-level BVH (bvh_traversal.glsl) or, by render.accel, without it (flat_traversal.glsl).
+// GLSL only.
 #ifndef RAYLAB_SCENE_INTERSECT_GLSL
 #define RAYLAB_SCENE_INTERSECT_GLSL
 #include "compat.glsl"
@@ -7,6 +8,10 @@
 #include "scene_data.glsl"
 #include "scene_geometry.glsl"
 #include "bvh_traversal.glsl"
+#include "estimator_stages.glsl"
+#if RAYLAB_ACCEL != RAYLAB_ACCEL_BVH
+#include "flat_traversal.glsl"
+#endif
 
 struct Hit {
     float t;
@@ -22,9 +27,20 @@ struct Hit {
     uint primitive;       // sphere index, or global triangle index
 };
 
+// The search render.accel chose.
+bool traceSceneAccel(Ray ray, float tMax, bool anyHit, out TraceRecord rec) {
+#if RAYLAB_ACCEL == RAYLAB_ACCEL_BOXES
+    return traceSceneFlat(ray, tMax, anyHit, true, rec);
+#elif RAYLAB_ACCEL == RAYLAB_ACCEL_NONE
+    return traceSceneFlat(ray, tMax, anyHit, false, rec);
+#else
+    return traceScene(ray, tMax, anyHit, rec);
+#endif
+}
+
 bool intersectScene(Ray ray, out Hit hit) {
     TraceRecord rec;
-    if (!traceScene(ray, FLOAT_MAX, false, rec)) return false;
+    if (!traceSceneAccel(ray, FLOAT_MAX, false, rec)) return false;
     SurfaceHit s = surfaceAt(ray, rec);
     hit.t = rec.t;
     hit.position = s.position;
@@ -41,6 +57,9 @@ bool intersectScene(Ray ray, out Hit hit) {
 }
 
 // Shadow rays: is there any surface in (0, tMax) along the ray (t in units of |ray.dir|)?
-bool occluded(Ray ray, float tMax) { return occludedBvh(ray, tMax); }
+bool occluded(Ray ray, float tMax) {
+    TraceRecord rec;
+    return traceSceneAccel(ray, tMax, true, rec);
+}
 
 #endif

@@ -1,5 +1,5 @@
 #pragma once
-// The GPU's BVH traversal (shaders/include/bvh_traversal.glsl) run on the CPU over a
+// The GPU's traversals (shaders/include/bvh_traversal.glsl, flat_traversal.glsl) run on the CPU over a
 // SceneGeometry: the reference for tests and a way to inspect traversal without a GPU.
 // Not thread-safe: one current geometry per thread.
 #include "accel/scene_geometry.h"
@@ -26,9 +26,11 @@ inline uvec4 instanceInfo(uint i) { return cpuTraversal.geometry->instances[i].i
 inline vec3 instanceWorldMin(uint i) { return vec3(cpuTraversal.geometry->instances[i].worldMin); }
 inline vec3 instanceWorldMax(uint i) { return vec3(cpuTraversal.geometry->instances[i].worldMax); }
 inline uint sphereCount() { return uint(cpuTraversal.geometry->spheres.size()); }
+inline GpuObjectBox objectBoxAt(uint i) { return cpuTraversal.geometry->objectBoxes[i]; }
 
 } // namespace raylab::glsl
 
 #define RL_COUNT_BOX() (++::raylab::glsl::cpuTraversal.boxTests)
 #define RL_COUNT_TRIANGLE() (++::raylab::glsl::cpuTraversal.triangleTests)
 #include "shaders/include/bvh_traversal.glsl"
+#include "shaders/include/flat_traversal.glsl"

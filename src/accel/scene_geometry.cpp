@@ -56,6 +56,7 @@ SceneGeometry buildSceneGeometry(const Scene& scene, const BvhOptions& options) 
         }
         g.meshRoot.push_back(nodeOffset);
         g.meshBounds.push_back(bvh.nodes.empty() ? Aabb{} : bvh.nodes[0].bounds);
+        g.meshTriangles.emplace_back(triangleOffset, std::uint32_t(mesh.triangles.size()));
         g.maxDepth = std::max(g.maxDepth, bvh.depth);
         weightedSah += bvh.sahCost() * double(mesh.triangles.size());
     }
@@ -121,7 +122,14 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
     g.topNodes.clear();
     for (const BvhNode& n : top.nodes) g.topNodes.push_back(gpuNode(n, 0u, 0u));
     g.instances.clear();
-    for (std::uint32_t i : top.order) g.instances.push_back(objects[i]);
+    g.objectBoxes.clear();
+    for (std::uint32_t i : top.order) {
+        g.instances.push_back(objects[i]);
+        const bool mesh = objects[i].info.x == glsl::INSTANCE_MESH;
+        const glm::uvec2 triangles = mesh ? g.meshTriangles.at(i - scene.spheres.size()) : glm::uvec2(0u);
+        const Aabb b = bounds[i].empty() ? Aabb{glm::vec3(0.0f), glm::vec3(-1.0f)} : bounds[i];   // never hit
+        g.objectBoxes.push_back({glm::vec4(b.min, 0.0f), glm::vec4(b.max, 0.0f), glm::uvec4(triangles, 0u, 0u)});
+    }
     // Each sphere knows its instance, so the linear top level can loop over spheres directly.
     for (std::size_t i = 0; i < g.instances.size(); ++i)
         if (g.instances[i].info.x == glsl::INSTANCE_SPHERE) g.spheres[g.instances[i].info.y].info.y = unsigned(i);

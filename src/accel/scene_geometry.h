@@ -6,6 +6,7 @@
 #include "scene/scene.h"
 
 #include "shaders/include/geometry_types.glsl"
+#include "shaders/include/object_box.glsl"
 #include "shaders/include/scene_types.glsl"
 
 #include <vector>
@@ -19,10 +20,12 @@ struct SceneGeometry {
     std::vector<glsl::GpuVertex> vertices;
     std::vector<std::uint32_t> meshRoot;   // per mesh: its root node in meshNodes
     std::vector<Aabb> meshBounds;          // per mesh: object-space bounds
+    std::vector<glm::uvec2> meshTriangles; // per mesh: its first triangle in triangles and its count
     // Top level.
     std::vector<glsl::GpuSphere> spheres;       // world space
     std::vector<glsl::GpuInstance> instances;   // in top-level leaf order
     std::vector<glsl::GpuBvhNode> topNodes;
+    std::vector<glsl::GpuObjectBox> objectBoxes;   // per instance, same order: render.accel boxes and none
 
     // Figures for benchmarks and reports.
     double meshBuildSeconds = 0.0;

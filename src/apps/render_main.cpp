@@ -14,6 +14,7 @@
 #include "render/resume.h"
 #include "render/scene_stats.h"
 #include "render/tracer_variants.h"
+#include "scene/estimator_stages.h"
 #include "scene/parameters.h"
 #include "scene/scene_loader.h"
 
@@ -299,6 +300,7 @@ int main(int argc, char** argv) {
         meta.sceneFile = scene.sourcePath.string();
         meta.nonFiniteSamples = tracer->nonFiniteSamples();
         meta.sampler = formatValue(*findParameter("render.sampler"), std::int64_t(scene.render.sampler));
+        meta.stages = estimatorStages(scene);
         meta.targetSpp = std::uint64_t(scene.render.spp);
         meta.rpp = scene.render.rpp;
         meta.passes = tracer->passes();

@@ -15,9 +15,10 @@ float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * 
 
 } // namespace
 
-glsl::BsdfParams explorerBsdf(const Material& m, const LobeToggles& lobes) {
+glsl::BsdfParams explorerBsdf(const Material& m, const LobeToggles& lobes, const RenderSettings& render) {
     // Untextured, so metallic applies as the scene upload bakes it (render/gpu_scene.cpp).
-    glsl::BsdfParams p = glsl::bsdfWithMetallic({m.albedo, m.f0, glsl::ggxAlpha(m.roughness), m.transmission, m.ior},
+    glsl::BsdfParams p = glsl::bsdfWithMetallic({m.albedo, m.f0, glsl::ggxAlpha(m.roughness), m.transmission, m.ior,
+                                                 int(render.diffuseSampling), int(render.ggxSampling)},
                                                 m.metallic);
     if (!lobes.diffuse) p.albedo = glm::vec3(0.0f);
     if (!lobes.specular) p.f0 = glm::vec3(0.0f);

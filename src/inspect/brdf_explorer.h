@@ -23,8 +23,9 @@ struct LobeToggles {
 };
 
 // The material's BSDF as the tracer builds it (integrator.glsl materialBsdf), lobes switched off
-// as asked. Untextured: the albedo is the material's constant.
-glsl::BsdfParams explorerBsdf(const Material& m, const LobeToggles& lobes = {});
+// as asked, sampled as `render` says (render.diffuse_sampling, render.ggx_sampling). Untextured:
+// the albedo is the material's constant.
+glsl::BsdfParams explorerBsdf(const Material& m, const LobeToggles& lobes = {}, const RenderSettings& render = {});
 
 // Local frame (+z the normal): θ from the normal, φ around it, degrees.
 glm::vec3 directionFromAngles(float thetaDeg, float phiDeg);

@@ -1,6 +1,7 @@
 #include "io/image_io.h"
 
 #include "io/stderr_capture.h"
+#include "scene/estimator_stages.h"
 #include "shaders/include/tone_map.glsl"
 #include "texture/image_size.h"
 
@@ -84,6 +85,7 @@ void writeImage(const fs::path& path, const Image& image, const RenderMetadata& 
     spec.attribute("raylab:seed", unsigned(meta.seed));
     spec.attribute("raylab:scene", meta.sceneFile);
     spec.attribute("raylab:sampler", meta.sampler);
+    for (const auto& [name, value] : meta.stages) spec.attribute("raylab:" + name, value);
     spec.attribute("raylab:nonfinite_samples", int(std::min<std::uint64_t>(meta.nonFiniteSamples, 0x7fffffff)));
     spec.attribute("raylab:target_spp", int(std::min<std::uint64_t>(meta.targetSpp, 0x7fffffff)));
     spec.attribute("raylab:rpp", meta.rpp);
@@ -177,6 +179,11 @@ RenderMetadata readRenderMetadata(const fs::path& path) {
     m.seed = std::uint32_t(integer("raylab:seed"));
     m.sceneFile = text("raylab:scene");
     m.sampler = text("raylab:sampler");
+    for (std::string_view key : kEstimatorStageKeys) {
+        const std::string stage(key.substr(key.find('.') + 1));
+        if (const ParamValue* p = spec.find_attribute("raylab:" + stage, TypeDesc::STRING))
+            m.stages.emplace_back(stage, p->get<ustring>().string());
+    }
     m.nonFiniteSamples = integer("raylab:nonfinite_samples");
     m.targetSpp = integer("raylab:target_spp");
     m.rpp = int(integer("raylab:rpp"));

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace raylab {
 
@@ -25,6 +27,9 @@ struct RenderMetadata {
     std::string sceneFile;
     std::uint64_t nonFiniteSamples = 0;
     std::string sampler = "independent";   // render.sampler, as the scene writes it
+    // The estimator's stages (scene/estimator_stages.h) as attributes raylab:<name>; a stage
+    // missing from an older file is left out.
+    std::vector<std::pair<std::string, std::string>> stages;
     std::uint64_t targetSpp = 0;           // render.spp of the run (stratified lays its strata out for it)
     int rpp = 0;                           // samples per pass
     std::uint64_t passes = 0;

@@ -56,6 +56,7 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &lightAliasBuffer_);
     glCreateBuffers(1, &triangleLightIndexBuffer_);
     glCreateBuffers(1, &analyticLightBuffer_);
+    glCreateBuffers(1, &objectBoxBuffer_);
 }
 
 GpuScene::~GpuScene() {
@@ -71,6 +72,7 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &triangleLightBuffer_);
     glDeleteBuffers(1, &lightAliasBuffer_);
     glDeleteBuffers(1, &triangleLightIndexBuffer_);
+    glDeleteBuffers(1, &objectBoxBuffer_);
 }
 
 void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
@@ -141,6 +143,7 @@ void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     const Scene relative = cameraRelative(scene, origin);
     relativeTop_.meshRoot = geometry_.meshRoot;
     relativeTop_.meshBounds = geometry_.meshBounds;
+    relativeTop_.meshTriangles = geometry_.meshTriangles;
     updateTopLevel(relativeTop_, relative);
     std::swap(relativeTop_.triangles, geometry_.triangles);
     std::swap(relativeTop_.vertices, geometry_.vertices);
@@ -167,6 +170,7 @@ void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     glNamedBufferData(analyticLightBuffer_, sizeof block, &block, GL_STATIC_DRAW);
     uploadBuffer(geometryBuffers_[0], relativeTop_.topNodes);
     uploadBuffer(geometryBuffers_[2], relativeTop_.instances);
+    uploadBuffer(objectBoxBuffer_, relativeTop_.objectBoxes);
 }
 
 // The sky map as an RGBA32F texture, rows top first as in the file (v = 0 is straight up); a
@@ -205,6 +209,7 @@ void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_LIGHT_ALIAS, lightAliasBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHT_INDEX, triangleLightIndexBuffer_);
     glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_ANALYTIC_LIGHTS_UBO, analyticLightBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_OBJECT_BOXES, objectBoxBuffer_);
 }
 
 } // namespace raylab

@@ -38,7 +38,10 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     if (f.stage < RenderStage::Ggx) f.generalBsdf = false;
     if (f.stage < RenderStage::Textures) f.textures = f.showMipLevel = false;
     if (f.stage < RenderStage::Full) f.depthOfField = false;
-    f.lightPowerSelection = f.nee && lightPowersDiffer(scene);
+    f.lightPowerSelection = f.nee && lightPowersDiffer(scene) && scene.render.lightSelection == LightSelection::Power;
+    f.diffuseSampling = scene.render.diffuseSampling;
+    f.ggxSampling = scene.render.ggxSampling;
+    f.accel = scene.render.accel;
     f.emissiveTriangles = false;
     for (const Mesh& m : scene.meshes) f.emissiveTriangles |= f.nee && meshHasEmissiveTriangle(scene, m);
     f.analyticLights = !scene.lights.empty();
@@ -57,6 +60,9 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
 #undef RL_FEATURE_DEFINE
     d.emplace_back(tracerDefine("RAYLAB_STAGE"), std::to_string(int(f.stage)));
     d.emplace_back(tracerDefine("RAYLAB_SAMPLER"), std::to_string(int(f.sampler)));
+    d.emplace_back(tracerDefine("RAYLAB_DIFFUSE_SAMPLING"), std::to_string(int(f.diffuseSampling)));
+    d.emplace_back(tracerDefine("RAYLAB_GGX_SAMPLING"), std::to_string(int(f.ggxSampling)));
+    d.emplace_back(tracerDefine("RAYLAB_ACCEL"), std::to_string(int(f.accel)));
     return d;
 }
 
@@ -75,6 +81,10 @@ std::string featureName(const SceneFeatures& f) {
     add(f.sampler == SamplerKind::Stratified, "stratified");
     add(f.sampler == SamplerKind::Sobol, "sobol");
     add(f.sampler == SamplerKind::ZSobol, "zsobol");
+    add(f.diffuseSampling == DiffuseSampling::Uniform, "diffuse-uniform");
+    add(f.ggxSampling == GgxSampling::DCos, "ggx-d-cos");
+    add(f.accel == Accel::Boxes, "accel-boxes");
+    add(f.accel == Accel::None, "accel-none");
     return name.empty() ? "none" : name;
 }
 

@@ -19,6 +19,9 @@ struct SceneFeatures {
 #undef RL_FEATURE_FIELD
     RenderStage stage = RenderStage(RAYLAB_STAGE);   // render.stage below full: RAYLAB_STAGE (teaching)
     SamplerKind sampler = SamplerKind(RAYLAB_SAMPLER);   // render.sampler: RAYLAB_SAMPLER
+    DiffuseSampling diffuseSampling = DiffuseSampling(RAYLAB_DIFFUSE_SAMPLING);   // RAYLAB_DIFFUSE_SAMPLING
+    GgxSampling ggxSampling = GgxSampling(RAYLAB_GGX_SAMPLING);                   // RAYLAB_GGX_SAMPLING
+    Accel accel = Accel(RAYLAB_ACCEL);                                            // RAYLAB_ACCEL
     static constexpr bool always = true;   // the `needs` of a feature without a prerequisite
     bool operator==(const SceneFeatures&) const = default;
 };
@@ -28,9 +31,11 @@ constexpr std::size_t kLinearTopLevelMax = 16;
 
 SceneFeatures sceneFeatures(const Scene& scene);   // what this scene needs
 SceneFeatures allFeatures();                       // the unspecialised tracer
-// RAYLAB_FEATURES_SPECIALISED, every feature of the list as 0 or 1, RAYLAB_STAGE and RAYLAB_SAMPLER.
+// RAYLAB_FEATURES_SPECIALISED, every feature of the list as 0 or 1, RAYLAB_STAGE, RAYLAB_SAMPLER and
+// the estimator stages of estimator_stages.glsl.
 ShaderDefines featureDefines(const SceneFeatures& features);
-// "spheres+meshes+dof", "none" when nothing is on; a sampler other than independent is named too.
+// "spheres+meshes+dof", "none" when nothing is on; a sampler other than independent is named too,
+// and so is an estimator stage other than the default.
 std::string featureName(const SceneFeatures& features);
 
 // Compiled programs by define set. Needs a current GL context; programs live as long as the cache.

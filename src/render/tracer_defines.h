@@ -23,6 +23,9 @@ inline constexpr TracerDefine kTracerDefines[] = {
 #undef RL_FEATURE_ENTRY
     {"RAYLAB_STAGE", "render/shader_variant.cpp"},
     {"RAYLAB_SAMPLER", "render/shader_variant.cpp"},
+    {"RAYLAB_DIFFUSE_SAMPLING", "render/shader_variant.cpp"},
+    {"RAYLAB_GGX_SAMPLING", "render/shader_variant.cpp"},
+    {"RAYLAB_ACCEL", "render/shader_variant.cpp"},
     // The compute entry's work-group size (render/path_tracer.cpp).
     {"LOCAL_SIZE_X", "render/path_tracer.cpp", true},
     {"LOCAL_SIZE_Y", "render/path_tracer.cpp", true},

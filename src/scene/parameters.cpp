@@ -173,6 +173,35 @@ std::vector<ParamSpec> buildSceneTable() {
              "blue noise across the screen, Ahmed & Wonka 2020). Dimensions: pixel 0-1, lens 2-3, then 8 per bounce from 4 (sampler.glsl).",
              G::RecompileShader, samplerNames),
         [](auto& s) -> auto& { return s.render.sampler; });
+    add(spec("render.diffuse_sampling", T::Enum, kAny, kAny, "",
+             "Directions of the diffuse lobe: cosine (pdf cos/pi, a Lambert sample weighs exactly its albedo) or "
+             "uniform over the hemisphere (pdf 1/(2 pi), the naive estimator; bench/estimator_stages.md).",
+             G::RecompileShader,
+             {{"cosine", static_cast<int>(DiffuseSampling::Cosine)},
+              {"uniform", static_cast<int>(DiffuseSampling::Uniform)}}),
+        [](auto& s) -> auto& { return s.render.diffuseSampling; });
+    add(spec("render.ggx_sampling", T::Enum, kAny, kAny, "",
+             "Microfacet normals of the GGX lobes (specular and rough glass): vndf (visible normals, Heitz 2018) "
+             "or d_cos (D(h) cos(theta_h), Walter et al. 2007: weights blow up at grazing angles).",
+             G::RecompileShader,
+             {{"vndf", static_cast<int>(GgxSampling::Vndf)}, {"d_cos", static_cast<int>(GgxSampling::DCos)}}),
+        [](auto& s) -> auto& { return s.render.ggxSampling; });
+    add(spec("render.light_selection", T::Enum, kAny, kAny, "",
+             "With nee: which light a light sample goes to: power (bounded lights by their power, the sky half "
+             "beside them) or uniform (every light, the sky counted as one, an equal share).",
+             G::RecompileShader,
+             {{"power", static_cast<int>(LightSelection::Power)},
+              {"uniform", static_cast<int>(LightSelection::Uniform)}}),
+        [](auto& s) -> auto& { return s.render.lightSelection; });
+    add(spec("render.accel", T::Enum, kAny, kAny, "",
+             "How rays find surfaces: bvh (two-level bounding volume hierarchy), boxes (a flat list of object "
+             "boxes, each hit box's primitives all tested) or none (every primitive tested). Same image, "
+             "different cost (heat views, bench/estimator_stages.md).",
+             G::RecompileShader,
+             {{"bvh", static_cast<int>(Accel::Bvh)},
+              {"boxes", static_cast<int>(Accel::Boxes)},
+              {"none", static_cast<int>(Accel::None)}}),
+        [](auto& s) -> auto& { return s.render.accel; });
 
     // --- sky ---
     add(spec("sky.type", T::Enum, kAny, kAny, "",

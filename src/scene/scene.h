@@ -2,6 +2,7 @@
 // The in-memory scene: what a scene file describes, after validation. Plain data; the loader
 // (scene_loader.h) fills it, the renderer reads it. Units and ranges are in scenes/FORMAT.md.
 #include "texture/texture.h"
+#include "shaders/include/estimator_stages.glsl"
 
 #include <glm/glm.hpp>
 
@@ -45,6 +46,12 @@ enum class SamplerKind {
     ZSobol = 3,        // one Sobol sequence over Morton-ordered pixels (Ahmed & Wonka 2020)
 };
 
+// The estimator's switchable stages (shaders/include/estimator_stages.glsl, whose numbers they are).
+enum class DiffuseSampling { Cosine = RAYLAB_DIFFUSE_COSINE, Uniform = RAYLAB_DIFFUSE_UNIFORM };
+enum class GgxSampling { Vndf = RAYLAB_GGX_VNDF, DCos = RAYLAB_GGX_D_COS };
+enum class LightSelection { Power = RAYLAB_LIGHT_SELECTION_POWER, Uniform = RAYLAB_LIGHT_SELECTION_UNIFORM };
+enum class Accel { Bvh = RAYLAB_ACCEL_BVH, Boxes = RAYLAB_ACCEL_BOXES, None = RAYLAB_ACCEL_NONE };
+
 struct RenderSettings {
     int width = 640;             // pixels
     int height = 360;            // pixels
@@ -61,6 +68,10 @@ struct RenderSettings {
     int showMipLevel = 0;        // 1: textured surfaces show their mip level as colours (debug)
     RenderStage stage = RenderStage::Full;   // teaching: build the renderer up stage by stage
     SamplerKind sampler = SamplerKind::Sobol;    // the best of bench/samplers.md
+    DiffuseSampling diffuseSampling = DiffuseSampling::Cosine;   // bench/estimator_stages.md
+    GgxSampling ggxSampling = GgxSampling::Vndf;
+    LightSelection lightSelection = LightSelection::Power;
+    Accel accel = Accel::Bvh;
 };
 
 struct Material {

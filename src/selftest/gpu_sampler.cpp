@@ -65,6 +65,8 @@ std::vector<GpuSample> GpuSampler::run(int mode, unsigned count, unsigned seed, 
     p.set("uAlpha", m.alpha);
     p.set("uTransmission", m.transmission);
     p.set("uIor", m.ior);
+    p.set("uDiffuseSampling", m.diffuseSampling);
+    p.set("uGgxSampling", m.ggxSampling);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_BSDF_SAMPLES, buffer);
     glUseProgram(p.id());
     glDispatchCompute((count + 63) / 64, 1, 1);

@@ -189,6 +189,59 @@ TEST(Bvh, CpuTraversalMatchesBruteForceNearestAndShadow) {
     glsl::cpuTraversal.geometry = nullptr;
 }
 
+// render.accel boxes and none (flat_traversal.glsl) find exactly the BVH's hits, and pay for it: a
+// box per object per ray (boxes), more triangles than the BVH (boxes), every triangle (none).
+TEST(Bvh, FlatTraversalsFindTheBvhsHitsAtAHigherCost) {
+    auto check = [](const Scene& scene, const std::vector<test::TestRay>& rays, const std::string& name) {
+        const SceneGeometry g = buildSceneGeometry(scene);
+        glsl::cpuTraversal.geometry = &g;
+        std::uint64_t triangles[3] = {}, boxes[3] = {};
+        int hits = 0;
+        for (const test::TestRay& tr : rays) {
+            const glsl::Ray ray(glm::vec3(tr.origin), glm::vec3(tr.dir));
+            glsl::TraceRecord recs[3] = {};
+            bool found[3] = {}, occluded[3] = {};
+            for (int mode = 0; mode < 3; ++mode) {
+                glsl::cpuTraversal.boxTests = glsl::cpuTraversal.triangleTests = 0;
+                found[mode] = mode == 0 ? glsl::traceScene(ray, glsl::FLOAT_MAX, false, recs[mode])
+                                        : glsl::traceSceneFlat(ray, glsl::FLOAT_MAX, false, mode == 1, recs[mode]);
+                triangles[mode] += glsl::cpuTraversal.triangleTests;
+                boxes[mode] += glsl::cpuTraversal.boxTests;
+                glsl::TraceRecord any{};
+                occluded[mode] = mode == 0 ? glsl::traceScene(ray, tr.dir.w, true, any)
+                                           : glsl::traceSceneFlat(ray, tr.dir.w, true, mode == 1, any);
+            }
+            hits += found[0];
+            for (int mode = 1; mode < 3; ++mode) {
+                ASSERT_EQ(found[mode], found[0]) << name << " mode " << mode;
+                ASSERT_EQ(occluded[mode], occluded[0]) << name << " mode " << mode;
+                if (!found[0]) continue;
+                ASSERT_EQ(recs[mode].t, recs[0].t) << name << " mode " << mode;
+                ASSERT_EQ(recs[mode].instance, recs[0].instance) << name << " mode " << mode;
+                ASSERT_EQ(recs[mode].primitive, recs[0].primitive) << name << " mode " << mode;
+            }
+        }
+        EXPECT_GT(hits, int(rays.size()) / 20) << name << ": the test should exercise hits";
+        EXPECT_EQ(boxes[1], std::uint64_t(rays.size()) * g.instances.size()) << name << ": one box per object and ray";
+        EXPECT_EQ(boxes[2], 0u) << name;
+        EXPECT_GT(triangles[1], triangles[0]) << name;
+        EXPECT_EQ(triangles[2], std::uint64_t(rays.size()) * g.triangles.size()) << name << ": every triangle, every ray";
+        glsl::cpuTraversal.geometry = nullptr;
+    };
+    for (std::uint32_t seed : {1u, 2u}) check(randomScene(seed, 40, 5, 200), randomRays(seed + 100, 4000), "random");
+    // The Cornell box's walls and blocks from the camera, towards points in and around the box.
+    const Scene cornell = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/cornell_box.json");
+    std::vector<test::TestRay> fromCamera;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (int i = 0; i < 1500; ++i) {
+        const glm::vec3 target = glm::vec3(278.0f, 274.0f, 280.0f) + 300.0f * glm::vec3(u(rng), u(rng), u(rng));
+        fromCamera.push_back({glm::vec4(cornell.camera.position, 0.0f),
+                              glm::vec4(target - cornell.camera.position, std::abs(u(rng)))});
+    }
+    check(cornell, fromCamera, "cornell_box");
+}
+
 TEST(Bvh, MovingAnObjectOnlyRebuildsTheTopLevel) {
     Scene scene = randomScene(9, 3, 2, 100);
     SceneGeometry g = buildSceneGeometry(scene);

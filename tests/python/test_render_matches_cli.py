@@ -25,6 +25,8 @@ class RenderMatchesCli(unittest.TestCase):
         self.assertTrue(np.array_equal(image, cli), f"{name}: max |difference| {np.abs(image - cli).max()}")
         self.assertEqual(image.meta["spp"], cli.meta["spp"])
         self.assertEqual(image.meta["settings_hash"], cli.meta["settings_hash"])
+        for stage in ("diffuse_sampling", "ggx_sampling", "light_selection", "accel"):
+            self.assertEqual(image.meta[stage], cli.meta[stage], stage)   # the EXR's raylab:<stage>
         return image
 
     def test_default_scene_bit_for_bit(self):
@@ -35,6 +37,18 @@ class RenderMatchesCli(unittest.TestCase):
             with self.subTest(sampler=sampler):
                 self.assert_same_as_cli("cornell_box.json", 4, 2, [], **{"render.sampler": sampler})
         self.assert_same_as_cli("veach_mis.json", 4, 3, [], **{"render.nee": False})
+
+    def test_estimator_stages_bit_for_bit_and_in_the_metadata(self):
+        # Each stage through --set and the module alike, named in both metadata (the EXR's
+        # raylab:* attributes and the module's dict); the defaults are named too.
+        stages = {"render.diffuse_sampling": "uniform", "render.ggx_sampling": "d_cos",
+                  "render.light_selection": "uniform", "render.accel": "boxes"}
+        image = self.assert_same_as_cli("cornell_box.json", 2, 4, [], **stages)
+        for key, value in stages.items():
+            self.assertEqual(image.meta[key.split(".")[1]], value)
+        none = self.assert_same_as_cli("cornell_box.json", 2, 4, [], **{"render.accel": "none"})
+        self.assertEqual(none.meta["accel"], "none")
+        self.assertEqual(none.meta["diffuse_sampling"], "cosine")
 
     def test_several_samples_per_pass_bit_for_bit(self):
         self.assert_same_as_cli("materials.json", 6, 1, ["--rpp", "3"], **{"render.rpp": 3})

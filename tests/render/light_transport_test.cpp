@@ -1,7 +1,9 @@
 // Light transport on the GPU (OSMesa): next-event estimation, BSDF sampling and MIS converge to
-// the same image, with every sampler; MIS wins on the Veach scene; glass in a uniform environment
-// is invisible; a GGX F = 1 sphere in a white furnace returns the single-scattering albedo E(μ, α).
+// the same image, with every sampler and under every estimator stage; MIS wins on the Veach scene;
+// glass in a uniform environment is invisible; a GGX F = 1 sphere in a white furnace returns the
+// single-scattering albedo E(μ, α), and a closed furnace Le / (1 − a), under every stage.
 #include "render_helpers.h"
+#include "render/light_list.h"
 #include "support/batch_stats.h"
 #include "shaders/include/camera.glsl"
 #include "shaders/include/environment_map.glsl"
@@ -12,6 +14,8 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -48,6 +52,56 @@ const char* kTransportScene = R"({
 
 Scene transportScene(std::vector<std::string> overrides) {
     return parseScene(kTransportScene, "transport.json", overrides);
+}
+
+// The transport scene with a second, dimmer and smaller lamp, so that picking lights by power and
+// uniformly differ (render.light_selection).
+Scene twoLampScene(std::vector<std::string> overrides) {
+    Scene s = transportScene(std::move(overrides));
+    Material lamp2 = *std::find_if(s.materials.begin(), s.materials.end(), [](const Material& m) { return m.name == "lamp"; });
+    lamp2.name = "lamp2";
+    lamp2.emissionStrength = 1.0f;
+    s.materials.push_back(lamp2);
+    Sphere sphere;
+    sphere.center = glm::vec3(-1.6f, 1.8f, 1.2f);
+    sphere.radius = 0.3f;
+    sphere.material = int(s.materials.size()) - 1;
+    s.spheres.push_back(sphere);
+    return s;
+}
+
+// E(μ, α) of an F = 1 GGX sphere (f0 1, albedo 0) in a white furnace, seen from close up: each
+// pixel against our own quadrature at its viewing cosine μ, within 0.5% on average.
+void expectGgxFurnaceAlbedo(const std::vector<std::string>& extra) {
+    const int w = 8, h = 8;
+    for (const char* roughness : {"0.5", "1"}) {
+        SCOPED_TRACE(roughness);
+        std::vector<std::string> set = {"render.width=8", "render.height=8", "render.spp=2048", "render.rpp=256",
+                                        "render.max_bounces=1", "camera.position=[0,0,2]", "camera.fov=40",
+                                        "materials.grey.albedo=0", "materials.grey.f0=1",
+                                        std::string("materials.grey.roughness=") + roughness};
+        set.insert(set.end(), extra.begin(), extra.end());
+        const Scene scene = loadScene(test::scenePath("furnace.json"), set);
+        const Image img = test::render(scene);
+        const float r = std::stof(roughness);
+        const auto cam = glsl::cameraBasis(scene.camera.position, scene.camera.lookAt, scene.camera.up,
+                                           scene.camera.fovY, 1.0f);
+        double measured = 0.0, expected = 0.0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                // The pixel centre's ray (image rows are stored top first).
+                const glm::vec2 ndc((float(x) + 0.5f) / float(w) * 2 - 1, 1 - (float(y) + 0.5f) / float(h) * 2);
+                const glsl::Ray ray = glsl::cameraRay(cam, ndc);
+                const glm::dvec3 o(ray.origin), d(glm::normalize(ray.dir));
+                const double b = glm::dot(o, d), c = glm::dot(o, o) - 1.0;
+                ASSERT_GT(b * b - c, 0.0) << "the sphere must fill the image";
+                const glm::dvec3 n = o + (-b - std::sqrt(b * b - c)) * d;
+                const double mu = -glm::dot(n, d);
+                expected += test::ggxAlbedoQuadrature(mu, double(r * r), 600);
+                measured += img.rgb(x, y).x;
+            }
+        EXPECT_NEAR(measured / (w * h), expected / (w * h), 0.005 * expected / (w * h));
+    }
 }
 
 } // namespace
@@ -154,38 +208,7 @@ TEST_F(LightTransportTest, SmoothGlassSphereInAUniformEnvironmentIsInvisible) {
     }
 }
 
-TEST_F(LightTransportTest, GgxFurnaceReturnsTheSingleScatteringAlbedo) {
-    // An F = 1 GGX sphere (f0 1, albedo 0) in a white furnace, seen from close up: each pixel
-    // must be E(μ, α) at its viewing cosine μ, from our own quadrature, within 0.5% on average.
-    const int w = 8, h = 8;
-    for (const char* roughness : {"0.5", "1"}) {
-        SCOPED_TRACE(roughness);
-        const Scene scene = loadScene(
-            test::scenePath("furnace.json"),
-            {"render.width=8", "render.height=8", "render.spp=2048", "render.rpp=256", "render.max_bounces=1",
-             "camera.position=[0,0,2]", "camera.fov=40", "materials.grey.albedo=0", "materials.grey.f0=1",
-             std::string("materials.grey.roughness=") + roughness});
-        const Image img = test::render(scene);
-        const float r = std::stof(roughness);
-        const auto cam = glsl::cameraBasis(scene.camera.position, scene.camera.lookAt, scene.camera.up,
-                                           scene.camera.fovY, 1.0f);
-        double measured = 0.0, expected = 0.0;
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                // The pixel centre's ray (image rows are stored top first).
-                const glm::vec2 ndc((float(x) + 0.5f) / float(w) * 2 - 1, 1 - (float(y) + 0.5f) / float(h) * 2);
-                const glsl::Ray ray = glsl::cameraRay(cam, ndc);
-                const glm::dvec3 o(ray.origin), d(glm::normalize(ray.dir));
-                const double b = glm::dot(o, d), c = glm::dot(o, o) - 1.0;
-                ASSERT_GT(b * b - c, 0.0) << "the sphere must fill the image";
-                const glm::dvec3 n = o + (-b - std::sqrt(b * b - c)) * d;
-                const double mu = -glm::dot(n, d);
-                expected += test::ggxAlbedoQuadrature(mu, double(r * r), 600);
-                measured += img.rgb(x, y).x;
-            }
-        EXPECT_NEAR(measured / (w * h), expected / (w * h), 0.005 * expected / (w * h));
-    }
-}
+TEST_F(LightTransportTest, GgxFurnaceReturnsTheSingleScatteringAlbedo) { expectGgxFurnaceAlbedo({}); }
 
 TEST_F(LightTransportTest, MaterialScenesProduceNoNanInAnyLightSamplingMode) {
     // Every material of the sweep (mirror, smooth and rough glass, metals, plastics) with NEE and
@@ -201,3 +224,49 @@ TEST_F(LightTransportTest, MaterialScenesProduceNoNanInAnyLightSamplingMode) {
             EXPECT_EQ(tracer.nonFiniteSamples(), 0u);
         }
 }
+
+// Every estimator stage at its value other than the default (the default estimator is the tests
+// above) is unbiased: it only changes the noise or the cost.
+class EstimatorStageTest : public test::GlTest, public ::testing::WithParamInterface<const char*> {};
+
+// "render.accel=boxes" names the test accel_boxes.
+std::string stageTestName(const ::testing::TestParamInfo<const char*>& p) {
+    std::string name = std::string(p.param).substr(7);
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return name;
+}
+
+TEST_P(EstimatorStageTest, BsdfNeeAndMisAgreeWithTheDefaultEstimator) {
+    constexpr int batches = 32;
+    ASSERT_TRUE(lightPowersDiffer(twoLampScene({}))) << "light_selection must have something to choose";
+    static const BatchStats reference = renderBatches(twoLampScene({}), batches);
+    const std::string stage = GetParam();
+    const BatchStats bsdf = renderBatches(twoLampScene({"render.nee=false", stage}), batches);
+    const BatchStats nee = renderBatches(twoLampScene({"render.mis=false", stage}), batches);
+    const BatchStats mis = renderBatches(twoLampScene({stage}), batches);
+    EXPECT_GE(fractionAgreeing(bsdf, reference), 0.995);
+    EXPECT_GE(fractionAgreeing(nee, reference), 0.995);
+    EXPECT_GE(fractionAgreeing(mis, reference), 0.995);
+}
+
+TEST_P(EstimatorStageTest, ClosedFurnaceConvergesToEmissionOverOneMinusAlbedo) {
+    const Scene scene = loadScene(test::scenePath("closed_furnace.json"), {GetParam()});
+    const Material& m = scene.materials[size_t(scene.spheres.at(0).material)];
+    const Image image = test::render(scene);
+    for (int c = 0; c < 3; ++c) {
+        const double expected = m.radiance()[c] / (1.0 - m.albedo[c]);
+        const auto values = test::channel(image, c);
+        const double se = test::standardError(values);
+        EXPECT_NEAR(test::mean(values), expected, 3.0 * se) << "channel " << c;
+        EXPECT_LT(se, 0.01 * expected) << "too noisy to mean anything";
+    }
+}
+
+TEST_P(EstimatorStageTest, GgxFurnaceReturnsTheSingleScatteringAlbedo) { expectGgxFurnaceAlbedo({GetParam()}); }
+
+INSTANTIATE_TEST_SUITE_P(EveryOtherValue, EstimatorStageTest,
+                         ::testing::Values("render.diffuse_sampling=uniform", "render.ggx_sampling=d_cos",
+                                           "render.light_selection=uniform", "render.accel=boxes",
+                                           "render.accel=none"),
+                         stageTestName);

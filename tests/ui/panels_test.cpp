@@ -86,6 +86,14 @@ TEST_F(PanelsTest, TheRenderPanelShowsTheEstimatorAndTheSamplePointsOfAPixel) {
     EXPECT_NE(text.find("estimator: zsobol sampler, BSDF sampling only"), std::string::npos) << text;
     EXPECT_NE(text.find("samples 0-15, dimensions 16-17"), std::string::npos) << text;
     EXPECT_EQ(ui.samplePoints.sampler, SamplerKind::ZSobol);
+    // The estimator's stages: a widget each, and those not at their default in the label.
+    for (const char* key : {"diffuse_sampling", "ggx_sampling", "light_selection", "accel"})
+        EXPECT_NE(text.find(key), std::string::npos) << key << " has no widget: " << text;
+    ASSERT_TRUE(viewer->document().set("render.diffuse_sampling", "\"uniform\""));
+    ASSERT_TRUE(viewer->document().set("render.accel", "\"boxes\""));
+    text = windowText([&] { drawRenderPanel(*viewer, ui); });
+    EXPECT_NE(text.find("estimator: zsobol sampler, BSDF sampling only, diffuse_sampling uniform, accel boxes"),
+              std::string::npos) << text;
 }
 
 } // namespace

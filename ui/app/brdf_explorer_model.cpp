@@ -27,13 +27,13 @@ void BrdfExplorerModel::fromBounce(const BounceRecord& b) {
 void BrdfExplorerModel::update(Viewer& viewer) {
     const int m = resolvedMaterial(viewer);
     if (m < 0) return;
-    params_ = explorerBsdf(viewer.scene().materials[std::size_t(m)], lobes);
+    params_ = explorerBsdf(viewer.scene().materials[std::size_t(m)], lobes, viewer.scene().render);
     thetaDeg = std::clamp(thetaDeg, 0.0f, 179.0f);
     sampleCount = std::clamp(sampleCount, 1000, 1 << 20);
     cells = std::clamp(cells, 4, 64);
     const glsl::BsdfParams& p = params_;
     const std::vector<float> key = {p.albedo.x, p.albedo.y, p.albedo.z, p.f0.x, p.f0.y, p.f0.z, p.alpha,
-                                    p.transmission, p.ior, thetaDeg, phiDeg, float(sampleCount), float(seed),
+                                    p.transmission, p.ior, float(p.diffuseSampling), float(p.ggxSampling), thetaDeg, phiDeg, float(sampleCount), float(seed),
                                     float(cells), float(alpha)};
     if (key == key_) return;
     key_ = key;

@@ -1,21 +1,28 @@
 // Render panel: files (open, save, screenshot, export), pause/resume/reset, resolution scale, every
 // render.* key of the parameter table except the display ones (camera panel), and the estimator:
-// sampler, next-event estimation, MIS and the sample points of a pixel.
+// sampler, next-event estimation, MIS, its switchable stages and the sample points of a pixel.
 #include "panels/panels.h"
 
 #include "app/actions.h"
 #include "panels/param_widget.h"
 #include "panels/sample_points_plot.h"
+#include "scene/estimator_stages.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
+
 namespace raylab::ui {
 namespace {
 
-bool isEstimatorKey(const ParamSpec& p) { return p.key == "render.sampler" || p.key == "render.nee" || p.key == "render.mis"; }
+bool isEstimatorKey(const ParamSpec& p) {
+    return p.key == "render.sampler" || p.key == "render.nee" || p.key == "render.mis" ||
+           std::ranges::find(kEstimatorStageKeys, p.key) != std::end(kEstimatorStageKeys);
+}
 
-// "zsobol sampler, NEE + MIS": what the progress line and the Estimator header say.
+// "zsobol sampler, NEE + MIS", then each estimator stage not at its default ("accel boxes"): what
+// the progress line and the Estimator header say.
 std::string estimatorLabel(const Scene& scene) {
     const RenderSettings& r = scene.render;
     std::string sampler = "?";
@@ -23,7 +30,12 @@ std::string estimatorLabel(const Scene& scene) {
         if (p.key == "render.sampler")
             for (const EnumName& n : p.enumNames)
                 if (n.value == int(r.sampler) && !n.alias) sampler = std::string(n.name);
-    return sampler + " sampler, " + (!r.nee ? "BSDF sampling only" : r.mis ? "NEE + MIS" : "NEE without MIS");
+    std::string label = sampler + " sampler, " + (!r.nee ? "BSDF sampling only" : r.mis ? "NEE + MIS" : "NEE without MIS");
+    const auto defaults = estimatorStages(Scene{});
+    const auto stages = estimatorStages(scene);
+    for (std::size_t i = 0; i < stages.size(); ++i)
+        if (stages[i] != defaults[i]) label += ", " + stages[i].first + " " + stages[i].second;
+    return label;
 }
 
 } // namespace
