@@ -23,7 +23,6 @@
 #define BINDING_TRIANGLES 11
 #define BINDING_VERTICES 12
 #define BINDING_TRAVERSAL_COUNTERS 13  // RAYLAB_COUNT_TRAVERSAL: boxes and triangles tested
-#define BINDING_OBJECT_BOXES 18        // render.accel boxes and none: the flat object list
 #define BINDING_TEXTURE_TEXELS 14
 #define BINDING_TEXTURE_INFO 15
 #define BINDING_TRIANGLE_LIGHTS 24

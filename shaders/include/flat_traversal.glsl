@@ -2,13 +2,12 @@
 // every object's world box and, where the ray meets it, all of the object's primitives; none tests
 // every primitive of the scene. Both find the BVH's hits (tests/accel/flat_traversal_test.cpp) at
 // the cost the heat views and bench/estimator_stages.md show. Shared by C++ and GLSL: the includer
-// defines the accessors of bvh_traversal.glsl and GpuObjectBox objectBoxAt(uint i), in the
-// instances' order (object_box.glsl).
+// defines the accessors of bvh_traversal.glsl; the instance record holds the object's world box and
+// its mesh's triangles (geometry_types.glsl).
 #ifndef RAYLAB_FLAT_TRAVERSAL_GLSL
 #define RAYLAB_FLAT_TRAVERSAL_GLSL
 #include "compat.glsl"
 #include "bvh_traversal.glsl"
-#include "object_box.glsl"
 RL_NAMESPACE_BEGIN
 
 // Object i's primitives, all of them: a sphere, or every triangle of a mesh in its object space.
@@ -16,10 +15,10 @@ RL_FN bool intersectObjectPrimitives(Ray ray, uint i, bool anyHit, RL_INOUT(Trac
 #if RAYLAB_FEATURE_MESHES
     GpuInstance inst = instanceAt(i);
     if (inst.info.x == INSTANCE_MESH) {
-        GpuObjectBox object = objectBoxAt(i);
         float dt;
         Ray o = objectRay(inst, ray, dt);
-        return dt < rec.t && intersectTriangles(triangleRay(o), dt, i, object.info.x, object.info.y, anyHit, rec);
+        return dt < rec.t && intersectTriangles(triangleRay(o), dt, i, instanceFirstTriangle(inst),
+                                                instanceTriangleCount(inst), anyHit, rec);
     }
 #endif
     return intersectInstance(ray, i, anyHit, rec);   // a sphere is its own only primitive
@@ -33,10 +32,8 @@ RL_FN bool traceSceneFlat(Ray ray, float tMax, bool anyHit, bool boxes, RL_OUT(T
     uint count = instanceCount();
     for (uint i = 0u; i < count; ++i) {
         if (boxes) {
-            GpuObjectBox object = objectBoxAt(i);
             RL_COUNT_BOX();
-            if (intersectBox(ray.origin, invDir, xyzOf(object.boundsMin), xyzOf(object.boundsMax), rec.t) < 0.0f)
-                continue;
+            if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) < 0.0f) continue;
         }
         if (intersectObjectPrimitives(ray, i, anyHit, rec)) found = true;
         if (found && anyHit) break;

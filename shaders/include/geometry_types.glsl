@@ -39,12 +39,16 @@ struct GpuInstance {
     vec4 objectToWorld0;
     vec4 objectToWorld1;
     vec4 objectToWorld2;
-    vec4 worldMin;   // xyz: the object's world-space box, as in the top level's leaves; w unused
-    vec4 worldMax;
+    vec4 worldMin;   // xyz: the object's world-space box, as in the top level's leaves; w: bits of
+                     // a mesh's first triangle (render.accel boxes and none test them all)
+    vec4 worldMax;   // xyz; w: bits of the mesh's triangle count, 0 for a sphere
     uvec4 info;   // x: INSTANCE_SPHERE / INSTANCE_MESH; y: sphere index / mesh root node;
                   // z: material; w: bit 0 = has vertex normals, bit 1 = has uvs, bits 2+ = the
                   // object id (instanceObjectId)
 };
+
+RL_FN uint instanceFirstTriangle(GpuInstance inst) { return floatBitsToUint(inst.worldMin.w); }
+RL_FN uint instanceTriangleCount(GpuInstance inst) { return floatBitsToUint(inst.worldMax.w); }
 
 // The scene's object number: sphere i is i, mesh j is sphereCount + j (Scene's order, the order
 // sceneToJson writes "objects" in and the viewer's `objects.N` keys use).

@@ -8,7 +8,6 @@
 #include "geometry_types.glsl"
 #include "scene_data.glsl"
 #include "estimator_stages.glsl"
-#include "object_box.glsl"
 
 layout(std430, binding = BINDING_TOP_NODES) readonly buffer TopNodeBuffer { GpuBvhNode topNodes[]; };
 layout(std430, binding = BINDING_MESH_NODES) readonly buffer MeshNodeBuffer { GpuBvhNode meshNodes[]; };
@@ -27,10 +26,6 @@ uvec4 instanceInfo(uint i) { return instances[i].info; }
 vec3 instanceWorldMin(uint i) { return instances[i].worldMin.xyz; }
 vec3 instanceWorldMax(uint i) { return instances[i].worldMax.xyz; }
 uint sphereCount() { return uint(spheres.length()); }
-#if RAYLAB_ACCEL != RAYLAB_ACCEL_BVH
-layout(std430, binding = BINDING_OBJECT_BOXES) readonly buffer ObjectBoxBuffer { GpuObjectBox objectBoxes[]; };
-GpuObjectBox objectBoxAt(uint i) { return objectBoxes[i]; }
-#endif
 
 #if RAYLAB_COUNT_TRAVERSAL
 layout(std430, binding = BINDING_TRAVERSAL_COUNTERS) buffer TraversalCounters {

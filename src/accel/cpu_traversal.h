@@ -26,7 +26,6 @@ inline uvec4 instanceInfo(uint i) { return cpuTraversal.geometry->instances[i].i
 inline vec3 instanceWorldMin(uint i) { return vec3(cpuTraversal.geometry->instances[i].worldMin); }
 inline vec3 instanceWorldMax(uint i) { return vec3(cpuTraversal.geometry->instances[i].worldMax); }
 inline uint sphereCount() { return uint(cpuTraversal.geometry->spheres.size()); }
-inline GpuObjectBox objectBoxAt(uint i) { return cpuTraversal.geometry->objectBoxes[i]; }
 
 } // namespace raylab::glsl
 

@@ -114,22 +114,16 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
         }
         bounds.push_back(world);
         // An empty mesh gets an inverted box, which no ray enters.
-        inst.worldMin = glm::vec4(world.empty() ? glm::vec3(0.0f) : world.min, 0.0f);
-        inst.worldMax = glm::vec4(world.empty() ? glm::vec3(-1.0f) : world.max, 0.0f);
+        const glm::uvec2 triangles = g.meshTriangles.at(m);
+        inst.worldMin = glm::vec4(world.empty() ? glm::vec3(0.0f) : world.min, glm::uintBitsToFloat(triangles.x));
+        inst.worldMax = glm::vec4(world.empty() ? glm::vec3(-1.0f) : world.max, glm::uintBitsToFloat(triangles.y));
         objects.push_back(inst);
     }
     const Bvh top = buildBvh(bounds, options);
     g.topNodes.clear();
     for (const BvhNode& n : top.nodes) g.topNodes.push_back(gpuNode(n, 0u, 0u));
     g.instances.clear();
-    g.objectBoxes.clear();
-    for (std::uint32_t i : top.order) {
-        g.instances.push_back(objects[i]);
-        const bool mesh = objects[i].info.x == glsl::INSTANCE_MESH;
-        const glm::uvec2 triangles = mesh ? g.meshTriangles.at(i - scene.spheres.size()) : glm::uvec2(0u);
-        const Aabb b = bounds[i].empty() ? Aabb{glm::vec3(0.0f), glm::vec3(-1.0f)} : bounds[i];   // never hit
-        g.objectBoxes.push_back({glm::vec4(b.min, 0.0f), glm::vec4(b.max, 0.0f), glm::uvec4(triangles, 0u, 0u)});
-    }
+    for (std::uint32_t i : top.order) g.instances.push_back(objects[i]);
     // Each sphere knows its instance, so the linear top level can loop over spheres directly.
     for (std::size_t i = 0; i < g.instances.size(); ++i)
         if (g.instances[i].info.x == glsl::INSTANCE_SPHERE) g.spheres[g.instances[i].info.y].info.y = unsigned(i);

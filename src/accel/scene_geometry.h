@@ -6,7 +6,6 @@
 #include "scene/scene.h"
 
 #include "shaders/include/geometry_types.glsl"
-#include "shaders/include/object_box.glsl"
 #include "shaders/include/scene_types.glsl"
 
 #include <vector>
@@ -25,7 +24,6 @@ struct SceneGeometry {
     std::vector<glsl::GpuSphere> spheres;       // world space
     std::vector<glsl::GpuInstance> instances;   // in top-level leaf order
     std::vector<glsl::GpuBvhNode> topNodes;
-    std::vector<glsl::GpuObjectBox> objectBoxes;   // per instance, same order: render.accel boxes and none
 
     // Figures for benchmarks and reports.
     double meshBuildSeconds = 0.0;

@@ -56,7 +56,6 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &lightAliasBuffer_);
     glCreateBuffers(1, &triangleLightIndexBuffer_);
     glCreateBuffers(1, &analyticLightBuffer_);
-    glCreateBuffers(1, &objectBoxBuffer_);
 }
 
 GpuScene::~GpuScene() {
@@ -72,7 +71,6 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &triangleLightBuffer_);
     glDeleteBuffers(1, &lightAliasBuffer_);
     glDeleteBuffers(1, &triangleLightIndexBuffer_);
-    glDeleteBuffers(1, &objectBoxBuffer_);
 }
 
 void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
@@ -170,7 +168,6 @@ void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     glNamedBufferData(analyticLightBuffer_, sizeof block, &block, GL_STATIC_DRAW);
     uploadBuffer(geometryBuffers_[0], relativeTop_.topNodes);
     uploadBuffer(geometryBuffers_[2], relativeTop_.instances);
-    uploadBuffer(objectBoxBuffer_, relativeTop_.objectBoxes);
 }
 
 // The sky map as an RGBA32F texture, rows top first as in the file (v = 0 is straight up); a
@@ -209,7 +206,6 @@ void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_LIGHT_ALIAS, lightAliasBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHT_INDEX, triangleLightIndexBuffer_);
     glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_ANALYTIC_LIGHTS_UBO, analyticLightBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_OBJECT_BOXES, objectBoxBuffer_);
 }
 
 } // namespace raylab

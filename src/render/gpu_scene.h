@@ -73,7 +73,6 @@ private:
     unsigned triangleLightIndexBuffer_ = 0;   // per triangle 1 + its light index, 0 none
     unsigned analyticLightBuffer_ = 0;        // uniform block of point, spot and distant lights
     int analyticLightCount_ = 0;
-    unsigned objectBoxBuffer_ = 0;            // the flat object list of render.accel boxes and none
     unsigned textureBuffers_[2] = {};    // texels, texture info
 };
 
