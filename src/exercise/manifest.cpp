@@ -1,9 +1,9 @@
 #include "exercise/manifest.h"
 
 #include "exercise/checks.h"
+#include "io/resource_directory.h"
 #include "render/tracer_defines.h"
 
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -31,14 +31,8 @@ bool isSlot(const std::string& name) {
 } // namespace
 
 fs::path exerciseDirectory() {
-    if (const char* env = std::getenv("RAYLAB_EXERCISE_DIR"); env && *env) return env;
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        const fs::path installed = exe.parent_path().parent_path() / "share" / "raylab" / "exercises";
-        if (fs::exists(installed / "manifest.tsv")) return installed;
-    }
-    return fs::path(RAYLAB_SOURCE_SHADER_DIR).parent_path() / "exercises";
+    return resourceDirectory("RAYLAB_EXERCISE_DIR", "exercises", "manifest.tsv",
+                             fs::path(RAYLAB_SOURCE_SHADER_DIR).parent_path() / "exercises");
 }
 
 std::vector<Exercise> loadManifest(const fs::path& file) {

@@ -1,6 +1,7 @@
 #include "gl/shader_source.h"
 
-#include <cstdlib>
+#include "io/resource_directory.h"
+
 #include <fstream>
 #include <regex>
 #include <set>
@@ -143,15 +144,6 @@ std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& fi
     return out.str();
 }
 
-fs::path shaderDirectory() {
-    if (const char* env = std::getenv("RAYLAB_SHADER_DIR"); env && *env) return env;
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        const fs::path installed = exe.parent_path().parent_path() / "share" / "raylab" / "shaders";
-        if (fs::exists(installed / "entry")) return installed;
-    }
-    return RAYLAB_SOURCE_SHADER_DIR;
-}
+fs::path shaderDirectory() { return resourceDirectory("RAYLAB_SHADER_DIR", "shaders", "entry", RAYLAB_SOURCE_SHADER_DIR); }
 
 } // namespace raylab

@@ -1,6 +1,0 @@
-float ggxD(vec3 h, float alpha) {
-    if (h.z <= 0.0) return 0.0;
-    float a2 = alpha * alpha;
-    float k = h.z * h.z * (a2 - 1.0) + 1.0;
-    return a2 / (k * k);
-}

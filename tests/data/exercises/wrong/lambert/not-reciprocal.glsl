@@ -1,1 +1,0 @@
-vec3 lambertBrdf(vec3 albedo, vec3 wo, vec3 wi) { return albedo / PI * (0.5 + wo.z); }

@@ -1,3 +1,0 @@
-vec3 runningMean(vec3 mean, uint count, vec3 sum, uint newCount) {
-    return mean + sum / float(count + newCount);
-}

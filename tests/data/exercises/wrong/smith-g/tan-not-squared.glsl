@@ -1,5 +1,0 @@
-float ggxG1(vec3 w, float alpha) {
-    if (w.z <= 0.0) return 0.0;
-    float tanT = sqrt(1.0 - w.z * w.z) / w.z;
-    return 2.0 / (1.0 + sqrt(1.0 + alpha * alpha * tanT));
-}
