@@ -4,6 +4,7 @@
 #include "io/resource_directory.h"
 #include "render/tracer_defines.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -21,17 +22,17 @@ std::vector<std::string> split(const std::string& s, char sep) {
     return parts;
 }
 
+// The slots are the tracer's defines that this file sets (render/tracer_defines.h).
 bool isSlot(const std::string& name) {
-    if (name.rfind("RAYLAB_EXERCISE_", 0) != 0) return false;
     for (const TracerDefine& d : kTracerDefines)
-        if (d.name == name) return true;
+        if (d.name == name && d.setBy == "exercise/manifest.cpp") return true;
     return false;
 }
 
 } // namespace
 
 fs::path exerciseDirectory() {
-    return resourceDirectory("RAYLAB_EXERCISE_DIR", "exercises", "manifest.tsv",
+    return resourceDirectory(std::getenv("RAYLAB_EXERCISE_DIR"), "exercises", "manifest.tsv",
                              fs::path(RAYLAB_SOURCE_SHADER_DIR).parent_path() / "exercises");
 }
 

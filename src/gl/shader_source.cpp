@@ -2,6 +2,7 @@
 
 #include "io/resource_directory.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -144,6 +145,8 @@ std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& fi
     return out.str();
 }
 
-fs::path shaderDirectory() { return resourceDirectory("RAYLAB_SHADER_DIR", "shaders", "entry", RAYLAB_SOURCE_SHADER_DIR); }
+fs::path shaderDirectory() {
+    return resourceDirectory(std::getenv("RAYLAB_SHADER_DIR"), "shaders", "entry", RAYLAB_SOURCE_SHADER_DIR);
+}
 
 } // namespace raylab

@@ -1,12 +1,10 @@
 #include "io/resource_directory.h"
 
-#include <cstdlib>
-
 namespace raylab {
 
-std::filesystem::path resourceDirectory(const char* envVar, const char* name, const char* marker,
+std::filesystem::path resourceDirectory(const char* override, const char* name, const char* marker,
                                         const std::filesystem::path& sourceDir) {
-    if (const char* env = std::getenv(envVar); env && *env) return env;
+    if (override && *override) return override;
     std::error_code ec;
     const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
     if (!ec) {

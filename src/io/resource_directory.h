@@ -4,8 +4,9 @@
 
 namespace raylab {
 
-// $envVar when set, else <exe>/../share/raylab/<name> when it holds `marker`, else `sourceDir`.
-std::filesystem::path resourceDirectory(const char* envVar, const char* name, const char* marker,
+// `override` (an environment variable's value) when set and not empty, else
+// <exe>/../share/raylab/<name> when it holds `marker`, else `sourceDir`.
+std::filesystem::path resourceDirectory(const char* override, const char* name, const char* marker,
                                         const std::filesystem::path& sourceDir);
 
 } // namespace raylab
