@@ -1,6 +1,7 @@
 #include "app_cli.h"
 
 #include "app/ui_state.h"
+#include "exercise/manifest.h"
 #include "gl/shader_source.h"
 #include "lesson/lesson.h"
 #include "script/script.h"
@@ -45,6 +46,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, AppOptions& o) {
     app.add_flag("--continuous", o.continuous,
                  "Redraw the UI every frame even when idle (by default, with no input the UI redraws when a "
                  "pass completes or every 0.25 s, and tracing gets the time in between)");
+    app.add_option("--exercise", o.exercise, "Run the tracer with a pupil's function for this exercise (raylab-exercise list)");
+    app.add_option("--exercise-dir", o.exerciseDir, "Folder of the pupil's exercise files (default: the shipped stubs)");
     app.add_option("--lesson", o.lessonPath, "Open a lesson (lessons/NN-topic.md) in the Teach window; its scene unless SCENE is given");
     app.add_option("--ui-scale", o.uiScale, "UI scale for projectors (default: as last time, from the layout file)")
         ->check(CLI::Range(double(kMinUiScale), double(kMaxUiScale)));
@@ -52,6 +55,20 @@ std::optional<int> parseCommandLine(int argc, char** argv, AppOptions& o) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
+    }
+    if (!o.exercise.empty()) {
+        try {   // fail before a window opens
+            const auto exercises = loadManifest();
+            const Exercise* e = findExercise(exercises, o.exercise);
+            if (!e) throw std::runtime_error("--exercise: no exercise \"" + o.exercise + "\" (raylab-exercise list)");
+            const std::filesystem::path file =
+                (o.exerciseDir.empty() ? exerciseDirectory() : std::filesystem::path(o.exerciseDir)) / e->file;
+            if (!std::filesystem::is_regular_file(file))
+                throw std::runtime_error(file.string() + ": error: no such pupil file (--exercise-dir)");
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "raylab: %s\n", e.what());
+            return 1;
+        }
     }
     if (!o.lessonPath.empty()) {
         try {

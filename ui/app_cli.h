@@ -23,6 +23,8 @@ struct AppOptions {
     bool vsync = false;
     bool continuous = false;
     std::string lessonPath;
+    std::string exercise;              // --exercise: a code-track exercise whose pupil file the tracer runs
+    std::string exerciseDir;           // --exercise-dir: where the pupil's files are (default: the stubs')
     float uiScale = 0.0f;              // 0: as the layout file says
     std::optional<ScriptRunner> script;
 };

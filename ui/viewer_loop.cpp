@@ -31,6 +31,18 @@ ViewerLoop::ViewerLoop(GLFWwindow* window, WindowEvents& events, AppOptions& opt
     // Scripted runs take screenshots: no tooltip where the (unmoved) pointer happens to rest.
     if (options_.script) ui_.pixelTooltip = false;
     openFirstScene();
+    openExercise();
+}
+
+void ViewerLoop::openExercise() {
+    if (options_.exercise.empty()) return;
+    ui_.exercise.load(exerciseDirectory(), options_.exerciseDir);
+    const auto& all = ui_.exercise.exercises();
+    for (int i = 0; i < int(all.size()); ++i)
+        if (all[std::size_t(i)].name == options_.exercise) ui_.exercise.select(viewer_, i);
+    ui_.showTeach = true;
+    ui_.teachTab = 3;
+    log_.info("exercise " + options_.exercise + ": " + ui_.exercise.pupilFile().string());
 }
 
 void ViewerLoop::openFirstScene() {

@@ -25,6 +25,7 @@ public:
 
 private:
     void openFirstScene();
+    void openExercise();   // --exercise: the tracer with the pupil's function, the Exercise tab open
     bool runScripts(int frame);      // false once the automation script has ended
     double waitWhileIdle(int frame); // the seconds spent waiting for input or a new image
     double drawFrame();              // the UI draw's milliseconds

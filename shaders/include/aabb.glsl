@@ -22,6 +22,9 @@ RL_FN vec3 safeInverseDir(vec3 d) { return vec3(safeInverse(d.x), safeInverse(d.
 // that slab. The planes are moved out by 1e-15 world units so such a difference is never an exact
 // 0 (0 × huge would give a slab of one point); with direction components of ordinary size this
 // changes t by ~1e-15 and only ever widens the box.
+#ifdef RAYLAB_EXERCISE_SLAB_TEST
+#include RAYLAB_EXERCISE_SLAB_TEST   // a pupil's intersectBox (exercises/README.md)
+#else
 RL_FN float intersectBox(vec3 origin, vec3 invDir, vec3 boxMin, vec3 boxMax, float tMax) {
     const float widen = 1e-15f;
     vec3 t0 = ((boxMin - origin) - vec3(widen)) * invDir;
@@ -34,6 +37,7 @@ RL_FN float intersectBox(vec3 origin, vec3 invDir, vec3 boxMin, vec3 boxMax, flo
     float leave = min(min(tFar.x, tFar.y), min(tFar.z, tMax));
     return enter <= leave ? enter : -1.0f;
 }
+#endif
 
 RL_NAMESPACE_END
 #endif

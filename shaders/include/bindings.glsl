@@ -43,7 +43,8 @@
 #define BINDING_DISPLAY_PARAMS_UBO 2   // the display pass's parameters
 #define BINDING_ANALYTIC_LIGHTS_UBO 3  // point, spot and distant lights (analytic_lights.glsl)
 
-// Programs of their own: the self-test's sampler (entry/bsdf_samples.comp) and test shaders.
+// Programs of their own: the self-test's sampler (entry/bsdf_samples.comp), test shaders and the
+// exercise probe (entry/exercise_probe.comp).
 #define BINDING_BSDF_SAMPLES 7
 #define BINDING_TEST_INPUT 14
 #define BINDING_TEST_OUTPUT 15

@@ -17,6 +17,10 @@
 #include "dielectric.glsl"
 RL_NAMESPACE_BEGIN
 
+#ifdef RAYLAB_EXERCISE_LAMBERT
+#include RAYLAB_EXERCISE_LAMBERT   // a pupil's lambertBrdf (exercises/README.md)
+#endif
+
 struct BsdfParams {
     vec3 albedo;
     vec3 f0;
@@ -66,7 +70,11 @@ RL_FN float opaqueSpecularProbability(BsdfParams m, float cosO) {
 // f·cosθi of the opaque part, both directions above the surface (wo.z > 0, wi.z > 0).
 RL_FN vec3 opaqueEval(BsdfParams m, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
+#ifdef RAYLAB_EXERCISE_LAMBERT
+    vec3 result = (vec3(1.0f) - opaqueViewFresnel(m, wo.z)) * lambertBrdf(m.albedo, wo, wi) * wi.z;
+#else
     vec3 result = (vec3(1.0f) - opaqueViewFresnel(m, wo.z)) * m.albedo * (INV_PI * wi.z);
+#endif
     if (!ggxIsDelta(m.alpha) && maxComponent(m.f0) > 0.0f) {
         vec3 h = normalize(wo + wi);
         vec3 F = fresnelSchlick(m.f0, schlickF90(m.f0), dot(wo, h));
@@ -117,11 +125,13 @@ RL_FN BsdfSample opaqueSample(BsdfParams m, vec3 wo, vec2 u, float uLobe) {
         return BsdfSample(wi, opaqueEval(m, wo, wi) / pdf, pdf, LOBE_SPECULAR, false);
     }
     vec3 wi = diffuseSample(m, u);
+#ifndef RAYLAB_EXERCISE_LAMBERT   // a pupil's lambertBrdf goes through opaqueEval below
     if (p <= 0.0f && m.diffuseSampling == RAYLAB_DIFFUSE_COSINE) {
         // Diffuse only: f·cos/pdf = (1 − F) ρ exactly (the furnace tests rely on exactness).
         return BsdfSample(wi, (vec3(1.0f) - opaqueViewFresnel(m, wo.z)) * m.albedo,
                           pdfCosineHemisphere(wi.z), LOBE_DIFFUSE, false);
     }
+#endif
     float pdf = opaquePdf(m, wo, wi);
     if (!(pdf > 0.0f)) return bsdfNoSample();
     return BsdfSample(wi, opaqueEval(m, wo, wi) / pdf, pdf, LOBE_DIFFUSE, false);

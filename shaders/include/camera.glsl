@@ -35,6 +35,9 @@ RL_FN Ray cameraRay(CameraBasis cam, vec2 ndc) {
 // lensRadius around the eye across the view, sampled uniformly by the concentric map; every ray
 // through a pixel meets the pinhole ray of that pixel on the plane focusDistance ahead, which is
 // therefore sharp. lensRadius 0 gives the pinhole ray exactly (direction normalised the same way).
+#ifdef RAYLAB_EXERCISE_THIN_LENS
+#include RAYLAB_EXERCISE_THIN_LENS   // a pupil's cameraRayThinLens (exercises/README.md)
+#else
 RL_FN Ray cameraRayThinLens(CameraBasis cam, vec2 ndc, vec2 lensSample, float lensRadius, float focusDistance) {
     vec3 d = cam.forward + (ndc.x * cam.tanHalfFovY * cam.aspect) * cam.right +
              (ndc.y * cam.tanHalfFovY) * cam.up;   // its forward component is 1
@@ -43,6 +46,7 @@ RL_FN Ray cameraRayThinLens(CameraBasis cam, vec2 ndc, vec2 lensSample, float le
     vec3 o = cam.origin + lens.x * cam.right + lens.y * cam.up;
     return Ray(o, normalize(focus - o));
 }
+#endif
 
 RL_NAMESPACE_END
 #endif

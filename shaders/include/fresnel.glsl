@@ -6,11 +6,22 @@
 RL_NAMESPACE_BEGIN
 
 // Schlick 1994 with a grazing value f90: F = f0 + (f90 − f0)(1 − cosθ)⁵.
+#ifdef RAYLAB_EXERCISE_SCHLICK
+#include RAYLAB_EXERCISE_SCHLICK   // a pupil's schlickFresnel(f0, f90, wo, wi) (exercises/README.md)
+
+// The pair of directions mirrored about the normal whose halfway vector is +z at angle θ.
+RL_FN vec3 fresnelSchlick(vec3 f0, float f90, float cosTheta) {
+    float c = clamp(cosTheta, 0.0f, 1.0f);
+    float s = sqrt(1.0f - c * c);
+    return schlickFresnel(f0, f90, vec3(s, 0.0f, c), vec3(-s, 0.0f, c));
+}
+#else
 RL_FN vec3 fresnelSchlick(vec3 f0, float f90, float cosTheta) {
     float m = clamp(1.0f - cosTheta, 0.0f, 1.0f);
     float m2 = m * m;
     return f0 + (vec3(f90) - f0) * (m2 * m2 * m);
 }
+#endif
 
 // Grazing reflectance for a given f0: min(1, 50·max(f0)) (Filament, "Physically Based Rendering
 // in Filament", §4.8.3 / specular occlusion). f0 = 0 then means no specular reflection at all.

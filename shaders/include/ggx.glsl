@@ -18,6 +18,9 @@ RL_FN float ggxAlpha(float perceptualRoughness) {
 RL_FN bool ggxIsDelta(float alpha) { return alpha < GGX_DELTA_ALPHA; }
 
 // D(h) = 1 / (π α² cos⁴θ (1 + tan²θ/α²)²) (Walter et al. 2007, eq. 33); 0 where cos⁴θ underflows.
+#ifdef RAYLAB_EXERCISE_GGX_D
+#include RAYLAB_EXERCISE_GGX_D   // a pupil's ggxD (exercises/README.md)
+#else
 RL_FN float ggxD(vec3 h, float alpha) {
     float cos2 = h.z * h.z;
     float cos4 = cos2 * cos2;
@@ -26,7 +29,16 @@ RL_FN float ggxD(vec3 h, float alpha) {
     float e = (h.x * h.x + h.y * h.y) / (cos2 * a2);
     return 1.0f / (PI * a2 * cos4 * (1.0f + e) * (1.0f + e));
 }
+#endif
 
+#ifdef RAYLAB_EXERCISE_SMITH_G
+#include RAYLAB_EXERCISE_SMITH_G   // a pupil's ggxG1 (exercises/README.md)
+
+// Height-correlated G2 from the pupil's G1 through Λ = 1/G1 − 1 (Heitz 2014, eq. 99).
+RL_FN float ggxG2(vec3 wo, vec3 wi, float alpha) {
+    return 1.0f / (1.0f / ggxG1(wo, alpha) + 1.0f / ggxG1(wi, alpha) - 1.0f);
+}
+#else
 // Smith Λ for GGX: (√(1 + α² tan²θ) − 1)/2 (Heitz 2014, "Understanding the Masking-Shadowing
 // Function", eq. 72), written as x / (2(√(1 + x) + 1)) to avoid cancellation for small x.
 RL_FN float ggxLambda(vec3 w, float alpha) {
@@ -42,6 +54,7 @@ RL_FN float ggxG1(vec3 w, float alpha) { return 1.0f / (1.0f + ggxLambda(w, alph
 RL_FN float ggxG2(vec3 wo, vec3 wi, float alpha) {
     return 1.0f / (1.0f + ggxLambda(wo, alpha) + ggxLambda(wi, alpha));
 }
+#endif
 
 // Visible-normal sampling by spherical caps (Dupuy & Benyoub 2023, "Sampling Visible GGX Normals
 // with Spherical Caps", listing 3; same distribution as Heitz 2018, JCGT 7(4)). wo.z > 0.

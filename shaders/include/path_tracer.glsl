@@ -11,6 +11,9 @@
 // RAYLAB_DEBUG_MOMENTS. Before the integrator, whose radiance hook it may set.
 #include "debug_views.glsl"
 #include "integrator.glsl"
+#ifdef RAYLAB_EXERCISE_RUNNING_MEAN
+#include RAYLAB_EXERCISE_RUNNING_MEAN   // a pupil's runningMean (exercises/README.md)
+#endif
 
 void tracePixelPass(ivec2 pixel) {
     CameraBasis cam = CameraBasis(params.camOrigin, params.camRight, params.camUp, params.camForward,
@@ -54,11 +57,16 @@ void tracePixelPass(ivec2 pixel) {
         sum += L;
     }
     // Running mean over all samples: mean_n = mean_m + (sum − k·mean_m) / n, with n = m + k.
+#ifdef RAYLAB_EXERCISE_RUNNING_MEAN
+    vec3 old = params.sampleStart > 0u ? imageLoad(uAccum, pixel).rgb : vec3(0.0f);
+    vec3 mean = runningMean(old, params.sampleStart, sum, uint(params.rpp));
+#else
     vec3 mean = sum / float(params.rpp);
     if (params.sampleStart > 0u) {
         vec3 old = imageLoad(uAccum, pixel).rgb;
         mean = old + (sum - float(params.rpp) * old) / float(params.sampleStart + uint(params.rpp));
     }
+#endif
     imageStore(uAccum, pixel, vec4(mean, 1.0f));
     // llvmpipe (gallivm) ends every loop of an invocation once 65535 loop iterations have run in
     // all, silently. A loop of rpp + 1 iterations that stops early shows the budget ran out, so

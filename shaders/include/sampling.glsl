@@ -26,6 +26,9 @@ RL_FN vec2 sampleDiskConcentric(vec2 u) {
 // On the disk's rim (u exactly 0, or cos² + sin² rounding to 1) z would be 0: pdf 0, a sample the
 // integrator must drop. z is kept at least 2^-18, above the rounding of a
 // frame change (~1e-7), so the direction stays on its side; the weight f·cos/pdf uses this z too.
+#ifdef RAYLAB_EXERCISE_COSINE_HEMISPHERE
+#include RAYLAB_EXERCISE_COSINE_HEMISPHERE   // a pupil's sampleCosineHemisphere and pdfCosineHemisphere
+#else
 RL_FN vec3 sampleCosineHemisphere(vec2 u) {
     vec2 d = sampleDiskConcentric(u);
     float z = sqrt(max(3.8146973e-6f * 3.8146973e-6f, 1.0f - d.x * d.x - d.y * d.y));
@@ -33,6 +36,7 @@ RL_FN vec3 sampleCosineHemisphere(vec2 u) {
 }
 
 RL_FN float pdfCosineHemisphere(float cosTheta) { return max(cosTheta, 0.0f) * INV_PI; }
+#endif
 
 // Uniform hemisphere around +z (pbrt-v4 SampleUniformHemisphere): z = 1 − u.x is never 0, so the
 // direction stays above the surface; pdf = 1/(2π) (render.diffuse_sampling uniform).

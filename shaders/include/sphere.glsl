@@ -7,6 +7,9 @@
 RL_NAMESPACE_BEGIN
 
 // Nearest t in (tMin, tMax) where the ray meets the sphere, or -1 for a miss.
+#ifdef RAYLAB_EXERCISE_RAY_SPHERE
+#include RAYLAB_EXERCISE_RAY_SPHERE   // a pupil's intersectSphere (exercises/README.md)
+#else
 RL_FN float intersectSphere(Ray ray, vec3 center, float radius, float tMin, float tMax) {
     vec3 f = ray.origin - center;
     float a = dot(ray.dir, ray.dir);
@@ -28,6 +31,7 @@ RL_FN float intersectSphere(Ray ray, vec3 center, float radius, float tMin, floa
     if (tFar > tMin && tFar < tMax) return tFar;
     return -1.0f;
 }
+#endif
 
 // The hit point re-projected onto the surface (the t-based point carries the error of t).
 RL_FN vec3 sphereSurfacePoint(vec3 p, vec3 center, float radius) {

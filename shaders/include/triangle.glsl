@@ -41,6 +41,18 @@ RL_FN TriangleRay triangleRay(Ray ray) {
     return TriangleRay(ray.origin, ivec3(kx, ky, kz), vec3(-d.x / d.z, -d.y / d.z, 1.0f / d.z));
 }
 
+#ifdef RAYLAB_EXERCISE_RAY_TRIANGLE
+#include RAYLAB_EXERCISE_RAY_TRIANGLE   // a pupil's intersectTriangle(Ray, ...) (exercises/README.md)
+
+// The traversal's sheared ray handed to the pupil's function as origin and direction again.
+RL_FN bool intersectTriangle(TriangleRay ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_OUT(TriangleHit) hit) {
+    vec3 d;
+    d[ray.axes.z] = 1.0f / ray.shear.z;
+    d[ray.axes.x] = -ray.shear.x * d[ray.axes.z];
+    d[ray.axes.y] = -ray.shear.y * d[ray.axes.z];
+    return intersectTriangle(Ray(ray.origin, d), p0, p1, p2, tMax, hit);
+}
+#else
 // Hit in (0, tMax) of the ray and triangle p0 p1 p2, either side; false for degenerate triangles.
 RL_FN bool intersectTriangle(TriangleRay ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_OUT(TriangleHit) hit) {
     // Degenerate in float (collinear or coincident vertices, e.g. a tiny triangle far from the
@@ -103,6 +115,7 @@ RL_FN bool intersectTriangle(TriangleRay ray, vec3 p0, vec3 p1, vec3 p2, float t
 RL_FN bool intersectTriangle(Ray ray, vec3 p0, vec3 p1, vec3 p2, float tMax, RL_OUT(TriangleHit) hit) {
     return intersectTriangle(triangleRay(ray), p0, p1, p2, tMax, hit);
 }
+#endif
 
 // The hit point from barycentrics (its error does not grow with t, unlike o + t·d).
 RL_FN vec3 triangleHitPoint(TriangleHit h, vec3 p0, vec3 p1, vec3 p2) {

@@ -1,5 +1,7 @@
 #include "gl/shader_source.h"
 
+#include "io/resource_directory.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -10,7 +12,10 @@ namespace raylab {
 namespace fs = std::filesystem;
 namespace {
 
+bool isQuotedPath(const std::string& v) { return v.size() >= 2 && v.front() == '"' && v.back() == '"'; }
+
 struct Assembler {
+    ShaderDefines hostDefines;
     std::vector<fs::path> includeDirs;
     std::vector<fs::path> files;
     std::set<fs::path> included;
@@ -22,6 +27,13 @@ struct Assembler {
             if (files[i] == p) return static_cast<int>(i);
         files.push_back(p);
         return static_cast<int>(files.size() - 1);
+    }
+
+    // The file of a define whose value is a quoted path (`#include NAME` includes it), if any.
+    const std::string* fileDefine(const std::string& name) const {
+        for (const auto& [n, v] : hostDefines)
+            if (n == name && isQuotedPath(v)) return &v;
+        return nullptr;
     }
 
     static std::string readFile(const fs::path& p) {
@@ -41,12 +53,19 @@ struct Assembler {
                           ": error: cannot find included file \"" + name + "\"");
     }
 
+    fs::path resolveFileDefine(const std::string& quoted, const fs::path& from, int line) const {
+        const fs::path p = quoted.substr(1, quoted.size() - 2);
+        if (fs::exists(p)) return fs::weakly_canonical(p);
+        throw ShaderError(from.string() + ":" + std::to_string(line) + ": error: cannot find included file " + quoted);
+    }
+
     // Emits one file. For the entry file, defines are placed after its #version line.
     void emit(const fs::path& file, const ShaderDefines* defines) {
         const int index = fileIndex(file);
         stack.push_back(file);
         std::istringstream in(readFile(file));
         static const std::regex includeRe(R"(^\s*#\s*include\s*"([^"]+)\"\s*(//.*)?$)");
+        static const std::regex macroIncludeRe(R"(^\s*#\s*include\s+([A-Za-z_][A-Za-z0-9_]*)\s*(//.*)?$)");
         static const std::regex versionRe(R"(^\s*#\s*version\b.*)");
         std::string line;
         int lineNo = 0;
@@ -58,13 +77,23 @@ struct Assembler {
             std::smatch m;
             if (!versionSeen && std::regex_match(line, versionRe)) {
                 out << line << "\n";
-                for (const auto& [name, value] : *defines) out << "#define " << name << " " << value << "\n";
+                // GLSL has no strings: a file define is only switched on; `#include NAME` takes its path.
+                for (const auto& [name, value] : *defines)
+                    out << "#define " << name << " " << (isQuotedPath(value) ? "1" : value) << "\n";
                 out << "#line " << lineNo + 1 << " " << index << "\n";
                 versionSeen = true;
                 continue;
             }
-            if (std::regex_match(line, m, includeRe)) {
-                const fs::path target = resolve(m[1].str(), file, lineNo);
+            const bool macroInclude = std::regex_match(line, m, macroIncludeRe);
+            if (macroInclude && fileDefine(m[1].str()) == nullptr) {
+                // An include of a define the host did not set sits in that define's #ifdef, which
+                // the GLSL preprocessor drops: nothing to include.
+                out << "\n";
+                continue;
+            }
+            if (macroInclude || std::regex_match(line, m, includeRe)) {
+                const std::string* quoted = macroInclude ? fileDefine(m[1].str()) : nullptr;
+                const fs::path target = quoted ? resolveFileDefine(*quoted, file, lineNo) : resolve(m[1].str(), file, lineNo);
                 for (const auto& open : stack)
                     if (open == target)
                         throw ShaderError(file.string() + ":" + std::to_string(lineNo) +
@@ -86,6 +115,7 @@ struct Assembler {
 ShaderSource assembleShader(const fs::path& entryFile, const ShaderDefines& defines,
                             const std::vector<fs::path>& includeDirs) {
     Assembler a;
+    a.hostDefines = defines;
     a.includeDirs = includeDirs;
     const fs::path entry = fs::weakly_canonical(entryFile);
     a.included.insert(entry);
@@ -116,14 +146,7 @@ std::string mapShaderLog(const std::string& log, const std::vector<fs::path>& fi
 }
 
 fs::path shaderDirectory() {
-    if (const char* env = std::getenv("RAYLAB_SHADER_DIR"); env && *env) return env;
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        const fs::path installed = exe.parent_path().parent_path() / "share" / "raylab" / "shaders";
-        if (fs::exists(installed / "entry")) return installed;
-    }
-    return RAYLAB_SOURCE_SHADER_DIR;
+    return resourceDirectory(std::getenv("RAYLAB_SHADER_DIR"), "shaders", "entry", RAYLAB_SOURCE_SHADER_DIR);
 }
 
 } // namespace raylab

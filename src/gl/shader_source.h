@@ -1,7 +1,9 @@
 #pragma once
 // Assembles a GLSL entry point with its includes into one source string. #include "file" is
 // resolved relative to the including file, then in the include directories; each file is
-// included once. Host defines go right after #version. Numeric #line directives (GLSL rejects
+// included once. Host defines go right after #version. A define whose value is a quoted path is
+// a file define: GLSL sees it as 1, and `#include NAME` includes that file (an include of a define
+// the host did not set includes nothing, as it stands in that define's #ifdef). Numeric #line directives (GLSL rejects
 // file names there) point back to a table of files, so compiler messages can name file:line.
 #include <filesystem>
 #include <stdexcept>

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 namespace raylab {
@@ -205,7 +206,16 @@ std::vector<Fence> scanFences(const std::vector<std::string>& lines, const std::
     return fences;
 }
 
-enum class Section { BeforeTitle, Introduction, Goals, Step, Questions, Exercise, GoingFurther, TeacherNotes, Sources };
+enum class Section { BeforeTitle, Introduction, Goals, Step, Questions, Exercise, WriteItYourself, GoingFurther, TeacherNotes, Sources };
+
+// The code-track exercises a "Write it yourself" section opens: every `--exercise NAME` in it.
+std::vector<std::string> codeExercisesIn(const std::string& text) {
+    static const std::regex option(R"(--exercise\s+([a-z0-9-]+))");
+    std::vector<std::string> names;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), option); it != std::sregex_iterator(); ++it)
+        if (std::find(names.begin(), names.end(), (*it)[1].str()) == names.end()) names.push_back((*it)[1].str());
+    return names;
+}
 
 // Step numbers are checked to count 1, 2, 3...; one read as more than this is out of order anyway,
 // so reading stops growing it there (no overflow).
@@ -320,6 +330,10 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
         case Section::Introduction: lesson.introduction = slice(titleLine, last); break;
         case Section::Step: lesson.steps.back().text = slice(sectionLine, last); break;
         case Section::Exercise: lesson.exercise = slice(sectionLine, last); break;
+        case Section::WriteItYourself:
+            lesson.writeItYourself = slice(sectionLine, last);
+            lesson.codeExercises = codeExercisesIn(lesson.writeItYourself);
+            break;
         case Section::GoingFurther: lesson.goingFurther = slice(sectionLine, last); break;
         case Section::TeacherNotes: lesson.teacherNotes = slice(sectionLine, last); break;
         case Section::Sources: lesson.sources = slice(sectionLine, last); break;
@@ -373,6 +387,8 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             } else if (key == "exercise") {
                 section = Section::Exercise;
                 exerciseLine = b.line;
+            } else if (key == "write it yourself") {
+                section = Section::WriteItYourself;
             } else if (key == "going further") {
                 section = Section::GoingFurther;
             } else if (key == "teacher's notes" || key == "teacher\u2019s notes" || key == "notes for the teacher") {
@@ -382,7 +398,7 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             } else {
                 throw fail(b.line, "unknown section '" + heading +
                                        "'; expected 'Learning goals', 'Step N: TITLE', 'Questions', 'Exercise', "
-                                       "'Going further', 'Teacher's notes' or 'Sources'");
+                                       "'Write it yourself', 'Going further', 'Teacher's notes' or 'Sources'");
             }
             break;
         }

@@ -47,6 +47,8 @@ struct Lesson {
     std::vector<LessonStep> steps;        // "## Step N: TITLE" sections, N = 1, 2, ...
     std::vector<std::string> questions;   // "## Questions" list items
     std::string exercise;                 // "## Exercise" Markdown
+    std::string writeItYourself;          // "## Write it yourself" Markdown (optional): the code track
+    std::vector<std::string> codeExercises;   // the exercises it opens: each `--exercise NAME` in it
     std::string goingFurther;             // "## Going further" Markdown (optional): notebooks, reading
     std::string teacherNotes;             // "## Teacher's notes" Markdown (optional)
     std::string sources;                  // "## Sources" Markdown (optional)

@@ -34,6 +34,18 @@ inline constexpr TracerDefine kTracerDefines[] = {
     {"RAYLAB_DEBUG_MOMENTS", "render/tracer_variants.cpp"},
     {"RAYLAB_COUNT_TRAVERSAL", "render/tracer_variants.cpp"},
     {"RAYLAB_INSPECT_PATHS", "inspect/path_inspector.cpp"},
+    // The code track's slots, each a file define: a pupil's function in place of the reference
+    // (exercises/manifest.tsv, exercise/manifest.cpp).
+    {"RAYLAB_EXERCISE_RAY_SPHERE", "exercise/manifest.cpp"},
+    {"RAYLAB_EXERCISE_RAY_TRIANGLE", "exercise/manifest.cpp"},
+    {"RAYLAB_EXERCISE_SLAB_TEST", "exercise/manifest.cpp"},
+    {"RAYLAB_EXERCISE_COSINE_HEMISPHERE", "exercise/manifest.cpp"},
+    {"RAYLAB_EXERCISE_LAMBERT", "exercise/manifest.cpp"},
+    {"RAYLAB_EXERCISE_GGX_D", "exercise/manifest.cpp"},
+    {"RAYLAB_EXERCISE_SMITH_G", "exercise/manifest.cpp"},
+    {"RAYLAB_EXERCISE_SCHLICK", "exercise/manifest.cpp"},
+    {"RAYLAB_EXERCISE_THIN_LENS", "exercise/manifest.cpp"},
+    {"RAYLAB_EXERCISE_RUNNING_MEAN", "exercise/manifest.cpp"},
     {"RAYLAB_INJECT_NONFINITE", "tests only (render/path_tracer_test.cpp)"},
 };
 

@@ -31,7 +31,9 @@ std::string_view variantSuffix(TracerVariant variant) {
 }
 
 std::unique_ptr<PathTracer> TracerVariants::compile(TracerVariant variant, const Scene* scene) const {
-    auto tracer = std::make_unique<PathTracer>(variantOptions(variant, entry_));
+    TracerOptions o = variantOptions(variant, entry_);
+    o.extraDefines.insert(o.extraDefines.end(), extraDefines_.begin(), extraDefines_.end());
+    auto tracer = std::make_unique<PathTracer>(o);
     // The tracer compiles its program for a scene's features.
     if (scene) tracer->setScene(*scene);
     return tracer;

@@ -32,8 +32,11 @@ public:
     PathTracer& keep(TracerVariant variant, std::unique_ptr<PathTracer> tracer);
     // Drops every cached tracer (after the shaders changed on disk).
     void clear();
+    // Defines added to every variant from now on (a code-track exercise's slot); clear() to apply.
+    void setExtraDefines(ShaderDefines defines) { extraDefines_ = std::move(defines); }
 
 private:
+    ShaderDefines extraDefines_;
     TracerEntry entry_;
     std::unique_ptr<PathTracer> tracers_[4];
 };

@@ -38,6 +38,27 @@ TEST(ShaderSource, IncludesOnceDefinesAfterVersionAndNumericLines) {
     fs::remove_all(dir);
 }
 
+TEST(ShaderSource, AFileDefineIsOneToGlslAndIncludesItsFileAtItsOwnLines) {
+    const fs::path dir = scratchDir("filedefine");
+    write(dir / "pupil.glsl", "float f() { return 2.0; }\n");
+    write(dir / "main.comp", "#version 450 core\n#ifdef SLOT\n#include SLOT\n#else\nfloat f() { return 1.0; }\n#endif\n"
+                             "#ifdef OTHER\n#include OTHER\n#endif\nvoid main() {}\n");
+    const ShaderSource s = assembleShader(dir / "main.comp", {{"SLOT", "\"" + (dir / "pupil.glsl").string() + "\""}});
+    EXPECT_NE(s.text.find("#define SLOT 1\n"), std::string::npos) << s.text;
+    EXPECT_NE(s.text.find("#line 1 1\nfloat f() { return 2.0; }"), std::string::npos) << s.text;
+    ASSERT_EQ(s.files.size(), 2u);
+    EXPECT_EQ(s.files[1], fs::weakly_canonical(dir / "pupil.glsl"));
+    // An include of a define the host did not set includes nothing (its #ifdef drops the line).
+    EXPECT_EQ(assembleShader(dir / "main.comp").files.size(), 1u);
+    try {
+        assembleShader(dir / "main.comp", {{"SLOT", "\"" + (dir / "missing.glsl").string() + "\""}});
+        ADD_FAILURE() << "a missing pupil file was accepted";
+    } catch (const ShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("main.comp:3: error: cannot find included file"), std::string::npos) << e.what();
+    }
+    fs::remove_all(dir);
+}
+
 TEST(ShaderSource, MissingIncludeAndCycleAreLocated) {
     const fs::path dir = scratchDir("missing");
     write(dir / "main.comp", "#version 450 core\n\n#include \"nope.glsl\"\n");

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 using namespace raylab;
 namespace fs = std::filesystem;
@@ -110,6 +111,18 @@ TEST(Lesson, ParsesEveryPart) {
     EXPECT_EQ(l.resolve("scenes/furnace.json"), (kRoot / "scenes/furnace.json").lexically_normal());
 }
 
+TEST(Lesson, WriteItYourselfNamesTheExercisesItOpens) {
+    const Lesson l = parseLesson(replaced(kGood, "## Going further",
+                                          "## Write it yourself\n\nRun `raylab --exercise ray-sphere`, then\n"
+                                          "`raylab --exercise slab-test --exercise-dir mine` and `--exercise ray-sphere` again.\n\n"
+                                          "## Going further"),
+                                 "lessons/t.md", kRoot);
+    EXPECT_NE(l.writeItYourself.find("--exercise slab-test"), std::string::npos) << l.writeItYourself;
+    EXPECT_EQ(l.codeExercises, (std::vector<std::string>{"ray-sphere", "slab-test"}));
+    EXPECT_EQ(l.goingFurther, "Open `notebooks/x.ipynb`.");
+    EXPECT_TRUE(parseLesson(kGood, "lessons/t.md", kRoot).codeExercises.empty());
+}
+
 TEST(Lesson, BadCommandNamesFileAndLine) {
     std::string views;
     for (std::string_view v : scriptDebugViews()) views += (views.empty() ? "" : ", ") + std::string(v);
@@ -144,7 +157,7 @@ TEST(Lesson, StructureMistakesNameFileAndLine) {
               "lessons/t.md:22: error: step numbered above 9999, expected 2");
     EXPECT_EQ(errorOf(replaced(kGood, "## Questions", "## Quiz")),
               "lessons/t.md:29: error: unknown section 'Quiz'; expected 'Learning goals', 'Step N: TITLE', "
-              "'Questions', 'Exercise', 'Going further', 'Teacher's notes' or 'Sources'");
+              "'Questions', 'Exercise', 'Write it yourself', 'Going further', 'Teacher's notes' or 'Sources'");
     EXPECT_EQ(errorOf(replaced(kGood, "```raylab\nset", "```text\nset")),
               "lessons/t.md:22: error: step 2 has no ```raylab block");
     EXPECT_EQ(errorOf(replaced(kGood, "Some text.", "```raylab\nreset\n```")),

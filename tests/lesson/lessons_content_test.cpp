@@ -2,6 +2,7 @@
 // parse, and every `set KEY VALUE` of a step applies to the scene the step has open through the
 // loader's --set mechanism (loadScene(scene, {"KEY=VALUE", ...}), the earlier sets of the step
 // included, as the viewer would apply them). Scenes a step opens must load too.
+#include "exercise/manifest.h"
 #include "lesson/lesson.h"
 #include "render/shader_variant.h"
 #include "scene/scene_loader.h"
@@ -191,6 +192,19 @@ TEST(Lessons, AllTwelveLoadInOrder) {
         const std::string prefix = (i + 1 < 10 ? "0" : "") + std::to_string(i + 1) + "-";
         EXPECT_EQ(lessons[i].file.filename().string().rfind(prefix, 0), 0u) << lessons[i].file;
     }
+}
+
+// The code track (exercises/manifest.tsv): every exercise a lesson's "Write it yourself" opens
+// exists, and every exercise is opened by some lesson.
+TEST(Lessons, WriteItYourselfOpensEveryExercise) {
+    const auto exercises = loadManifest(kLessons.parent_path() / "exercises/manifest.tsv");
+    std::set<std::string> opened;
+    for (const Lesson& lesson : loadLessons(kLessons))
+        for (const std::string& name : lesson.codeExercises) {
+            EXPECT_NE(findExercise(exercises, name), nullptr) << lesson.file << " opens " << name << ", which is no exercise";
+            opened.insert(name);
+        }
+    for (const Exercise& e : exercises) EXPECT_TRUE(opened.count(e.name)) << e.name << " is in no lesson's Write it yourself";
 }
 
 // The notebooks (notebooks/*.ipynb) are where a lesson's "Going further" sends a student: every

@@ -1,5 +1,5 @@
 #pragma once
-// Runs raylab-render as a user would, from the repository root, for the tests of its command line:
+// Runs raylab-render (and the other programs) as a user would, from the repository root, for the tests of its command line:
 // its exit status and what it printed.
 #include <sys/wait.h>
 #include <unistd.h>
@@ -32,12 +32,15 @@ inline std::filesystem::path scratchDir(const std::string& name) {
     return d;
 }
 
-// raylab-render with `args` (shell-quoted by the caller); stdout and stderr go through files in `dir`.
-inline CliRun runRender(const std::string& args, const std::filesystem::path& dir) {
-    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_RENDER_EXE + "' " + args +
-                            " > '" + (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
+// `exe` with `args` (shell-quoted by the caller); stdout and stderr go through files in `dir`.
+inline CliRun runProgram(const std::string& exe, const std::string& args, const std::filesystem::path& dir) {
+    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + exe + "' " + args + " > '" +
+                            (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
     const int raw = std::system(cmd.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out.txt"), slurp(dir / "err.txt")};
 }
+
+// raylab-render with `args`.
+inline CliRun runRender(const std::string& args, const std::filesystem::path& dir) { return runProgram(RAYLAB_RENDER_EXE, args, dir); }
 
 } // namespace raylab::test

@@ -1,6 +1,7 @@
 #pragma once
 // What the views share besides the Viewer model: text boxes, requests that the window loop carries
 // out (a screenshot needs the finished frame), and where the viewport drew the image last frame.
+#include "app/exercise_session.h"
 #include "app/lesson_session.h"
 #include "app/split_screen.h"
 #include "inspect/sample_points.h"
@@ -35,10 +36,11 @@ struct UiState {
 
     // Teaching and classroom mode (the Teach window: Lesson, Classroom and Self-test tabs).
     bool showTeach = false;        // the Teach window is open (F1, --lesson, the script's lesson)
-    int teachTab = -1;             // a tab to bring to the front next frame (0 lesson, 1 classroom, 2 self-test)
+    int teachTab = -1;             // a tab to bring to the front next frame (0 lesson, 1 classroom, 2 self-test, 3 exercise)
     std::string pendingKey;        // a key the script presses next frame ("page-down", "page-up")
     bool teachFocused = false;     // the Teach window had the keyboard last frame (arrows and Space step)
     LessonSession lesson;          // the Lesson panel's model; its step scripts run in the window loop
+    ExerciseSession exercise;      // the Exercise tab's model: the code track's pupil function in the tracer
     bool stepScriptRunning = false;   // a lesson step's script is running (an automation script waits)
     SplitScreen split;             // A/B split screen
     bool draggingDivider = false;  // the mouse is dragging the split screen's divider

@@ -96,6 +96,11 @@ bool Viewer::activateVariant(TracerVariant v) {
     return true;
 }
 
+bool Viewer::setTracerDefines(ShaderDefines defines) {
+    variants_.setExtraDefines(std::move(defines));
+    return reloadShaders();
+}
+
 bool Viewer::reloadShaders() {
     try {
         auto tracer = compileVariant(variant_);

@@ -65,6 +65,9 @@ public:
     // The traced image as EXR (linear) or PNG (exposure and tone map applied).
     bool exportRender(const std::filesystem::path& file);
     bool reloadShaders() override;
+    // Compiles the tracer with these defines added (a code-track exercise's file define; empty:
+    // the reference); on a compile error the previous tracer keeps running. False on an error.
+    bool setTracerDefines(ShaderDefines defines);
     Scene tracedScene() const;   // the scene with the resolution scale applied (what the tracer traces)
     bool hasScene() const { return document_.loaded() && tracer_ != nullptr; }
 

@@ -138,6 +138,25 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     ImGui::PushID("exercise");
     drawMarkdown(l.exercise);
     ImGui::PopID();
+    if (!l.writeItYourself.empty()) {
+        heading("Write it yourself");
+        ImGui::PushID("code");
+        drawMarkdown(l.writeItYourself);
+        // Each exercise the section names opens in the Exercise tab, the tracer running the pupil's file.
+        for (const std::string& name : l.codeExercises) {
+            if (!ImGui::Button(("Open exercise " + name).c_str())) continue;
+            try {
+                if (ui.exercise.exercises().empty()) ui.exercise.load(exerciseDirectory());
+                const auto& all = ui.exercise.exercises();
+                for (int i = 0; i < int(all.size()); ++i)
+                    if (all[std::size_t(i)].name == name) ui.exercise.select(viewer, i);
+                ui.teachTab = 3;
+            } catch (const std::exception& e) {
+                viewer.log().error(e.what());
+            }
+        }
+        ImGui::PopID();
+    }
     if (!l.goingFurther.empty()) {
         heading("Going further");
         ImGui::PushID("further");

@@ -22,11 +22,12 @@ void drawBrdfExplorerPanel(Viewer& viewer, UiState& ui);  // brdf_explorer_panel
 void drawPathOverlay(Viewer& viewer, const ImageRect& image);
 
 // Teaching: the Teach window (teach_panel.cpp) with the Lesson (lesson_panel.cpp),
-// Classroom (classroom_panel.cpp) and Self-test (self_test_panel.cpp) tabs.
+// Classroom (classroom_panel.cpp), Self-test (self_test_panel.cpp) and Exercise tabs.
 void drawTeachWindow(Viewer& viewer, UiState& ui, float windowHeight);
 void drawLessonPanel(Viewer& viewer, UiState& ui);
 void drawClassroomPanel(Viewer& viewer, UiState& ui);
 void drawSelfTestPanel(Viewer& viewer, UiState& ui);
+void drawExercisePanel(Viewer& viewer, UiState& ui);   // exercise_panel.cpp: the code track
 // The Teach window's presenter keys (lesson_panel.cpp): Right/Left/Space while it has the
 // keyboard. Call between NewFrame and drawing.
 void presenterKeys(UiState& ui);

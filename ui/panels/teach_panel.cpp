@@ -1,4 +1,5 @@
-// The Teach window (F1): tabs for the lesson, classroom mode and the self-test. Hidden until asked
+// The Teach window (F1): tabs for the lesson, classroom mode, the self-test and the code track's
+// exercise. Hidden until asked
 // for (F1, --lesson, the Render panel's button), so the default layout stays as it was.
 #include "panels/panels.h"
 
@@ -18,13 +19,14 @@ void drawTeachWindow(Viewer& viewer, UiState& ui, float windowHeight) {
     }
     ui.teachFocused = ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows);
     if (ImGui::BeginTabBar("##teach")) {
-        const char* const names[] = {"Lesson", "Classroom", "Self-test"};
-        for (int i = 0; i < 3; ++i) {
+        const char* const names[] = {"Lesson", "Classroom", "Self-test", "Exercise"};
+        for (int i = 0; i < 4; ++i) {
             const ImGuiTabItemFlags flags = ui.teachTab == i ? ImGuiTabItemFlags_SetSelected : 0;
             if (ImGui::BeginTabItem(names[i], nullptr, flags)) {
                 if (i == 0) drawLessonPanel(viewer, ui);
                 else if (i == 1) drawClassroomPanel(viewer, ui);
-                else drawSelfTestPanel(viewer, ui);
+                else if (i == 2) drawSelfTestPanel(viewer, ui);
+                else drawExercisePanel(viewer, ui);
                 ImGui::EndTabItem();
             }
         }
