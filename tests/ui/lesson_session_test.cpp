@@ -142,7 +142,11 @@ TEST_F(LessonSessionTest, OpenPathsAreResolvedAgainstTheRepositoryAndBadLessonsK
     EXPECT_NE(error->find("no-such-lesson.md"), std::string::npos);
     EXPECT_EQ(ui.lesson.lesson().file.filename(), "03-ray-sphere.md");
     ui.lesson.scan(kLessons);
-    EXPECT_EQ(ui.lesson.entries().size(), 12u);
+    std::size_t files = 0;   // every lesson of the folder, README.md aside
+    for (const auto& e : fs::directory_iterator(kLessons))
+        files += e.path().extension() == ".md" && e.path().filename() != "README.md";
+    EXPECT_GE(files, 12u);
+    EXPECT_EQ(ui.lesson.entries().size(), files);
     EXPECT_EQ(ui.lesson.entries()[4].title.rfind("Lesson 5", 0), 0u);
 }
 
