@@ -7,6 +7,7 @@
 #include "render/shader_variant.h"
 #include "scene/scene_loader.h"
 #include "script/expectation.h"
+#include "shaders/include/tone_map.glsl"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -515,3 +516,57 @@ TEST(LessonClaims, SphereExerciseAndObjectCounts) {
     EXPECT_EQ(triangles, 8192u);
 }
 
+// Lessons 13–18: the answer keys' numbers, computed from the formulas the lessons give (the tone
+// curves from raylab's own shared header).
+TEST(LessonClaims, NewLessonsAnswerKeys) {
+    const double kPi = std::acos(-1.0);
+    const Lesson acc = lessonNamed("13-accumulation.md");
+    EXPECT_TRUE(contains(acc.teacherNotes, "1024/16 = " + std::to_string(1024 / 16) + " passes"));
+    EXPECT_EQ(float(1 << 24) + 1.0f, float(1 << 24));   // where a float32 sum of ones stops
+    EXPECT_TRUE(contains(acc.teacherNotes, "at 2^24 = 16 777 216"));
+    EXPECT_TRUE(contains(acc.teacherNotes, "64/65 ≈ " + fixed(64.0 / 65.0, 3)));
+    EXPECT_TRUE(contains(acc.steps[1].text, std::to_string(int(std::lround(64.0 * 3 * 640 * 360 * 4 / 1e6))) + " MB"));
+
+    const Lesson sky = lessonNamed("14-sky-environment-light.md");
+    const double texel = (2 * kPi / 512) * (kPi / 256);
+    EXPECT_TRUE(contains(sky.teacherNotes, fixed(texel * 1e4, 2) + " × 10⁻⁴ sr"));
+    EXPECT_TRUE(contains(sky.teacherNotes, std::to_string(int(std::lround(1 / std::sin(kPi / 512)))) + " times less"));
+    const double sunSolidAngle = 2 * kPi * (1 - std::cos(glm::radians(5.0)));
+    EXPECT_TRUE(contains(sky.steps[2].text, fixed(sunSolidAngle, 3) + " sr"));
+    EXPECT_TRUE(contains(sky.teacherNotes, "≈ " + fixed(sunSolidAngle * std::sin(glm::radians(35.0)) / kPi, 4)));
+    EXPECT_TRUE(contains(sky.teacherNotes, "π·65/16 ≈ " + fixed(kPi * 65 / 16, 2)));
+
+    const Lesson ggx = lessonNamed("15-ggx-importance-sampling.md");
+    EXPECT_TRUE(contains(ggx.teacherNotes, "1 − ln 2 ≈ " + fixed(1 - std::log(2.0), 3)));
+    EXPECT_TRUE(contains(ggx.teacherNotes, "up to " + std::to_string(int(std::lround(100 * std::log(2.0)))) + "%"));
+
+    const Lesson tone = lessonNamed("16-rgb-exposure-tone-mapping.md");
+    std::string reinhard, aces;
+    for (float x : {0.18f, 1.0f, 4.0f}) {
+        reinhard += (reinhard.empty() ? "" : ", ") + fixed(glsl::toneReinhard(x), x == 0.18f ? 3 : 1);
+        aces += (aces.empty() ? "" : ", ") + fixed(glsl::toneAcesFit(x), 3);
+    }
+    EXPECT_TRUE(contains(tone.teacherNotes, "Reinhard " + reinhard)) << reinhard;
+    EXPECT_TRUE(contains(tone.teacherNotes, "ACES fit " + aces)) << aces;
+    EXPECT_LT(glsl::toneAcesFit(7.2f), 1.0f);
+    EXPECT_EQ(glsl::toneAcesFit(7.3f), 1.0f);   // "reaches 1 at x ≈ 7.24"
+    EXPECT_TRUE(contains(tone.teacherNotes, "≈ " + fixed(std::pow((0.5 + 0.055) / 1.055, 2.4), 3) + " of the light"));
+    EXPECT_TRUE(contains(tone.steps[1].text, "stored as " + fixed(glsl::srgbEncode(0.18f), 2)));
+    EXPECT_TRUE(contains(tone.teacherNotes, "log2(54.6) ≈ " + fixed(std::log2(60 * (0.2126 + 0.7152 * 0.9 + 0.0722 * 0.75)), 1)));
+    std::string angles;
+    for (double n : {1.5143, 1.5224})
+        angles += (angles.empty() ? "" : "° for red and ") + fixed(glm::degrees(std::asin(std::sin(glm::radians(45.0)) / n)), 2);
+    EXPECT_TRUE(contains(tone.teacherNotes, angles + "° for blue")) << angles;
+
+    const Lesson err = lessonNamed("18-find-the-error.md");
+    auto schlick = [](double c) { return 0.04 + 0.96 * std::pow(1 - std::max(c, 0.0), 5); };
+    std::string right, wrong;
+    for (double deg : {30.0, 45.0, 60.0}) {
+        right += (right.empty() ? "" : ", ") + fixed(schlick(std::cos(glm::radians(deg))), 4);
+        wrong += (wrong.empty() ? "" : ", ") + fixed(schlick(std::cos(glm::radians(2 * deg))), 4);
+    }
+    EXPECT_TRUE(contains(err.teacherNotes, "With ωi·h: " + right)) << right;
+    EXPECT_TRUE(contains(err.teacherNotes, "0): " + wrong)) << wrong;
+    EXPECT_TRUE(contains(err.teacherNotes, "= " + fixed(0.3 / (4 * 0.5), 2) + " at 16"));
+    EXPECT_TRUE(contains(err.teacherNotes, "= " + fixed(0.3 / (16 * 0.5), 4) + " at 256"));
+}
