@@ -74,8 +74,9 @@ BounceRecord decodeBounce(const glm::vec4* s) {
 
 } // namespace
 
-TracerOptions PathInspector::inspectorOptions() {
+TracerOptions PathInspector::inspectorOptions(ShaderDefines extraDefines) {
     TracerOptions o;
+    o.extraDefines = std::move(extraDefines);
     o.extraDefines.emplace_back(tracerDefine("RAYLAB_INSPECT_PATHS"), "1");
     o.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_VIEWS"), "1");   // the bounce views' filter
     return o;
@@ -87,8 +88,9 @@ void PathInspector::setBounceFilter(BounceFilter filter, int bounce) {
     filterBounce_ = bounce;
 }
 
-PathInspector::PathInspector(int maxRecords)
-    : tracer_(std::make_unique<PathTracer>(inspectorOptions())), maxRecords_(maxRecords) {
+PathInspector::PathInspector(int maxRecords, ShaderDefines extraDefines)
+    : extraDefines_(std::move(extraDefines)), tracer_(std::make_unique<PathTracer>(inspectorOptions(extraDefines_))),
+      maxRecords_(maxRecords) {
     if (maxRecords < 1) throw std::invalid_argument("PathInspector: maxRecords must be at least 1");
 }
 

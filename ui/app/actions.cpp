@@ -10,6 +10,10 @@ void runAction(KeyAction action, Viewer& viewer, UiState& ui) {
     case KeyAction::Reset: viewer.resetAccumulation(); return;
     case KeyAction::ReloadShaders:
         if (viewer.reloadShaders()) viewer.log().info("reloaded the shaders (F5)");
+        if (ui.exercise.exercise() && ui.exercise.checkOnReload) {
+            ui.exercise.check();
+            viewer.resetAccumulation();   // the checks used the GPU: start the image over cleanly
+        }
         return;
     case KeyAction::Export: viewer.exportRender(ui.exportPath); return;
     case KeyAction::Screenshot: ui.pendingScreenshot = ui.screenshotPath; return;

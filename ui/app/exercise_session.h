@@ -31,7 +31,13 @@ public:
 
     // Runs the selected exercise's checks on the current GL context.
     void check();
+    bool checkOnReload = true;   // F5 runs the checks too, after recompiling the tracer
     const std::optional<ExerciseReport>& report() const { return report_; }
+    // The render check's pixel where the pupil's render and the reference differ most, in the
+    // path inspector: opens the check's scene (unless it is open) and inspects the pixel, scaled to
+    // the viewer's resolution, with the pupil's function. False when the check has no pixel or
+    // the scene or the inspection fails (the log says why).
+    bool inspectDifference(Viewer& viewer, const CheckResult& check) const;
 
 private:
     std::vector<Exercise> exercises_;

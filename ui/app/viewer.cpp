@@ -113,6 +113,7 @@ bool Viewer::reloadShaders() {
         return false;
     }
     document_.clearError();
+    runningDefines_ = variants_.extraDefines();
     slicer_.forgetCosts();   // new shaders, new costs
     if (document_.loaded()) {
         tracer_->setScene(tracedScene());
