@@ -14,7 +14,7 @@ namespace {
 static_assert(keycode::kSpace == GLFW_KEY_SPACE && keycode::kMinus == GLFW_KEY_MINUS && keycode::k0 == GLFW_KEY_0 &&
               keycode::kEqual == GLFW_KEY_EQUAL && keycode::kR == GLFW_KEY_R && keycode::kS == GLFW_KEY_S &&
               keycode::kPageUp == GLFW_KEY_PAGE_UP && keycode::kPageDown == GLFW_KEY_PAGE_DOWN &&
-              keycode::kF1 == GLFW_KEY_F1 && keycode::kF5 == GLFW_KEY_F5 && keycode::kF9 == GLFW_KEY_F9 &&
+              keycode::kF1 == GLFW_KEY_F1 && keycode::kF2 == GLFW_KEY_F2 && keycode::kF5 == GLFW_KEY_F5 && keycode::kF9 == GLFW_KEY_F9 &&
               keycode::kF12 == GLFW_KEY_F12 && keycode::kKpSubtract == GLFW_KEY_KP_SUBTRACT &&
               keycode::kKpAdd == GLFW_KEY_KP_ADD && keycode::kLeftControl == GLFW_KEY_LEFT_CONTROL);
 

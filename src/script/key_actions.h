@@ -11,12 +11,12 @@ namespace raylab {
 
 enum class KeyAction {
     NextStep, PreviousStep, Pause, Reset, ReloadShaders, Export, Screenshot,
-    ToggleTeach, SaveScene, UiScaleUp, UiScaleDown, UiScaleReset,
+    ToggleTeach, SaveScene, UiScaleUp, UiScaleDown, UiScaleReset, TogglePresenter,
 };
 
 namespace keycode {   // GLFW_KEY_*
 inline constexpr int kNone = -1, kSpace = 32, kMinus = 45, k0 = 48, kEqual = 61, kR = 82, kS = 83, kPageUp = 266,
-                     kPageDown = 267, kF1 = 290, kF5 = 294, kF9 = 298, kF12 = 301, kKpSubtract = 333, kKpAdd = 334,
+                     kPageDown = 267, kF1 = 290, kF2 = 291, kF5 = 294, kF9 = 298, kF12 = 301, kKpSubtract = 333, kKpAdd = 334,
                      kLeftControl = 341;
 } // namespace keycode
 
@@ -32,7 +32,7 @@ struct KeyBinding {
     std::string_view label;      // what it does
 };
 
-inline constexpr std::array<KeyBinding, 12> kKeyBindings = {{
+inline constexpr std::array<KeyBinding, 13> kKeyBindings = {{
     {KeyAction::NextStep, "page-down", keycode::kPageDown, keycode::kNone, Ctrl::Any, "PgDn", "next lesson step"},
     {KeyAction::PreviousStep, "page-up", keycode::kPageUp, keycode::kNone, Ctrl::Any, "PgUp", "previous lesson step"},
     {KeyAction::Pause, "space", keycode::kSpace, keycode::kNone, Ctrl::Any, "Space", "pause / resume"},
@@ -41,6 +41,7 @@ inline constexpr std::array<KeyBinding, 12> kKeyBindings = {{
     {KeyAction::Export, "f9", keycode::kF9, keycode::kNone, Ctrl::Any, "F9", "export the render"},
     {KeyAction::Screenshot, "f12", keycode::kF12, keycode::kNone, Ctrl::Any, "F12", "screenshot of the window"},
     {KeyAction::ToggleTeach, "f1", keycode::kF1, keycode::kNone, Ctrl::Any, "F1", "show / hide the Teach window"},
+    {KeyAction::TogglePresenter, "f2", keycode::kF2, keycode::kNone, Ctrl::Any, "F2", "show / hide the presenter view"},
     {KeyAction::SaveScene, "ctrl+s", keycode::kS, keycode::kNone, Ctrl::With, "Ctrl+S", "save the scene"},
     {KeyAction::UiScaleUp, "ctrl+=", keycode::kEqual, keycode::kKpAdd, Ctrl::With, "Ctrl+=", "larger UI"},
     {KeyAction::UiScaleDown, "ctrl+-", keycode::kMinus, keycode::kKpSubtract, Ctrl::With, "Ctrl+-", "smaller UI"},

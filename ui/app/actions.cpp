@@ -18,6 +18,7 @@ void runAction(KeyAction action, Viewer& viewer, UiState& ui) {
     case KeyAction::Export: viewer.exportRender(ui.exportPath); return;
     case KeyAction::Screenshot: ui.pendingScreenshot = ui.screenshotPath; return;
     case KeyAction::ToggleTeach: ui.showTeach = !ui.showTeach; return;
+    case KeyAction::TogglePresenter: ui.presenter.show = !ui.presenter.show; return;
     case KeyAction::SaveScene:
         if (!ui.savePath.empty()) viewer.document().save(ui.savePath);
         return;

@@ -3,6 +3,7 @@
 // out (a screenshot needs the finished frame), and where the viewport drew the image last frame.
 #include "app/exercise_session.h"
 #include "app/lesson_session.h"
+#include "app/presenter.h"
 #include "app/split_screen.h"
 #include "inspect/sample_points.h"
 #include "selftest/self_test.h"
@@ -40,6 +41,7 @@ struct UiState {
     std::string pendingKey;        // a key the script presses next frame ("page-down", "page-up")
     bool teachFocused = false;     // the Teach window had the keyboard last frame (arrows and Space step)
     LessonSession lesson;          // the Lesson panel's model; its step scripts run in the window loop
+    PresenterState presenter;      // class mode and the presenter view (app/presenter.h)
     ExerciseSession exercise;      // the Exercise tab's model: the code track's pupil function in the tracer
     bool stepScriptRunning = false;   // a lesson step's script is running (an automation script waits)
     SplitScreen split;             // A/B split screen

@@ -163,7 +163,11 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
         drawMarkdown(l.goingFurther);
         ImGui::PopID();
     }
-    if (!l.teacherNotes.empty() && ImGui::CollapsingHeader("Teacher's notes")) {
+    // Class mode: the answers stay off the projector, on the presenter view.
+    if (!l.teacherNotes.empty() && ui.presenter.classMode) {
+        ImGui::Spacing();
+        ImGui::TextDisabled("Teacher's notes: on the presenter view (%s)", std::string(keyBinding(KeyAction::TogglePresenter).keyLabel).c_str());
+    } else if (!l.teacherNotes.empty() && ImGui::CollapsingHeader("Teacher's notes")) {
         ImGui::PushID("notes");
         drawMarkdown(l.teacherNotes);
         ImGui::PopID();

@@ -28,6 +28,9 @@ void drawLessonPanel(Viewer& viewer, UiState& ui);
 void drawClassroomPanel(Viewer& viewer, UiState& ui);
 void drawSelfTestPanel(Viewer& viewer, UiState& ui);
 void drawExercisePanel(Viewer& viewer, UiState& ui);   // exercise_panel.cpp: the code track
+// The presenter view (presenter_panel.cpp) into the current window: the main window's Presenter
+// panel (F2) or the presenter's own window (ui/presenter_window.h).
+void drawPresenterPanel(UiState& ui);
 // The Teach window's presenter keys (lesson_panel.cpp): Right/Left/Space while it has the
 // keyboard. Call between NewFrame and drawing.
 void presenterKeys(UiState& ui);
