@@ -49,7 +49,7 @@
 //   ui-scale S             UI scale for projectors (0.5 to 4)
 //   key NAME               press a key in the window, through the window's own key handling: a
 //                          name of script/key_actions.h (page-down, page-up, space, r, f5, f9,
-//                          f12, f1, ctrl+s, ctrl+=, ctrl+-, ctrl+0)
+//                          f12, f1, f2, ctrl+s, ctrl+=, ctrl+-, ctrl+0)
 //   lesson PATH            open a lesson in the Lesson panel;  lesson-step N: apply its step N
 //   self-test              run the self-test (furnace, χ² of the GLSL samplers), log the verdicts
 //   teach TAB              show the Teach window at lesson, classroom or self-test; off hides it
