@@ -121,14 +121,14 @@ TEST(Script, ParsesTheTeachingCommands) {
     EXPECT_EQ(errorOf("stage phong\n"), "s.txt:1: error: unknown stage 'phong' (primary, emission, lambert, ggx, textures, full)");
     EXPECT_EQ(errorOf("split halves\n"), "s.txt:1: error: split takes samples, time or off");
     EXPECT_EQ(errorOf("split-a render.nee\n"), "s.txt:1: error: split-a needs KEY VALUE");
-    EXPECT_EQ(errorOf("key escape\n"), "s.txt:1: error: key takes page-down, page-up, space, r, f5, f9, f12, f1, ctrl+s, ctrl+=, ctrl+- or ctrl+0");
+    EXPECT_EQ(errorOf("key escape\n"), "s.txt:1: error: key takes page-down, page-up, space, r, f5, f9, f12, f1, f2, ctrl+s, ctrl+=, ctrl+- or ctrl+0");
     EXPECT_EQ(errorOf("ui-scale big\n"), "s.txt:1: error: ui-scale: 'big' is not a number");
     EXPECT_EQ(errorOf("lesson-step two\n"), "s.txt:1: error: lesson-step: 'two' is not a number");
 }
 
 TEST(Script, KeysAndDrops) {
     for (std::string_view k : scriptKeys()) EXPECT_EQ(errorOf("key " + std::string(k) + "\n"), "<no error>") << k;
-    EXPECT_EQ(errorOf("key F9\n"), "s.txt:1: error: key takes page-down, page-up, space, r, f5, f9, f12, f1, ctrl+s, ctrl+=, ctrl+- or ctrl+0");
+    EXPECT_EQ(errorOf("key F9\n"), "s.txt:1: error: key takes page-down, page-up, space, r, f5, f9, f12, f1, f2, ctrl+s, ctrl+=, ctrl+- or ctrl+0");
     EXPECT_EQ(parseScript("drop /tmp/scene.json\n", "s.txt").at(0).args.at(0), "/tmp/scene.json");
     EXPECT_EQ(errorOf("drop\n"), "s.txt:1: error: drop takes 1 argument(s), got 0");
     EXPECT_EQ(errorOf("drop a.json b.json\n"), "s.txt:1: error: drop takes 1 argument(s), got 2");

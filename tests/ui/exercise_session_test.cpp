@@ -1,10 +1,12 @@
 // The Exercise tab and its model: the tracer runs a pupil's function, F5 after a broken edit keeps
 // the previous tracer with the error at the pupil's line, "Check" (and F5) gives the verdicts, and
-// a failed render check opens the path inspector at its pixel with the pupil's function.
+// a failed render check opens the path inspector at its pixel with the pupil's function, and the
+// split screen shows the pupil's render beside the reference's.
 #include "app/actions.h"
 #include "panels/panels.h"
 
 #include "inspect/path_inspector.h"
+#include "render/progressive_render.h"
 
 #include "support/panel_frame_test.h"
 
@@ -117,6 +119,31 @@ TEST_F(ExerciseSessionTest, F5ChecksAndAFailedRenderCheckInspectsItsPixelWithThe
     };
     EXPECT_EQ(shown.bounces.front().origin, cameraOrigin(viewer->runningTracerDefines()));
     EXPECT_NE(shown.bounces.front().origin, cameraOrigin({}));   // the reference's lens is another
+
+    // Yours | the reference in the split screen at equal samples: each side is the image of a
+    // tracer compiled with that side's function.
+    ASSERT_TRUE(viewer->document().set("render.spp", "4"));
+    ASSERT_TRUE(s.splitWithReference(*viewer, ui.split));
+    for (int i = 0; i < 400 && !ui.split.converged(); ++i) ui.split.update(*viewer, 0.05);
+    ASSERT_TRUE(ui.split.converged()) << ui.split.lastError();
+    EXPECT_EQ(ui.split.label(0), "A: your function");
+    EXPECT_EQ(ui.split.label(1), "B: the reference");
+    const auto renderWith = [&](const ShaderDefines& defines) {
+        TracerOptions o;
+        o.extraDefines = defines;
+        PathTracer t(o);
+        Scene sc = viewer->scene();
+        sc.render.width = viewer->imageWidth();
+        sc.render.height = viewer->imageHeight();
+        t.setScene(sc);
+        renderProgressively(t, sc.render);
+        return t.readImage().rgba;
+    };
+    EXPECT_EQ(ui.split.image(0).rgba, renderWith(viewer->runningTracerDefines()));
+    EXPECT_EQ(ui.split.image(1).rgba, renderWith({}));
+    EXPECT_NE(ui.split.image(0).rgba, ui.split.image(1).rgba);
+    ui.split.stop();
+    EXPECT_EQ(ui.split.label(0), "A: as the scene");
     fs::remove_all(pupil);
 }
 

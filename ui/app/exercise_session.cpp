@@ -33,6 +33,15 @@ void ExerciseSession::check() {
     report_ = checkExercise(*exercise(), pupilFile());
 }
 
+bool ExerciseSession::splitWithReference(Viewer& viewer, SplitScreen& split) const {
+    if (!exercise()) return false;
+    split.stop();
+    split.setDefines(0, viewer.runningTracerDefines(), "your function");
+    split.setDefines(1, {}, "the reference");
+    split.start(SplitBudget::EqualSamples);
+    return true;
+}
+
 bool ExerciseSession::inspectDifference(Viewer& viewer, const CheckResult& check) const {
     if (check.pixelX < 0 || check.pixelY < 0 || check.scene.empty()) return false;
     const fs::path scene = fs::absolute(check.scene);

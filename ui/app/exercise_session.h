@@ -3,6 +3,7 @@
 // pupil file the tracer is compiled with, the last compile error and the last checks' verdicts.
 // Choosing an exercise or recompiling (F5) goes through Viewer::setTracerDefines, so a compile
 // error leaves the previous tracer running.
+#include "app/split_screen.h"
 #include "app/viewer.h"
 #include "exercise/grading.h"
 #include "exercise/manifest.h"
@@ -38,6 +39,9 @@ public:
     // the viewer's resolution, with the pupil's function. False when the check has no pixel or
     // the scene or the inspection fails (the log says why).
     bool inspectDifference(Viewer& viewer, const CheckResult& check) const;
+    // The split screen with the pupil's function on the left (A) and the reference on the right
+    // (B), at equal samples, on the viewer's scene. False without an exercise.
+    bool splitWithReference(Viewer& viewer, SplitScreen& split) const;
 
 private:
     std::vector<Exercise> exercises_;

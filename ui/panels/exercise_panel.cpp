@@ -53,6 +53,9 @@ void drawExercisePanel(Viewer& viewer, UiState& ui) {
     }
     ImGui::SameLine();
     ImGui::Checkbox("check on F5", &s.checkOnReload);
+    if (ImGui::Button("Split: yours | the reference")) s.splitWithReference(viewer, ui.split);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Left of the divider your function, right the reference, at equal samples (Classroom tab: split)");
     if (!s.report()) return;
     const ExerciseReport& r = *s.report();
     if (!r.compiled) {
