@@ -1,6 +1,6 @@
 #include "lesson/lesson.h"
 
-#include <md4c.h>
+#include "lesson/markdown_dialect.h"
 
 #include <algorithm>
 #include <cctype>
@@ -291,13 +291,7 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
     c.lineStarts.push_back(0);
     for (size_t i = 0; i < text.size(); ++i)
         if (text[i] == '\n') c.lineStarts.push_back(i + 1);
-    MD_PARSER parser{};
-    parser.flags = MD_FLAG_TABLES | MD_FLAG_STRIKETHROUGH | MD_FLAG_NOHTML;
-    parser.enter_block = enterBlock;
-    parser.leave_block = leaveBlock;
-    parser.enter_span = enterSpan;
-    parser.leave_span = leaveSpan;
-    parser.text = onText;
+    const MD_PARSER parser = lessonMarkdownParser(enterBlock, leaveBlock, enterSpan, leaveSpan, onText);
     if (md_parse(text.data(), MD_SIZE(text.size()), &parser, &c) != 0) throw fail(0, "md4c could not parse the file");
 
     Lesson lesson;

@@ -1,6 +1,6 @@
 #include "lesson/markdown_blocks.h"
 
-#include <md4c.h>
+#include "lesson/markdown_dialect.h"
 
 #include <algorithm>
 
@@ -183,13 +183,7 @@ std::string MarkdownBlock::plainText() const {
 
 std::vector<MarkdownBlock> parseMarkdownBlocks(std::string_view markdown) {
     Builder b;
-    MD_PARSER parser{};
-    parser.flags = MD_FLAG_TABLES | MD_FLAG_STRIKETHROUGH | MD_FLAG_NOHTML;
-    parser.enter_block = enterBlock;
-    parser.leave_block = leaveBlock;
-    parser.enter_span = enterSpan;
-    parser.leave_span = leaveSpan;
-    parser.text = onText;
+    const MD_PARSER parser = lessonMarkdownParser(enterBlock, leaveBlock, enterSpan, leaveSpan, onText);
     // `current` points into the vector: open() re-points it after every append.
     md_parse(markdown.data(), MD_SIZE(markdown.size()), &parser, &b);
     return std::move(b.blocks);

@@ -1,6 +1,6 @@
 #include "lesson/markdown_html.h"
 
-#include <md4c.h>
+#include "lesson/markdown_dialect.h"
 
 #include <exception>
 
@@ -35,102 +35,85 @@ std::string_view alignment(MD_ALIGN a) {
     }
 }
 
-int enterBlock(MD_BLOCKTYPE type, void* detail, void* user) {
-    auto& w = *static_cast<Writer*>(user);
+// The tag that opens (or closes) a block; "" for blocks without one.
+std::string blockTag(MD_BLOCKTYPE type, void* detail, bool close) {
+    const std::string slash = close ? "/" : "";
+    auto pair = [&](const char* name, const char* after = "") { return "<" + slash + name + ">" + after; };
     switch (type) {
-    case MD_BLOCK_DOC: break;
-    case MD_BLOCK_QUOTE: w.tag("<blockquote>\n"); break;
-    case MD_BLOCK_UL: w.tag("<ul>\n"); break;
+    case MD_BLOCK_QUOTE: return pair("blockquote", "\n");
+    case MD_BLOCK_UL: return pair("ul", "\n");
     case MD_BLOCK_OL: {
         const unsigned start = static_cast<MD_BLOCK_OL_DETAIL*>(detail)->start;
-        w.tag(start == 1 ? std::string("<ol>\n") : "<ol start=\"" + std::to_string(start) + "\">\n");
-        break;
+        return close || start == 1 ? pair("ol", "\n") : "<ol start=\"" + std::to_string(start) + "\">\n";
     }
-    case MD_BLOCK_LI: w.tag("<li>"); break;
-    case MD_BLOCK_HR: w.tag("<hr>\n"); break;
-    case MD_BLOCK_H: w.tag("<h" + std::to_string(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level) + ">"); break;
+    case MD_BLOCK_LI: return pair("li", close ? "\n" : "");
+    case MD_BLOCK_HR: return close ? "" : "<hr>\n";
+    case MD_BLOCK_H: return "<" + slash + "h" + std::to_string(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level) + (close ? ">\n" : ">");
     case MD_BLOCK_CODE: {
         const auto* d = static_cast<MD_BLOCK_CODE_DETAIL*>(detail);
-        w.tag(d->lang.size ? "<pre><code class=\"language-" + attribute(d->lang) + "\">" : std::string("<pre><code>"));
-        break;
+        if (close) return "</code></pre>\n";
+        return d->lang.size ? "<pre><code class=\"language-" + attribute(d->lang) + "\">" : std::string("<pre><code>");
     }
-    case MD_BLOCK_HTML: break;
-    case MD_BLOCK_P: w.tag("<p>"); break;
-    case MD_BLOCK_TABLE: w.tag("<table>\n"); break;
-    case MD_BLOCK_THEAD: w.tag("<thead>\n"); break;
-    case MD_BLOCK_TBODY: w.tag("<tbody>\n"); break;
-    case MD_BLOCK_TR: w.tag("<tr>"); break;
-    case MD_BLOCK_TH: w.tag("<th" + std::string(alignment(static_cast<MD_BLOCK_TD_DETAIL*>(detail)->align)) + ">"); break;
-    case MD_BLOCK_TD: w.tag("<td" + std::string(alignment(static_cast<MD_BLOCK_TD_DETAIL*>(detail)->align)) + ">"); break;
+    case MD_BLOCK_P: return pair("p", close ? "\n" : "");
+    case MD_BLOCK_TABLE: return pair("table", "\n");
+    case MD_BLOCK_THEAD: return pair("thead", "\n");
+    case MD_BLOCK_TBODY: return pair("tbody", "\n");
+    case MD_BLOCK_TR: return pair("tr", close ? "\n" : "");
+    case MD_BLOCK_TH:
+    case MD_BLOCK_TD: {
+        const char* name = type == MD_BLOCK_TH ? "th" : "td";
+        if (close) return pair(name);
+        return "<" + std::string(name) + std::string(alignment(static_cast<MD_BLOCK_TD_DETAIL*>(detail)->align)) + ">";
     }
+    default: return "";   // the document, raw HTML (not allowed)
+    }
+}
+
+int enterBlock(MD_BLOCKTYPE type, void* detail, void* user) {
+    static_cast<Writer*>(user)->tag(blockTag(type, detail, false));
     return 0;
 }
 
 int leaveBlock(MD_BLOCKTYPE type, void* detail, void* user) {
-    auto& w = *static_cast<Writer*>(user);
-    switch (type) {
-    case MD_BLOCK_DOC: break;
-    case MD_BLOCK_QUOTE: w.tag("</blockquote>\n"); break;
-    case MD_BLOCK_UL: w.tag("</ul>\n"); break;
-    case MD_BLOCK_OL: w.tag("</ol>\n"); break;
-    case MD_BLOCK_LI: w.tag("</li>\n"); break;
-    case MD_BLOCK_HR: break;
-    case MD_BLOCK_H: w.tag("</h" + std::to_string(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level) + ">\n"); break;
-    case MD_BLOCK_CODE: w.tag("</code></pre>\n"); break;
-    case MD_BLOCK_HTML: break;
-    case MD_BLOCK_P: w.tag("</p>\n"); break;
-    case MD_BLOCK_TABLE: w.tag("</table>\n"); break;
-    case MD_BLOCK_THEAD: w.tag("</thead>\n"); break;
-    case MD_BLOCK_TBODY: w.tag("</tbody>\n"); break;
-    case MD_BLOCK_TR: w.tag("</tr>\n"); break;
-    case MD_BLOCK_TH: w.tag("</th>"); break;
-    case MD_BLOCK_TD: w.tag("</td>"); break;
-    }
+    static_cast<Writer*>(user)->tag(blockTag(type, detail, true));
     return 0;
+}
+
+// The tag of a span but an image; "" for spans without one.
+std::string spanTag(MD_SPANTYPE type, void* detail, bool close) {
+    const std::string slash = close ? "/" : "";
+    switch (type) {
+    case MD_SPAN_EM: return "<" + slash + "em>";
+    case MD_SPAN_STRONG: return "<" + slash + "strong>";
+    case MD_SPAN_CODE: return "<" + slash + "code>";
+    case MD_SPAN_DEL: return "<" + slash + "del>";
+    case MD_SPAN_A: return close ? "</a>" : "<a href=\"" + attribute(static_cast<MD_SPAN_A_DETAIL*>(detail)->href) + "\">";
+    default: return "";
+    }
 }
 
 int enterSpan(MD_SPANTYPE type, void* detail, void* user) {
     auto& w = *static_cast<Writer*>(user);
-    switch (type) {
-    case MD_SPAN_EM: w.tag("<em>"); break;
-    case MD_SPAN_STRONG: w.tag("<strong>"); break;
-    case MD_SPAN_CODE: w.tag("<code>"); break;
-    case MD_SPAN_DEL: w.tag("<del>"); break;
-    case MD_SPAN_A: {
-        const auto* d = static_cast<MD_SPAN_A_DETAIL*>(detail);
-        w.tag("<a href=\"" + attribute(d->href) + "\">");
-        break;
+    if (type != MD_SPAN_IMG) {
+        w.tag(spanTag(type, detail, false));
+        return 0;
     }
-    case MD_SPAN_IMG: {
-        const auto* d = static_cast<MD_SPAN_IMG_DETAIL*>(detail);
-        std::string uri;
-        try {
-            if (!w.error) uri = (*w.imageSource)(std::string(d->src.text, d->src.size));
-        } catch (...) {
-            w.error = std::current_exception();
-        }
-        w.tag("<img src=\"" + htmlEscape(uri) + "\" alt=\"");
-        ++w.imageDepth;
-        break;
+    const auto* d = static_cast<MD_SPAN_IMG_DETAIL*>(detail);
+    std::string uri;
+    try {
+        if (!w.error) uri = (*w.imageSource)(std::string(d->src.text, d->src.size));
+    } catch (...) {
+        w.error = std::current_exception();
     }
-    default: break;
-    }
+    w.tag("<img src=\"" + htmlEscape(uri) + "\" alt=\"");
+    ++w.imageDepth;
     return 0;
 }
 
-int leaveSpan(MD_SPANTYPE type, void*, void* user) {
+int leaveSpan(MD_SPANTYPE type, void* detail, void* user) {
     auto& w = *static_cast<Writer*>(user);
-    switch (type) {
-    case MD_SPAN_EM: w.tag("</em>"); break;
-    case MD_SPAN_STRONG: w.tag("</strong>"); break;
-    case MD_SPAN_CODE: w.tag("</code>"); break;
-    case MD_SPAN_DEL: w.tag("</del>"); break;
-    case MD_SPAN_A: w.tag("</a>"); break;
-    case MD_SPAN_IMG:
-        if (--w.imageDepth == 0) w.out += "\">";
-        break;
-    default: break;
-    }
+    if (type != MD_SPAN_IMG) w.tag(spanTag(type, detail, true));
+    else if (--w.imageDepth == 0) w.out += "\">";
     return 0;
 }
 
@@ -168,13 +151,7 @@ std::string htmlEscape(std::string_view text) {
 std::string markdownToHtml(std::string_view markdown, const ImageSource& imageSource) {
     Writer w;
     w.imageSource = &imageSource;
-    MD_PARSER parser{};
-    parser.flags = MD_FLAG_TABLES | MD_FLAG_STRIKETHROUGH | MD_FLAG_NOHTML;
-    parser.enter_block = enterBlock;
-    parser.leave_block = leaveBlock;
-    parser.enter_span = enterSpan;
-    parser.leave_span = leaveSpan;
-    parser.text = onText;
+    const MD_PARSER parser = lessonMarkdownParser(enterBlock, leaveBlock, enterSpan, leaveSpan, onText);
     md_parse(markdown.data(), MD_SIZE(markdown.size()), &parser, &w);
     if (w.error) std::rethrow_exception(w.error);
     return std::move(w.out);
