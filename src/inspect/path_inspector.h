@@ -61,6 +61,7 @@ private:
     BounceFilter filter_ = BounceFilter::All;
     int filterBounce_ = 0;
     bool hasScene_ = false;
+    std::vector<Light> lights_;      // the scene's, to name the lights a sample picks
     unsigned buffers_[2] = {0, 0};   // bindings 20 (bounces) and 21 (paths)
     std::size_t capacity_ = 0;       // paths the buffers hold
 };

@@ -30,7 +30,7 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"bounce-step", {1, 1}}, {"stage", {1, 1}},       {"split", {1, 1}},      {"split-a", {2, 2}},
         {"split-b", {2, 2}},     {"split-divider", {1, 1}}, {"ui-scale", {1, 1}}, {"key", {1, 1}},
         {"lesson", {1, 1}},      {"lesson-step", {1, 1}}, {"self-test", {0, 0}},   {"teach", {1, 1}},
-        {"drop", {1, 1}},        {"expect", {2, 2}},      {"hold", {0, 0}},
+        {"drop", {1, 1}},        {"expect", {2, 2}},      {"hold", {0, 0}},       {"select-light", {1, 1}},
     };
     return table;
 }
@@ -112,7 +112,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         const int n = int(c.args.size());
         if (n < it->second.min || n > it->second.max)
             fail(c.name + " takes " + std::to_string(it->second.min) + " argument(s), got " + std::to_string(n));
-        const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "scale" ||
+        const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "select-light" ||
+                             c.name == "scale" ||
                              c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window" ||
                              c.name == "debug-bounce" || c.name == "inspect" || c.name == "explore" ||
                              c.name == "focus" || c.name == "bvh-depth" || c.name == "split-divider" ||
@@ -124,9 +125,9 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
             fail("unknown debug view '" + c.args[0] + "' (" + debugViewList() + ")");
         const auto onOff = [](const std::string& w) { return w == "on" || w == "off"; };
         if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected" && c.args[0] != "paths" &&
-                                     c.args[0] != "bvh" && c.args[0] != "mesh-bvh") ||
+                                     c.args[0] != "bvh" && c.args[0] != "mesh-bvh" && c.args[0] != "lights") ||
                                     !onOff(c.args[1])))
-            fail("overlay takes boxes|selected|paths|bvh|mesh-bvh on|off");
+            fail("overlay takes boxes|selected|paths|bvh|mesh-bvh|lights on|off");
         if (c.name == "panel" && ((c.args[0] != "inspector" && c.args[0] != "brdf-explorer") || !onOff(c.args[1])))
             fail("panel takes inspector|brdf-explorer on|off");
         if (c.name == "focus-mode" && !onOff(c.args[0])) fail("focus-mode takes on|off");

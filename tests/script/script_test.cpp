@@ -67,8 +67,10 @@ TEST(Script, RejectsMistakesWithFileAndLine) {
     EXPECT_EQ(errorOf("wait-spp lots\n"), "s.txt:1: error: wait-spp: 'lots' is not a number");
     EXPECT_EQ(errorOf("window 800 tall\n"), "s.txt:1: error: window: 'tall' is not a number");
     EXPECT_EQ(errorOf("debug-view heat\n"), "s.txt:1: error: unknown debug view 'heat' (" + debugViewList() + ")");
-    EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh on|off");
-    EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh on|off");
+    EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh|lights on|off");
+    EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh|lights on|off");
+    EXPECT_EQ(errorOf("select-light 1\noverlay lights on\n"), "<no error>");
+    EXPECT_EQ(errorOf("select-light sun\n"), "s.txt:1: error: select-light: 'sun' is not a number");
 }
 
 TEST(Script, InspectorCommands) {

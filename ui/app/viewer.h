@@ -40,6 +40,7 @@ struct OverlaySettings {
     bool bvh = false;            // the top-level BVH's nodes at bvhDepth (app/bvh_overlay.h)
     bool meshBvh = false;        // the meshes' BVH nodes at bvhDepth
     int bvhDepth = 0;            // 0 = the root
+    bool lights = false;         // a gizmo per light (app/light_gizmo.h)
 };
 
 class Viewer : private SceneRenderer {

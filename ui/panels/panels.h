@@ -12,6 +12,9 @@ void drawViewport(Viewer& viewer, UiState& ui);       // viewport_panel.cpp: ima
 void drawRenderPanel(Viewer& viewer, UiState& ui);    // render_panel.cpp: files, passes, stop conditions
 void drawCameraPanel(Viewer& viewer, UiState& ui);    // camera_panel.cpp
 void drawMaterialPanel(Viewer& viewer, UiState& ui);  // material_panel.cpp: outliner, object, material
+// The selected light's keys (light_panel.cpp), drawn by the Material panel when the outliner's
+// selection is a light; positions drag by positionSpeed per pixel.
+void drawLightKeys(Viewer& viewer, float positionSpeed);
 void drawOverlaysPanel(Viewer& viewer, UiState& ui);  // overlays_panel.cpp
 void drawDebugPanel(Viewer& viewer, UiState& ui);     // debug_panel.cpp
 void drawStatsPanel(Viewer& viewer, UiState& ui);     // stats_panel.cpp

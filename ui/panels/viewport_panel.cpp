@@ -4,6 +4,7 @@
 
 #include "app/bvh_overlay.h"
 #include "app/camera_control.h"
+#include "app/light_gizmo.h"
 #include "app/scene_object.h"
 #include "panels/heat_legend.h"
 #include "app/view_geometry.h"
@@ -28,7 +29,7 @@ ImVec2 toWindow(const ImageRect& r, int w, int h, ImagePoint p) {
 void drawOverlays(Viewer& viewer, const ImageRect& r) {
     const Scene& scene = viewer.scene();
     const OverlaySettings& o = viewer.overlays;
-    if (!o.boxes && !o.selectedOnly && !o.bvh && !o.meshBvh) return;
+    if (!o.boxes && !o.selectedOnly && !o.bvh && !o.meshBvh && !o.lights) return;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.width, r.y + r.height), true);
     const int w = viewer.imageWidth(), h = viewer.imageHeight();
@@ -48,6 +49,11 @@ void drawOverlays(Viewer& viewer, const ImageRect& r) {
         const std::optional<Box> box = objectBounds(scene, *g, i);
         if (!box) continue;
         for (const Segment& s : projectBox(scene, w, h, *box))
+            dl->AddLine(toWindow(r, w, h, s.a), toWindow(r, w, h, s.b), colour, 1.0f);
+    }
+    for (int i = 0; o.lights && i < int(scene.lights.size()); ++i) {
+        const ImU32 colour = i == viewer.selection.light() ? IM_COL32(0, 255, 255, 255) : IM_COL32(255, 230, 90, 255);
+        for (const Segment& s : lightGizmo(scene, w, h, i))
             dl->AddLine(toWindow(r, w, h, s.a), toWindow(r, w, h, s.b), colour, 1.0f);
     }
     dl->PopClipRect();
