@@ -425,6 +425,7 @@ const std::vector<TextureSlot>& textureSlots() {
         {"roughness_texture", &Material::roughnessTexture, &Material::roughnessTextureIndex, true},
         {"metallic_texture", &Material::metallicTexture, &Material::metallicTextureIndex, true},
         {"emission_texture", &Material::emissionTexture, &Material::emissionTextureIndex, false},
+        {"specular_texture", &Material::specularTexture, &Material::specularTextureIndex, false},
     };
     return slots;
 }

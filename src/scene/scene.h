@@ -95,6 +95,8 @@ struct Material {
     int metallicTextureIndex = -1;
     std::string emissionTexture;     // multiplies the emitted radiance (sRGB-decoded colour)
     int emissionTextureIndex = -1;
+    std::string specularTexture;     // multiplies f0 by its colour (sRGB-decoded like albedo_texture)
+    int specularTextureIndex = -1;
     bool fromGltf = false;           // read from a mesh's glTF file, not the scene's "materials"
     glm::vec3 radiance() const { return emission * emissionStrength; }
 };

@@ -172,6 +172,7 @@ void addGltfMaterials(GltfAsset gltf, bool objectNamesMaterial, PendingMesh& pen
         remap(m.roughnessTextureIndex);
         remap(m.metallicTextureIndex);
         remap(m.emissionTextureIndex);
+        remap(m.specularTextureIndex);
         m.fromGltf = true;
     }
     pending.gltfMaterials = std::move(gltf.materials);

@@ -555,6 +555,8 @@ def key_cases(section, key, kind, rng):
             bad_value("type_bool_null", doc, path, "null", "expected true or false, got null")
     elif kind == "string" and rng == "an image file":
         bad_value("key_%s_missing_file" % slug, doc, path, '"no_such_image.png"', "{...}no_such_image.png")
+        if not first:
+            bad_value("key_%s_number" % slug, doc, path, "3", "{...}got number")
         if first:
             bad_value("type_path_number", doc, path, "3", "{...}got number")
             bad_value("type_path_empty", doc, path, '""', "{...}got empty string")
