@@ -23,7 +23,7 @@ struct GpuMaterial {
     uint emissionTexture;      // emitted radiance × the texture's colour
     float metallic;            // mixed per hit (render/gpu_scene.h metallicOnGpu), else 0: baked in
     float normalScale;         // normal map x and y scale (glTF normalTexture.scale)
-    uint unused;
+    uint specularTexture;      // f0 × the texture's colour
 };
 
 // An emissive sphere, for next-event estimation.
