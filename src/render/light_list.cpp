@@ -13,14 +13,6 @@ double luminance(glm::vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.
 
 bool emits(glm::vec3 radiance) { return std::max({radiance.r, radiance.g, radiance.b}) > 0.0f; }
 
-// Radius of the sphere around the top level's root box: what a distant light illuminates.
-double sceneRadius(const SceneGeometry& g) {
-    if (g.topNodes.empty()) return 1.0;
-    const glm::dvec3 extent = glm::dvec3(g.topNodes[0].boundsMax) - glm::dvec3(g.topNodes[0].boundsMin);
-    const double r = 0.5 * glm::length(extent);
-    return std::isfinite(r) && r > 0.0 ? r : 1.0;
-}
-
 } // namespace
 
 double sphereLightPower(glm::vec3 radiance, float radius) {
@@ -49,13 +41,26 @@ glm::vec3 lightIntensity(const Light& l) {
     return glm::vec3(float(double(l.power) / solid));
 }
 
-double analyticLightPower(const Light& l, double sceneRadius) {
+double analyticLightPower(const Light& l) {
     switch (l.type) {
     case Light::Type::Point: return 4.0 * luminance(lightIntensity(l));
     case Light::Type::Spot: return 2.0 * luminance(lightIntensity(l)) * spotConeFactor(l);
-    case Light::Type::Distant: return sceneRadius * sceneRadius * luminance(l.irradiance);
+    case Light::Type::Distant: return luminance(l.irradiance);
     }
     return 0.0;
+}
+
+void shareDistantLights(std::vector<double>& weights, const std::vector<bool>& distant) {
+    double others = 0.0, irradiance = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        (distant[i] ? irradiance : others) += weights[i];
+        count += distant[i] ? 1 : 0;
+    }
+    if (!(others > 0.0) || !(irradiance > 0.0)) return;
+    const double scale = others * double(count) / irradiance;
+    for (std::size_t i = 0; i < weights.size(); ++i)
+        if (distant[i]) weights[i] *= scale;
 }
 
 glsl::GpuAnalyticLight gpuAnalyticLight(const Light& l) {
@@ -162,10 +167,10 @@ bool lightPowersDiffer(const Scene& scene) {
     bool distant = false;
     for (const Light& l : scene.lights) {
         if (l.type == Light::Type::Distant) distant = true;
-        else add(analyticLightPower(l, 0.0));
+        else add(analyticLightPower(l));
     }
     const std::size_t lights = scene.lights.size() + (hi > 0.0 ? 1 : 0);
-    if (distant && lights > 1) return true;   // its power depends on the scene's extent (buildLightList)
+    if (distant && lights > 1) return true;   // its share depends on the count of lights (shareDistantLights)
     return hi > lo * 1.05;
 }
 
@@ -204,13 +209,15 @@ LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::
         first += count;
     }
     if (first != g.triangles.size()) throw std::logic_error("light list: scene and geometry disagree on triangles");
-    const double radius = sceneRadius(g);
+    std::vector<bool> distant(list.power.size(), false);
     for (const Light& l : scene.lights) {
-        const double power = analyticLightPower(l, radius);
+        const double power = analyticLightPower(l);
         if (!(power > 0.0)) continue;   // emits nothing: never sampled, as a black emitter
         list.analytic.push_back(gpuAnalyticLight(l));
         list.power.push_back(power);
+        distant.push_back(l.type == Light::Type::Distant);
     }
+    shareDistantLights(list.power, distant);
     list.aliasTable = buildAliasTable(list.power);
     return list;
 }

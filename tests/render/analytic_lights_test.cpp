@@ -192,14 +192,46 @@ TEST_F(AnalyticLightsTest, OneSidedEmitterEmitsFromItsFrontOnly) {
     EXPECT_GE(fractionAgreeing(mis, bsdf), 0.99);
 }
 
+TEST_F(AnalyticLightsTest, SunOverAHugeFloorSphereLeavesThePointLightItsShare) {
+    // A 1000-radius floor sphere, a point light 2 above the pixel and a sun below the horizon (it
+    // lights none of the pixels, yet it is a light to pick). One sample per pixel: 0, or the point
+    // light's ρ/π · I/d² over p, its pick probability, so a pixel's relative variance is 1/p − 1.
+    // Bound: p ≥ 1/4, relative variance ≤ 3 (the distant lights' share gives p = 1/2; π r² E with
+    // the floor's r gives p ≈ 5e-6). The estimate from 1024 pixels has a standard error of about
+    // 0.07 at p = 1/2, so the bound is far beyond chance; the mean is tested with a z-test at α = 0.01.
+    const Scene s = parseScene(R"({
+  "camera": { "position": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 0.002 },
+  "render": { "width": 32, "height": 32, "spp": 1, "rpp": 1, "max_bounces": 1 },
+  "sky": { "type": "constant", "color": 0 },
+  "materials": { "floor": { "albedo": 0.5 } },
+  "objects": [ { "type": "sphere", "center": [0, -1000, 0], "radius": 1000, "material": "floor" } ],
+  "lights": [ { "type": "point", "position": [0, 2, 0], "intensity": 3 },
+              { "type": "distant", "direction": [0.3, 1, 0], "irradiance": 1 } ]
+})",
+                               "floor_sphere.json");
+    const double expected = kAlbedo / kPi * 3.0 / 4.0;
+    const std::vector<double> v = reds(s);
+    const PixelMean m = pixelMean(v);
+    const double variance = m.standardError * m.standardError * double(v.size());
+    EXPECT_LT(std::abs(m.mean - expected), test::normalQuantileTwoSided(0.01) * m.standardError)
+        << m.mean << " vs " << expected;
+    EXPECT_GT(m.mean, 0.0) << "the point light was never picked";
+    EXPECT_LE(variance / (m.mean * m.mean), 3.0) << "relative variance of a pixel";
+}
+
 TEST_F(AnalyticLightsTest, PowerSelectionAmongMixedLightsIsUnbiased) {
     // Point, spot, disc sun and an emissive sphere of very different power, picked by power: the
     // image must be the sum of the images of each light alone (each picked with probability 1),
-    // pixel by pixel, with NEE alone and with MIS.
+    // pixel by pixel, with NEE alone and with MIS; on a floor quad and on a 1000-radius floor
+    // sphere (where the sun's share does not come from the scene's size).
     const std::vector<std::string> lights = {
         R"({ "type": "point", "position": [1, 2, 1], "intensity": 2 })",
         R"({ "type": "spot", "position": [-1, 2, 0], "direction": [0.3, -1, 0], "power": 60, "inner_angle": 15, "outer_angle": 35 })",
         R"({ "type": "distant", "direction": [-1, -2, -0.5], "irradiance": 0.5, "angular_radius": 8 })"};
+    const std::vector<std::string> floors = {
+        R"({ "type": "mesh", "material": "white", "positions": [-5, 0, -5,  5, 0, -5,  5, 0, 5,  -5, 0, 5], "indices": [0, 2, 1, 0, 3, 2] })",
+        R"({ "type": "sphere", "center": [0, -1000, 0], "radius": 1000, "material": "white" })"};
+    std::string floor;
     auto scene = [&](const std::vector<std::string>& which, bool lamp, const char* mode) {
         std::string list;
         for (const std::string& l : which) list += (list.empty() ? "" : ", ") + l;
@@ -210,7 +242,7 @@ TEST_F(AnalyticLightsTest, PowerSelectionAmongMixedLightsIsUnbiased) {
   "materials": { "white": { "albedo": 0.6 }, "lamp": { "albedo": 0, "emission": 1, "strength": )" +
                                  std::string(lamp ? "6" : "0") + R"( } },
   "objects": [
-    { "type": "mesh", "material": "white", "positions": [-5, 0, -5,  5, 0, -5,  5, 0, 5,  -5, 0, 5], "indices": [0, 2, 1, 0, 3, 2] },
+    )" + floor + R"(,
     { "type": "sphere", "center": [0, 0.5, 0], "radius": 0.5, "material": "white" },
     { "type": "sphere", "center": [1.5, 1.5, -1], "radius": 0.2, "material": "lamp" } ],
   "lights": [ )" + list + R"( ]
@@ -218,15 +250,19 @@ TEST_F(AnalyticLightsTest, PowerSelectionAmongMixedLightsIsUnbiased) {
         return parseScene(text, "mixed.json", {mode});
     };
     constexpr int batches = 16;
-    for (const char* mode : {"render.mis=false", "render.mis=true"}) {
-        SCOPED_TRACE(mode);
-        const BatchStats all = renderBatches(scene(lights, true, mode), batches);
-        BatchStats sum = renderBatches(scene({}, true, mode), batches);
-        for (const std::string& l : lights) sum = plus(sum, renderBatches(scene({l}, false, mode), batches));
-        EXPECT_GE(fractionAgreeing(all, sum), 0.99);
-        // The test can fail: without the spot the sum must be seen to differ.
-        BatchStats less = renderBatches(scene({}, true, mode), batches);
-        for (size_t k : {size_t(0), size_t(2)}) less = plus(less, renderBatches(scene({lights[k]}, false, mode), batches));
-        EXPECT_LT(fractionAgreeing(all, less), 0.9);
+    for (const std::string& f : floors) {
+        floor = f;
+        for (const char* mode : {"render.mis=false", "render.mis=true"}) {
+            SCOPED_TRACE(std::string(mode) + ", floor " + f);
+            const BatchStats all = renderBatches(scene(lights, true, mode), batches);
+            BatchStats sum = renderBatches(scene({}, true, mode), batches);
+            for (const std::string& l : lights) sum = plus(sum, renderBatches(scene({l}, false, mode), batches));
+            EXPECT_GE(fractionAgreeing(all, sum), 0.99);
+            // The test can fail: without the spot the sum must be seen to differ.
+            BatchStats less = renderBatches(scene({}, true, mode), batches);
+            for (size_t k : {size_t(0), size_t(2)})
+                less = plus(less, renderBatches(scene({lights[k]}, false, mode), batches));
+            EXPECT_LT(fractionAgreeing(all, less), 0.9);
+        }
     }
 }
