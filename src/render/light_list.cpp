@@ -126,16 +126,35 @@ int triangleMaterial(const Mesh& mesh, std::size_t triangle) {
     return own >= 0 ? own : mesh.material;
 }
 
-bool meshHasEmissiveTriangle(const Scene& scene, const Mesh& mesh) {
-    auto emissive = [&](int material) {
-        return material >= 0 && std::size_t(material) < scene.materials.size() &&
-               emits(lightRadiance(scene.materials[std::size_t(material)]));
+bool emitsFrontOnly(const Mesh& mesh, const Material& material) {
+    return mesh.emissionSides == EmissionSides::Front || (mesh.emissionSides == EmissionSides::Gltf && !material.doubleSided);
+}
+
+namespace {
+
+// Whether the material of any of the mesh's triangles passes `test`: one test for a mesh of one
+// material, a walk over the per-triangle materials otherwise.
+template <class Test>
+bool anyTriangleMaterial(const Scene& scene, const Mesh& mesh, Test test) {
+    auto passes = [&](int material) {
+        return material >= 0 && std::size_t(material) < scene.materials.size() && test(scene.materials[std::size_t(material)]);
     };
     if (mesh.triangles.empty()) return false;
-    if (mesh.triangleMaterials.empty()) return emissive(mesh.material);
+    if (mesh.triangleMaterials.empty()) return passes(mesh.material);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        if (emissive(triangleMaterial(mesh, t))) return true;
+        if (passes(triangleMaterial(mesh, t))) return true;
     return false;
+}
+
+} // namespace
+
+bool meshHasEmissiveTriangle(const Scene& scene, const Mesh& mesh) {
+    return anyTriangleMaterial(scene, mesh, [](const Material& m) { return emits(lightRadiance(m)); });
+}
+
+bool meshHasFrontOnlyTriangle(const Scene& scene, const Mesh& mesh) {
+    if (mesh.emissionSides != EmissionSides::Gltf) return mesh.emissionSides == EmissionSides::Front && !mesh.triangles.empty();
+    return anyTriangleMaterial(scene, mesh, [&mesh](const Material& m) { return emitsFrontOnly(mesh, m); });
 }
 
 bool lightPowersDiffer(const Scene& scene) {
@@ -156,12 +175,13 @@ bool lightPowersDiffer(const Scene& scene) {
         const glm::mat4 toWorld = transformMatrix(mesh.transform);
         for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
             const glm::uvec3& t = mesh.triangles[k];
-            const glm::vec3 L = radianceOf(triangleMaterial(mesh, k));
+            const int material = triangleMaterial(mesh, k);
+            const glm::vec3 L = radianceOf(material);
             if (!emits(L)) continue;
             glm::dvec3 p[3];
             for (int v = 0; v < 3; ++v) p[v] = glm::dvec3(toWorld * glm::vec4(mesh.positions.at(t[v]), 1.0f));
             const double area = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-            if (area > 0.0) add(triangleLightPower(L, area, mesh.emitsFrontOnly));
+            if (area > 0.0) add(triangleLightPower(L, area, emitsFrontOnly(mesh, scene.materials[std::size_t(material)])));
         }
     }
     bool distant = false;
@@ -186,14 +206,16 @@ LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::
     std::size_t first = 0;   // the mesh's first triangle in g.triangles (buildSceneGeometry's order)
     for (const Mesh& mesh : scene.meshes) {
         const std::size_t count = mesh.triangles.size();
-        const std::uint32_t frontOnly = mesh.emitsFrontOnly ? glsl::TRIANGLE_FRONT_ONLY : 0u;
-        for (std::size_t t = first; t < first + count && t < g.triangles.size(); ++t) list.triangleLightIndex[t] = frontOnly;
         {
             const glm::mat4 toWorld = transformMatrix(mesh.transform);
             for (std::size_t t = first; t < first + count && t < g.triangles.size(); ++t) {
                 // The triangle's own material (glTF primitives: w = 1 + material), else the mesh's.
                 const std::uint32_t own = g.triangles[t].vertices.w;
-                const glm::vec3 L = radiance.at(own != 0u ? std::size_t(own - 1u) : std::size_t(mesh.material));
+                const std::size_t material = own != 0u ? std::size_t(own - 1u) : std::size_t(mesh.material);
+                const bool oneSided = emitsFrontOnly(mesh, scene.materials.at(material));
+                const std::uint32_t frontOnly = oneSided ? glsl::TRIANGLE_FRONT_ONLY : 0u;
+                list.triangleLightIndex[t] = frontOnly;
+                const glm::vec3 L = radiance.at(material);
                 if (!emits(L)) continue;
                 glm::vec3 p[3];
                 for (int k = 0; k < 3; ++k)
@@ -201,9 +223,9 @@ LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::
                 const double area = 0.5 * glm::length(glm::cross(glm::dvec3(p[1] - p[0]), glm::dvec3(p[2] - p[0])));
                 if (!(area > 0.0)) continue;   // never hit, never sampled
                 list.triangles.push_back({glm::vec4(p[0], float(area)), glm::vec4(p[1], 0.0f), glm::vec4(p[2], 0.0f),
-                                          glm::vec4(L, mesh.emitsFrontOnly ? 1.0f : 0.0f)});
+                                          glm::vec4(L, oneSided ? 1.0f : 0.0f)});
                 list.triangleLightIndex[t] = std::uint32_t(list.triangles.size()) | frontOnly;
-                list.power.push_back(triangleLightPower(L, area, mesh.emitsFrontOnly));
+                list.power.push_back(triangleLightPower(L, area, oneSided));
             }
         }
         first += count;

@@ -41,6 +41,11 @@ int triangleMaterial(const Mesh& mesh, std::size_t triangle);
 // for a mesh of one material, a walk over the per-triangle materials otherwise.
 bool meshHasEmissiveTriangle(const Scene& scene, const Mesh& mesh);
 
+// Whether the mesh's triangles of `material` emit from their front alone (emission_sides front,
+// or gltf with a glTF material that is not doubleSided); any triangle of the mesh does so.
+bool emitsFrontOnly(const Mesh& mesh, const Material& material);
+bool meshHasFrontOnlyTriangle(const Scene& scene, const Mesh& mesh);
+
 // The radiance a material's surface has as a light: its emission, or 0 when an emission texture
 // varies it (one radiance per light; such surfaces count through BSDF hits alone, unbiased).
 glm::vec3 lightRadiance(const Material& material);
@@ -58,7 +63,7 @@ struct LightList {
     std::vector<double> power;                        // per light, in that order (distant: its share)
     std::vector<glm::vec4> aliasTable;                // over all lights, by power
     // Per triangle of SceneGeometry::triangles: 1 + its index in `triangles`, 0 if it is no light
-    // (not emissive, or no area), plus TRIANGLE_FRONT_ONLY when its mesh emits on the front alone.
+    // (not emissive, or no area), plus TRIANGLE_FRONT_ONLY when it emits on the front alone.
     std::vector<std::uint32_t> triangleLightIndex;
 };
 

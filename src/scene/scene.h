@@ -96,6 +96,7 @@ struct Material {
     std::string emissionTexture;     // multiplies the emitted radiance (sRGB-decoded colour)
     int emissionTextureIndex = -1;
     bool fromGltf = false;           // read from a mesh's glTF file, not the scene's "materials"
+    bool doubleSided = true;         // glTF doubleSided: false emits from the front alone under emission_sides gltf
     glm::vec3 radiance() const { return emission * emissionStrength; }
 };
 
@@ -114,6 +115,10 @@ struct Sphere {
     Transform transform;   // scale must be uniform: a sphere stays a sphere
 };
 
+// Which faces of a mesh's emissive triangles emit (emission_sides): both, the front (the side the
+// e01 × e02 normal faces) or, per triangle, what its glTF material's doubleSided says.
+enum class EmissionSides { Both, Front, Gltf };
+
 // A triangle mesh in its own (object) space, placed by `transform`. Normals and uvs are per
 // vertex and either empty or as many as positions.
 struct Mesh {
@@ -126,7 +131,7 @@ struct Mesh {
     // Per triangle (glTF materials): index into Scene::materials, -1 = `material`. Empty = all `material`.
     std::vector<int> triangleMaterials;
     Transform transform;
-    bool emitsFrontOnly = false;         // emission_sides front: only the e01 × e02 side emits
+    EmissionSides emissionSides = EmissionSides::Both;
 };
 
 // A light without a surface (pbrt-v4 PointLight, SpotLight, DistantLight). Point and spot lights
