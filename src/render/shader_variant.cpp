@@ -47,7 +47,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     for (const Mesh& m : scene.meshes) f.emissiveTriangles |= f.nee && meshHasEmissiveTriangle(scene, m);
     f.analyticLights = !scene.lights.empty();
     f.oneSidedEmitters = false;
-    for (const Mesh& m : scene.meshes) f.oneSidedEmitters |= m.emitsFrontOnly;
+    for (const Mesh& m : scene.meshes) f.oneSidedEmitters |= meshHasFrontOnlyTriangle(scene, m);
     return f;
 }
 

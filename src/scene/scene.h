@@ -99,6 +99,7 @@ struct Material {
     std::string specularTexture;     // multiplies f0 by its colour (sRGB-decoded like albedo_texture)
     int specularTextureIndex = -1;
     bool fromGltf = false;           // read from a mesh's glTF file, not the scene's "materials"
+    bool doubleSided = true;         // glTF doubleSided: false emits from the front alone under emission_sides gltf
     glm::vec3 radiance() const { return emission * emissionStrength; }
 };
 
@@ -131,6 +132,10 @@ struct MeshDisplacement {
     double milliseconds = 0.0;            // time the subdivision and displacement took on loading
 };
 
+// Which faces of a mesh's emissive triangles emit (emission_sides): both, the front (the side the
+// e01 × e02 normal faces) or, per triangle, what its glTF material's doubleSided says.
+enum class EmissionSides { Both, Front, Gltf };
+
 // A triangle mesh in its own (object) space, placed by `transform`. Normals and uvs are per
 // vertex and either empty or as many as positions.
 struct Mesh {
@@ -143,7 +148,7 @@ struct Mesh {
     // Per triangle (glTF materials): index into Scene::materials, -1 = `material`. Empty = all `material`.
     std::vector<int> triangleMaterials;
     Transform transform;
-    bool emitsFrontOnly = false;         // emission_sides front: only the e01 × e02 side emits
+    EmissionSides emissionSides = EmissionSides::Both;
     MeshDisplacement displacement;
 };
 

@@ -225,16 +225,19 @@ std::vector<double> readNumbers(const Json& o, const char* key, const JsonPath& 
     return out;
 }
 
-// "emission_sides": "front" (only the side the e01 x e02 normal faces emits) or "both" (default).
-bool readEmissionSides(const Json& o, const JsonPath& p) {
-    if (!o.contains("emission_sides")) return false;
+// "emission_sides": "both" (default), "front" or "gltf" (only for a mesh read from a glTF file).
+EmissionSides readEmissionSides(const Json& o, const JsonPath& p, bool fromGltfFile) {
+    if (!o.contains("emission_sides")) return EmissionSides::Both;
     const Json& v = o["emission_sides"];
-    const std::vector<std::string_view> names = {"both", "front"};
-    if (!v.is_string()) fail(p.key("emission_sides"), "expected a string (both, front), got " + typeOf(v));
+    const std::vector<std::string_view> names = {"both", "front", "gltf"};
+    if (!v.is_string()) fail(p.key("emission_sides"), "expected a string (both, front, gltf), got " + typeOf(v));
     const std::string& s = v.get_ref<const std::string&>();
-    if (s != "both" && s != "front")
+    if (std::find(names.begin(), names.end(), s) == names.end())
         fail(p.key("emission_sides"), "unknown value " + inQuotes(s) + suggestion(s, names, "allowed values"));
-    return s == "front";
+    if (s == "gltf" && !fromGltfFile)
+        fail(p.key("emission_sides"), "\"gltf\" takes the sides from a glTF file's materials (doubleSided); this mesh "
+                                      "is not read from a .gltf or .glb file");
+    return s == "front" ? EmissionSides::Front : s == "gltf" ? EmissionSides::Gltf : EmissionSides::Both;
 }
 
 // "displacement_texture" with its scale and subdivision level: the mesh is tessellated and displaced
@@ -293,7 +296,7 @@ Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sce
             fail(p.key("file"), e.what());
         }
         mesh.file = given;
-        mesh.emitsFrontOnly = readEmissionSides(o, p);
+        mesh.emissionSides = readEmissionSides(o, p, ext == ".gltf" || ext == ".glb");
         return mesh;
     }
     for (const char* required : {"positions", "indices"})
@@ -329,7 +332,7 @@ Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sce
                                    " numbers), got " + std::to_string(uv.size()) + " numbers");
         for (std::size_t i = 0; i < uv.size(); i += 2) mesh.uvs.emplace_back(float(uv[i]), float(uv[i + 1]));
     }
-    mesh.emitsFrontOnly = readEmissionSides(o, p);
+    mesh.emissionSides = readEmissionSides(o, p, false);
     return mesh;
 }
 

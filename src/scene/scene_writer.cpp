@@ -124,7 +124,8 @@ nlohmann::json meshJson(const Mesh& m, const std::string& material) {
     }
     o["transform"] = transformJson(m.transform);
     if (m.triangleMaterials.empty()) o["material"] = material;   // else the glTF file's materials
-    if (m.emitsFrontOnly) o["emission_sides"] = "front";
+    if (m.emissionSides == EmissionSides::Front) o["emission_sides"] = "front";
+    if (m.emissionSides == EmissionSides::Gltf) o["emission_sides"] = "gltf";
     if (!m.displacement.texture.empty()) {
         o["displacement_texture"] = m.displacement.texture;
         for (const DisplacementParamSpec& spec : displacementParameters())

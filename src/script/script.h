@@ -50,9 +50,12 @@
 //   split-a KEY VALUE      an override of side A (left); split-b KEY VALUE: of side B (right)
 //   split-divider X        where the sides meet, 0 to 1 of the image width
 //   ui-scale S             UI scale for projectors (0.5 to 4)
-//   key NAME               press a key in the window, through the window's own key handling: a
-//                          name of script/key_actions.h (page-down, page-up, space, r, f5, f9,
-//                          f12, f1, f2, ctrl+s, ctrl+=, ctrl+-, ctrl+0)
+//   key NAME [FRAMES]      press a key in the window, through the window's own key handling, and
+//                          hold it FRAMES frames (default 1): a name of script/key_actions.h
+//                          (page-down, page-up, space, r, f5, f9, f12, f1, f2, ctrl+s, ctrl+=, ctrl+-,
+//                          ctrl+0), or a camera key, which gives the viewport the keyboard and
+//                          acts while held (w, s forward/back, a, d left/right, q, e down/up;
+//                          left, right turn, up, down look up/down)
 //   lesson PATH            open a lesson in the Lesson panel;  lesson-step N: apply its step N
 //   self-test              run the self-test (furnace, χ² of the GLSL samplers), log the verdicts
 //   teach TAB              show the Teach window at lesson, classroom or self-test; off hides it

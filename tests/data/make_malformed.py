@@ -572,8 +572,10 @@ def key_cases(section, key, kind, rng):
         bad_value("key_type_typo", doc, path, '"shpere"', "unknown object type 'shpere'; did you mean 'sphere'?")
         bad_value("key_type_number", doc, path, "1", "expected a string (sphere, mesh), got number")
     elif kind == "string" and key == "emission_sides":
-        bad_value("key_emission_sides_unknown", doc, path, '"back"', "unknown value 'back' (allowed values: both, front)")
-        bad_value("key_emission_sides_number", doc, path, "1", "expected a string (both, front), got number")
+        bad_value("key_emission_sides_unknown", doc, path, '"back"', "unknown value 'back' (allowed values: both, front, gltf)")
+        bad_value("key_emission_sides_number", doc, path, "1", "expected a string (both, front, gltf), got number")
+        bad_value("key_emission_sides_gltf_inline", doc, path, '"gltf"',
+                  "\"gltf\" takes the sides from a glTF file's materials (doubleSided); this mesh is not read from a .gltf or .glb file")
     elif kind == "string" and key == "material":
         bad_value("key_material_unknown", doc, path, '"nobody"', "unknown material 'nobody'")
         bad_value("key_material_number", doc, path, "0", "expected a material name (a string), got number")

@@ -198,7 +198,9 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
     }
     if (c.name == "key") {   // pressed in the window loop, as a presenter's clicker would
         ui.pendingKey = a[0];
-        waitFrames_ = 2;
+        ui.pendingKeyFrames = a.size() > 1 ? int(num(1)) : 1;
+        waitFrames_ = ui.pendingKeyFrames + 1;   // held, then released
+
         return true;
     }
     if (c.name == "lesson") {

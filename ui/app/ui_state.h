@@ -39,6 +39,8 @@ struct UiState {
     bool showTeach = false;        // the Teach window is open (F1, --lesson, the script's lesson)
     int teachTab = -1;             // a tab to bring to the front next frame (0 lesson, 1 classroom, 2 self-test, 3 exercise)
     std::string pendingKey;        // a key the script presses next frame ("page-down", "page-up")
+    int pendingKeyFrames = 1;      // how many frames the script holds it down
+    bool focusViewport = false;    // the viewport takes the keyboard next frame (the script's camera keys)
     bool teachFocused = false;     // the Teach window had the keyboard last frame (arrows and Space step)
     LessonSession lesson;          // the Lesson panel's model; its step scripts run in the window loop
     PresenterState presenter;      // class mode and the presenter view (app/presenter.h)

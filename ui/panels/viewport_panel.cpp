@@ -8,6 +8,7 @@
 #include "app/scene_object.h"
 #include "panels/heat_legend.h"
 #include "app/view_geometry.h"
+#include "script/key_actions.h"
 
 #include <imgui.h>
 
@@ -64,13 +65,17 @@ void keyboardCamera(Viewer& viewer) {
     if (io.WantTextInput || io.KeyCtrl) return;
     const float dt = std::min(io.DeltaTime, 0.1f);
     const float step = viewer.cameraSpeed * dt * (io.KeyShift ? 4.0f : 1.0f);
-    // GLFW's key codes for letters are their upper-case ASCII codes (the backend indexes KeysDown by them).
-    auto down = [](int key) { return key >= 0 && key < int(IM_ARRAYSIZE(ImGui::GetIO().KeysDown)) && ImGui::IsKeyDown(key); };
-    const float forward = float(down('W')) - float(down('S'));
-    const float right = float(down('D')) - float(down('A'));
-    const float up = float(down('E')) - float(down('Q'));
-    const float yaw = float(down(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) - float(down(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)));
-    const float pitch = float(down(ImGui::GetKeyIndex(ImGuiKey_UpArrow))) - float(down(ImGui::GetKeyIndex(ImGuiKey_DownArrow)));
+    // The backend indexes KeysDown by GLFW key codes (script/key_actions.h).
+    auto down = [](CameraMotion m) {
+        const int key = cameraKey(m);
+        return key >= 0 && key < int(IM_ARRAYSIZE(ImGui::GetIO().KeysDown)) && ImGui::IsKeyDown(key);
+    };
+    auto axis = [&down](CameraMotion plus, CameraMotion minus) { return float(down(plus)) - float(down(minus)); };
+    const float forward = axis(CameraMotion::Forward, CameraMotion::Back);
+    const float right = axis(CameraMotion::Right, CameraMotion::Left);
+    const float up = axis(CameraMotion::Up, CameraMotion::Down);
+    const float yaw = axis(CameraMotion::TurnRight, CameraMotion::TurnLeft);
+    const float pitch = axis(CameraMotion::LookUp, CameraMotion::LookDown);
     if (forward == 0.0f && right == 0.0f && up == 0.0f && yaw == 0.0f && pitch == 0.0f) return;
     Camera& cam = viewer.scene().camera;
     moveCamera(cam, forward * step, right * step, up * step);
@@ -112,6 +117,8 @@ void tooltip(Viewer& viewer, const ImageRect& r) {
 
 void drawViewport(Viewer& viewer, UiState& ui) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
+    if (ui.focusViewport) ImGui::SetNextWindowFocus();
+    ui.focusViewport = false;
     const bool open = ImGui::Begin("Viewport", nullptr, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     if (!open) {
