@@ -48,6 +48,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, AppOptions& o) {
                  "pass completes or every 0.25 s, and tracing gets the time in between)");
     app.add_option("--exercise", o.exercise, "Run the tracer with a pupil's function for this exercise (raylab-exercise list)");
     app.add_option("--exercise-dir", o.exerciseDir, "Folder of the pupil's exercise files (default: the shipped stubs)");
+    app.add_flag("--class", o.classMode, "Class mode: answers and teacher's notes only on the presenter view (F2)");
+    app.add_flag("--presenter-window", o.presenterWindow,
+                 "The presenter view (lesson position, clock, notes and answers) in a second window, for the teacher's screen");
     app.add_option("--lesson", o.lessonPath, "Open a lesson (lessons/NN-topic.md) in the Teach window; its scene unless SCENE is given");
     app.add_option("--ui-scale", o.uiScale, "UI scale for projectors (default: as last time, from the layout file)")
         ->check(CLI::Range(double(kMinUiScale), double(kMaxUiScale)));

@@ -25,6 +25,8 @@ struct AppOptions {
     std::string lessonPath;
     std::string exercise;              // --exercise: a code-track exercise whose pupil file the tracer runs
     std::string exerciseDir;           // --exercise-dir: where the pupil's files are (default: the stubs')
+    bool classMode = false;            // --class: the teacher's notes only on the presenter view
+    bool presenterWindow = false;      // --presenter-window: the presenter view in a window of its own, shown at start
     float uiScale = 0.0f;              // 0: as the layout file says
     std::optional<ScriptRunner> script;
 };

@@ -2,6 +2,7 @@
 
 #include "app/convergence_watch.h"
 #include "panels/panels.h"
+#include "presenter_window.h"
 
 #include <glad/gl.h>
 #include <GLFW/glfw3.h>
@@ -28,6 +29,8 @@ ViewerLoop::ViewerLoop(GLFWwindow* window, WindowEvents& events, AppOptions& opt
         ui_.teachTab = 0;
         log_.info("lesson " + ui_.lesson.lesson().title);
     }
+    ui_.presenter.classMode = options_.classMode;
+    ui_.presenter.show = options_.presenterWindow;
     // Scripted runs take screenshots: no tooltip where the (unmoved) pointer happens to rest.
     if (options_.script) ui_.pixelTooltip = false;
     openFirstScene();
@@ -137,6 +140,7 @@ int ViewerLoop::run() {
         const double drawMs = drawFrame();
         const double swapStart = glfwGetTime();
         glfwSwapBuffers(window_);
+        drawPresenterWindow();
         const double t = glfwGetTime();
         if (frame >= options_.skipFrames) {
             times_.ms.push_back((t - last) * 1e3);
@@ -154,6 +158,29 @@ int ViewerLoop::run() {
     if (!options_.frameLog.empty()) times_.write(options_.frameLog);
     return exitCode_;
 }
+
+void ViewerLoop::drawPresenterWindow() {
+    ui_.presenter.ownWindow = options_.presenterWindow;
+    if (!options_.presenterWindow) return;
+    if (ui_.presenter.show && !presenter_) {
+        try {
+            presenter_ = std::make_unique<PresenterWindow>(window_);
+            log_.info("presenter window opened");
+        } catch (const std::exception& e) {
+            log_.error(std::string(e.what()) + ": the presenter view is a panel of this window (F2)");
+            options_.presenterWindow = ui_.presenter.ownWindow = false;
+            return;
+        }
+    }
+    if (presenter_ && (!ui_.presenter.show || presenter_->closeRequested())) {
+        presenter_.reset();
+        ui_.presenter.show = false;
+        log_.info("presenter window closed");
+    }
+    if (presenter_) presenter_->draw(ui_);
+}
+
+ViewerLoop::~ViewerLoop() = default;
 
 void ViewerLoop::printReport() const {
     times_.report();

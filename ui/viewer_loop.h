@@ -10,11 +10,14 @@
 #include "frame_times.h"
 #include "window_io.h"
 
+#include <memory>
 #include <optional>
 
 struct GLFWwindow;
 
 namespace raylab::ui {
+
+class PresenterWindow;
 
 class ViewerLoop {
 public:
@@ -22,6 +25,7 @@ public:
     ViewerLoop(GLFWwindow* window, WindowEvents& events, AppOptions& options, Log& log);
     // Until the window closes, the script ends or --frames are done; returns the exit status.
     int run();
+    ~ViewerLoop();
 
 private:
     void openFirstScene();
@@ -30,6 +34,7 @@ private:
     double waitWhileIdle(int frame); // the seconds spent waiting for input or a new image
     double drawFrame();              // the UI draw's milliseconds
     void printReport() const;
+    void drawPresenterWindow();      // --presenter-window: opens, draws or closes it as ui.presenter.show says
 
     GLFWwindow* window_;
     WindowEvents& events_;
@@ -42,6 +47,7 @@ private:
     std::optional<ScriptRunner> stepScript_;   // the lesson step being applied
     FramePacer pacer_;
     FrameTimes times_;
+    std::unique_ptr<PresenterWindow> presenter_;
     int exitCode_ = 0;
 };
 

@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace raylab::ui {
@@ -14,9 +15,12 @@ namespace {
 static_assert(keycode::kSpace == GLFW_KEY_SPACE && keycode::kMinus == GLFW_KEY_MINUS && keycode::k0 == GLFW_KEY_0 &&
               keycode::kEqual == GLFW_KEY_EQUAL && keycode::kR == GLFW_KEY_R && keycode::kS == GLFW_KEY_S &&
               keycode::kPageUp == GLFW_KEY_PAGE_UP && keycode::kPageDown == GLFW_KEY_PAGE_DOWN &&
-              keycode::kF1 == GLFW_KEY_F1 && keycode::kF5 == GLFW_KEY_F5 && keycode::kF9 == GLFW_KEY_F9 &&
+              keycode::kF1 == GLFW_KEY_F1 && keycode::kF2 == GLFW_KEY_F2 && keycode::kF5 == GLFW_KEY_F5 && keycode::kF9 == GLFW_KEY_F9 &&
               keycode::kF12 == GLFW_KEY_F12 && keycode::kKpSubtract == GLFW_KEY_KP_SUBTRACT &&
-              keycode::kKpAdd == GLFW_KEY_KP_ADD && keycode::kLeftControl == GLFW_KEY_LEFT_CONTROL);
+              keycode::kKpAdd == GLFW_KEY_KP_ADD && keycode::kLeftControl == GLFW_KEY_LEFT_CONTROL &&
+              keycode::kW == GLFW_KEY_W && keycode::kA == GLFW_KEY_A && keycode::kD == GLFW_KEY_D &&
+              keycode::kQ == GLFW_KEY_Q && keycode::kE == GLFW_KEY_E && keycode::kRight == GLFW_KEY_RIGHT &&
+              keycode::kLeft == GLFW_KEY_LEFT && keycode::kDown == GLFW_KEY_DOWN && keycode::kUp == GLFW_KEY_UP);
 
 WindowEvents& events(GLFWwindow* window) { return *static_cast<WindowEvents*>(glfwGetWindowUserPointer(window)); }
 
@@ -58,25 +62,36 @@ void WindowHost::dropFile(const std::string& path) {
 
 void ScriptKeys::update(UiState& ui, Log& log) {
     ImGuiIO& io = ImGui::GetIO();
-    if (down_) {
-        io.KeysDown[down_->key] = false;
-        if (down_->ctrl == Ctrl::With) {
-            io.KeysDown[keycode::kLeftControl] = false;
-            io.KeyCtrl = false;
+    auto hold = [&io](int key, bool ctrl, bool down) {
+        io.KeysDown[key] = down;
+        if (ctrl) {
+            io.KeysDown[keycode::kLeftControl] = down;
+            io.KeyCtrl = down;
         }
-        down_ = nullptr;
+    };
+    if (key_ != keycode::kNone && --framesLeft_ <= 0) {
+        hold(key_, ctrl_, false);
+        key_ = keycode::kNone;
     }
     if (ui.pendingKey.empty()) return;
+    if (key_ != keycode::kNone) hold(key_, ctrl_, false);
+    key_ = keycode::kNone;
     for (const KeyBinding& b : kKeyBindings)
-        if (b.name == ui.pendingKey) down_ = &b;
-    if (!down_) {
+        if (b.name == ui.pendingKey) {
+            key_ = b.key;
+            ctrl_ = b.ctrl == Ctrl::With;
+        }
+    for (const CameraKey& k : kCameraKeys)
+        if (k.name == ui.pendingKey) {
+            key_ = k.key;
+            ctrl_ = false;
+            ui.focusViewport = true;
+        }
+    if (key_ == keycode::kNone) {
         log.error("script: no key code for key '" + ui.pendingKey + "'");
     } else {
-        io.KeysDown[down_->key] = true;
-        if (down_->ctrl == Ctrl::With) {
-            io.KeysDown[keycode::kLeftControl] = true;
-            io.KeyCtrl = true;
-        }
+        hold(key_, ctrl_, true);
+        framesLeft_ = std::max(ui.pendingKeyFrames, 1);
     }
     ui.pendingKey.clear();
 }

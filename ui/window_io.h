@@ -36,14 +36,17 @@ private:
     GLFWwindow* window_;
 };
 
-// The script's `key` (ui.pendingKey): its key, with Ctrl when the action wants it, down for one
-// frame and up the next, as GLFW's key events would leave them. Call before ImGui's NewFrame.
+// The script's `key` (ui.pendingKey): its key, with Ctrl when the action wants it, down for
+// ui.pendingKeyFrames frames and up the next, as GLFW's key events would leave them; a camera key
+// first gives the viewport the keyboard, as a click into it would. Call before ImGui's NewFrame.
 class ScriptKeys {
 public:
     void update(UiState& ui, Log& log);
 
 private:
-    const KeyBinding* down_ = nullptr;
+    int key_ = keycode::kNone;   // held down by the script
+    bool ctrl_ = false;          // with Ctrl
+    int framesLeft_ = 0;
 };
 
 // The finished frame (before the swap) to a PNG; logs where the traced image lies in it.

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes scenes/textures/bricks.ppm: a 128 x 128 running-bond brick pattern (binary PPM, sRGB
-8-bit), and bricks_normal.ppm next to it: a tangent-space normal map of the mortar grooves
-((n + 1) / 2, green = +v), so the textured scene needs no downloaded image. Deterministic: a fixed
+8-bit), and next to it bricks_normal.ppm, a tangent-space normal map of the mortar grooves
+((n + 1) / 2, green = +v), and bricks_height.ppm, their height (255 on a brick, 0 in the mortar) for
+displacement_texture, so the textured scenes need no downloaded image. Deterministic: a fixed
 seed varies the brick colours a little. Usage: python3 scenes/textures/make_bricks.py [OUT]"""
 import math
 import os
@@ -55,3 +56,9 @@ with open(os.path.join(os.path.dirname(out), "bricks_normal.ppm"), "wb") as f:
             length = math.sqrt(sum(c * c for c in n))
             row += bytes(int(round((c / length * 0.5 + 0.5) * 255)) for c in n)
         f.write(row)
+
+
+with open(os.path.join(os.path.dirname(out), "bricks_height.ppm"), "wb") as f:
+    f.write(b"P6\n%d %d\n255\n" % (W, H))
+    for y in range(H):
+        f.write(bytes(int(255 * height(x, y)) for x in range(W) for _ in range(3)))

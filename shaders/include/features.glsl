@@ -24,6 +24,7 @@
     RL_FEATURE(RAYLAB_TEXTURE_ROUGHNESS, roughnessTextures, textures, "roughness-tex")           \
     RL_FEATURE(RAYLAB_TEXTURE_METALLIC, metallicTextures, textures, "metallic-tex")              \
     RL_FEATURE(RAYLAB_TEXTURE_EMISSION, emissionTextures, textures, "emission-tex")              \
+    RL_FEATURE(RAYLAB_TEXTURE_SPECULAR, specularTextures, textures, "specular-tex")              \
     RL_FEATURE(RAYLAB_TEXTURE_WRAP_MODES, textureWrapModes, textures, "wrap-modes")              \
     RL_FEATURE(RAYLAB_EMISSIVE_TRIANGLES, emissiveTriangles, always, "triangle-lights")          \
     RL_FEATURE(RAYLAB_LIGHT_POWER_SELECTION, lightPowerSelection, always, "light-power")         \
@@ -44,6 +45,7 @@
 #define RAYLAB_TEXTURE_ROUGHNESS 1        // some material has a roughness texture
 #define RAYLAB_TEXTURE_METALLIC 1         // metallic mixed per hit (render/gpu_scene.h metallicOnGpu)
 #define RAYLAB_TEXTURE_EMISSION 1         // some material has an emission texture
+#define RAYLAB_TEXTURE_SPECULAR 1         // some material has a specular (f0) texture
 #define RAYLAB_TEXTURE_WRAP_MODES 1       // some texture clamps or mirrors instead of repeating (glTF)
 #define RAYLAB_EMISSIVE_TRIANGLES 1       // with NEE: some mesh emits, its triangles are lights
 #define RAYLAB_LIGHT_POWER_SELECTION 1    // with NEE: lights differ in power, picked by power

@@ -5,6 +5,7 @@
 //   RAYLAB_TEXTURE_ROUGHNESS    roughness × the texture's green channel
 //   RAYLAB_TEXTURE_METALLIC     metallic (factor × the texture's blue channel) on the GPU
 //   RAYLAB_TEXTURE_EMISSION     emitted radiance × the texture's colour
+//   RAYLAB_TEXTURE_SPECULAR     f0 × the texture's colour (before the metallic mix)
 #ifndef RAYLAB_MATERIAL_TEXTURES_GLSL
 #define RAYLAB_MATERIAL_TEXTURES_GLSL
 #include "features.glsl"
@@ -43,6 +44,10 @@ void applyMaterialTextures(inout Hit hit, vec3 rayDir, float coneWidth, inout Bs
         bsdf.albedo *= sampleTexture(tex, hit.uv, lod).rgb;
 #endif
     }
+#if RAYLAB_TEXTURE_SPECULAR
+    uint specularTexture = materials[hit.material].specularTexture;
+    if (specularTexture > 0u) bsdf.f0 *= sampleHitTexture(specularTexture, hit, rayDir, coneWidth).rgb;
+#endif
 #if RAYLAB_TEXTURE_METALLIC
     // The metallic workflow (scenes/FORMAT.md): the textured albedo is the base colour.
     float metallic = materials[hit.material].metallic;

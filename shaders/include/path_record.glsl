@@ -105,7 +105,7 @@ void recordLight(int bounce, int light, vec3 dir, float dist, vec3 Le, vec3 fCos
     recordPut(bounce, PR_LIGHT_DIR, vec4(dir, dist));
     recordPut(bounce, PR_LIGHT_TERMS, vec4(lightPdf, bsdfPdfValue, w, float(light)));
     recordPut(bounce, PR_LIGHT_F, vec4(fCos, cosTheta));
-    recordPut(bounce, PR_LIGHT_LE, vec4(Le, 0.0f));
+    recordPut(bounce, PR_LIGHT_LE, vec4(Le, misPdf));
 }
 
 // The BSDF sample taken at this bounce (fCos = f·|cosθ| as the sampler used it; for delta lobes

@@ -22,7 +22,7 @@ const int PR_LIGHT = 12;          // light sample f·Le·w/pdf (no throughput) r
 const int PR_LIGHT_DIR = 13;      // shadow ray direction xyz, w: distance to the light's surface (-1: the sky)
 const int PR_LIGHT_TERMS = 14;    // x: light pdf, y: BSDF pdf of that direction, z: MIS weight, w: light index
 const int PR_LIGHT_F = 15;        // f·|cosθ| towards the light rgb, w: |cosθ|
-const int PR_LIGHT_LE = 16;       // the light's radiance rgb
+const int PR_LIGHT_LE = 16;       // the light's radiance rgb; w its density as MIS weighs it
 const int PR_COUNTED = 17;        // 1 when the term counts toward the value, else 0 (the viewer's bounce
                                   // views keep some bounces only): x emission (or stage albedo), y light sample
 const int PR_STAGE_ALBEDO = 18;   // render.stage primary: the first hit's flat albedo rgb (that stage's whole

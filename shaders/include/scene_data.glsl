@@ -32,7 +32,7 @@ layout(std430, binding = BINDING_TRIANGLE_LIGHTS) readonly buffer TriangleLightB
 #endif
 #if RAYLAB_EMISSIVE_TRIANGLES || RAYLAB_ONE_SIDED_EMITTERS
 // Per triangle (global index): 1 + its index in triangleLights[], 0 when it is no light; with
-// TRIANGLE_FRONT_ONLY set when its mesh emits on the front alone.
+// TRIANGLE_FRONT_ONLY set when it emits on the front alone.
 layout(std430, binding = BINDING_TRIANGLE_LIGHT_INDEX) readonly buffer TriangleLightIndexBuffer { uint triangleLightIndex[]; };
 #endif
 #if RAYLAB_ANALYTIC_LIGHTS

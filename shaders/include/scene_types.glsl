@@ -23,7 +23,7 @@ struct GpuMaterial {
     uint emissionTexture;      // emitted radiance × the texture's colour
     float metallic;            // mixed per hit (render/gpu_scene.h metallicOnGpu), else 0: baked in
     float normalScale;         // normal map x and y scale (glTF normalTexture.scale)
-    uint unused;
+    uint specularTexture;      // f0 × the texture's colour
 };
 
 // An emissive sphere, for next-event estimation.
@@ -42,8 +42,8 @@ struct GpuTriangleLight {
     vec4 radiance;   // rgb emitted radiance, a 1 = only the (p1 − p0) × (p2 − p0) side emits
 };
 
-// Flag in the per-triangle light index (scene_data.glsl triangleLightIndex): the triangle's mesh
-// emits on its front (e01 × e02) side only.
+// Flag in the per-triangle light index (scene_data.glsl triangleLightIndex): the triangle emits
+// on its front (e01 × e02) side only.
 const uint TRIANGLE_FRONT_ONLY = 0x80000000u;
 
 RL_NAMESPACE_END

@@ -1,11 +1,12 @@
 // raylab-meshgen: writes a displaced, subdivided surface as a Wavefront OBJ, for BVH benchmarks
 // and large-mesh scenes without downloading models. The surface is a square grid over [-1, 1]²
-// in x–z, lifted by a sum of sines (heights within ±0.15), with per-vertex normals and uvs:
-// n × n quads, 2n² triangles. With --report it also builds the mesh's BVH and prints the build
-// time, the SAH cost, and the boxes and triangles tested per ray (the shader's traversal run on the
-// CPU for 10^5 rays from above at random angles: a machine-independent cost; a benchmark figure,
-// nothing passes or fails).
+// in x–z, lifted along its normal by a sum of sines (heights within ±0.15) by mesh/displacement.h,
+// which also gives the per-vertex normals, with uvs: n × n quads, 2n² triangles. With --report it
+// also builds the mesh's BVH and prints the build time, the SAH cost, and the boxes and triangles
+// tested per ray (the shader's traversal run on the CPU for 10^5 rays from above at random angles:
+// a machine-independent cost; a benchmark figure, nothing passes or fails).
 #include "accel/cpu_traversal.h"
+#include "mesh/displacement.h"
 
 #include <CLI/CLI.hpp>
 
@@ -20,13 +21,6 @@ namespace {
 float height(float x, float z) {
     return 0.08f * std::sin(7.0f * x + 1.3f) * std::cos(5.0f * z) + 0.05f * std::sin(23.0f * x * z) +
            0.02f * std::cos(41.0f * x - 37.0f * z);
-}
-
-glm::vec3 normalAt(float x, float z) {
-    const float e = 1e-3f;   // central differences of the height field
-    const float dx = (height(x + e, z) - height(x - e, z)) / (2 * e);
-    const float dz = (height(x, z + e) - height(x, z - e)) / (2 * e);
-    return glm::normalize(glm::vec3(-dx, 1.0f, -dz));
 }
 
 } // namespace
@@ -52,8 +46,8 @@ int main(int argc, char** argv) {
     for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n; ++i) {
             const float x = -1.0f + 2.0f * float(i) / float(n), z = -1.0f + 2.0f * float(j) / float(n);
-            mesh.positions.emplace_back(x, height(x, z), z);
-            mesh.normals.push_back(normalAt(x, z));
+            mesh.positions.emplace_back(x, 0.0f, z);
+            mesh.normals.emplace_back(0.0f, 1.0f, 0.0f);
             mesh.uvs.emplace_back(float(i) / float(n), float(j) / float(n));
         }
     const auto at = [n](int i, int j) { return unsigned(j * (n + 1) + i); };
@@ -62,6 +56,7 @@ int main(int argc, char** argv) {
             mesh.triangles.emplace_back(at(i, j), at(i, j + 1), at(i + 1, j));
             mesh.triangles.emplace_back(at(i + 1, j), at(i, j + 1), at(i + 1, j + 1));
         }
+    raylab::displaceAlongNormals(mesh, [&mesh](std::size_t v) { return height(mesh.positions[v].x, mesh.positions[v].z); });
     if (!out.empty()) {
         std::ofstream f(out);
         if (!f) {

@@ -172,7 +172,8 @@ def image(tree, texture):
 # the dielectric Fresnel of IOR 1.5 (Specular 0.5) rescaled to [0, 1], against raylab's Schlick
 # (1 - cos)^5. The "GGX" distribution, not the multiscatter default: raylab is single scattering.
 # Metallic workflow (textured): f0 = mix(f0, base, m), albedo = base (1 - m), base = albedo x
-# albedo texture, m = metallic x the metallic texture's blue; roughness x the roughness texture's
+# albedo texture, m = metallic x the metallic texture's blue, f0 x the specular texture's colour
+# before the mix; roughness x the roughness texture's
 # green; a tangent-space normal map through a Normal Map node (Strength = raylab's normal scale,
 # equal at 1).
 # Roughness: Cycles squares the Roughness input (alpha = Roughness^2) as raylab does with its
@@ -183,7 +184,7 @@ def image(tree, texture):
 # 1/eta^2 radiance scaling across glass does not change camera-path images.
 def material(name, albedo, emission, f0=(0.0, 0.0, 0.0, 1.0), roughness=1.0, transmission=0.0, ior=1.5,
              metallic=0.0, albedo_map=None, roughness_map=None, metallic_map=None, normal_map=None,
-             normal_scale=1.0, emission_map=None):
+             normal_scale=1.0, emission_map=None, specular_map=None):
     m = bpy.data.materials.new(name)
     m.use_nodes = True
     tree = m.node_tree
@@ -195,6 +196,8 @@ def material(name, albedo, emission, f0=(0.0, 0.0, 0.0, 1.0), roughness=1.0, tra
         roughness = smath(tree, "MULTIPLY", roughness, channel(tree, image(tree, roughness_map), "Y"))
     elif sharp:
         roughness = 0.0
+    if specular_map is not None:
+        f0 = vmath(tree, "MULTIPLY", f0[:3], image(tree, specular_map))
     if metallic_map is not None:
         metallic = smath(tree, "MULTIPLY", metallic, channel(tree, image(tree, metallic_map), "Z"))
     if is_socket(metallic) or metallic > 0.0:
@@ -480,7 +483,7 @@ def render_if_asked():
 
 bool hasTexture(const Material& m) {
     return m.albedoTextureIndex >= 0 || m.normalTextureIndex >= 0 || m.roughnessTextureIndex >= 0 ||
-           m.metallicTextureIndex >= 0 || m.emissionTextureIndex >= 0;
+           m.metallicTextureIndex >= 0 || m.emissionTextureIndex >= 0 || m.specularTextureIndex >= 0;
 }
 
 const char* wrapName(TextureWrap w) {
@@ -545,7 +548,8 @@ std::string blenderScript(const Scene& scene, const fs::path& embeddedDir) {
                                                         {"roughness_map", m.roughnessTextureIndex},
                                                         {"metallic_map", m.metallicTextureIndex},
                                                         {"normal_map", m.normalTextureIndex},
-                                                        {"emission_map", m.emissionTextureIndex}};
+                                                        {"emission_map", m.emissionTextureIndex},
+                                                        {"specular_map", m.specularTextureIndex}};
             for (const auto& [key, index] : maps)
                 if (index >= 0) py << ", " << key << "=" << mapArgument(scene, embeddedDir, index);
             if (m.normalTextureIndex >= 0) py << ", normal_scale=" << num(m.normalScale);
@@ -629,7 +633,8 @@ std::vector<std::string> blenderExportApproximations(const Scene& scene) {
         // Schlick's F is the same at every angle only where f0 = 1; a mirror (the tracer's delta
         // lobe) reflects at h = n, where every Fresnel curve gives f0.
         const bool mirror = glsl::ggxIsDelta(glsl::ggxAlpha(m.roughness)) && m.roughnessTextureIndex < 0;
-        layered |= ((f0Max > 0.0f && f0Min < 1.0f) || m.metallicTextureIndex >= 0) && !mirror && m.transmission < 1.0f;
+        const bool f0Varies = m.metallicTextureIndex >= 0 || m.specularTextureIndex >= 0;
+        layered |= ((f0Max > 0.0f && f0Min < 1.0f) || f0Varies) && !mirror && m.transmission < 1.0f;
         textures |= hasTexture(m);
         normalMaps |= m.normalTextureIndex >= 0;
     }

@@ -6,16 +6,26 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace raylab {
 
 struct CheckResult {
+    CheckResult() = default;
+    CheckResult(std::string check_, bool pass_, std::string numbers_, std::string message_ = {}, std::string image_ = {})
+        : check(std::move(check_)), pass(pass_), numbers(std::move(numbers_)), message(std::move(message_)), image(std::move(image_)) {}
+
     std::string check;     // the check's name in the manifest
     bool pass = false;
     std::string numbers;   // what was measured, e.g. "0 of 212 rays wrong, max |Δt| 3e-7"
     std::string message;   // on a failure: what is wrong and, where known, which mistake it is
     std::string image;     // a picture the check wrote (the render check's difference image), or ""
+    // The render check: the pixel of `scene` (top-left origin) the path inspector was run on, where
+    // the two renders differ most; -1 when it was not (the check passed).
+    int pixelX = -1;
+    int pixelY = -1;
+    std::string scene;
 };
 
 // What a check gets: the probe compiled with the pupil's file, and the file itself for checks

@@ -1,6 +1,7 @@
 #include "inspect/path_export.h"
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -37,6 +38,7 @@ nlohmann::json bounceJson(const BounceRecord& b) {
         nlohmann::json l;
         l["status"] = lightStatusName(b.lightStatus);
         l["light"] = b.lightIndex;
+        l["light_name"] = b.lightName;
         l["direction"] = vec(b.lightDirection);
         l["distance"] = b.lightDistance;
         l["radiance"] = vec(b.lightRadiance);
@@ -44,6 +46,8 @@ nlohmann::json bounceJson(const BounceRecord& b) {
         l["cos_theta"] = b.lightCosTheta;
         l["pdf"] = b.lightPdf;
         l["bsdf_pdf"] = b.lightBsdfPdf;
+        if (b.lightDelta) l["mis_pdf"] = "delta";
+        else l["mis_pdf"] = b.lightMisPdf;
         l["mis_weight"] = b.lightMisWeight;
         l["contribution"] = vec(b.lightContribution);
         l["added"] = vec(b.lightAdded());
@@ -142,6 +146,10 @@ std::vector<PathRecord> pathsFromJson(const nlohmann::json& json) {
                 const nlohmann::json& l = jb["light_sample"];
                 b.lightStatus = lightStatusFromName(l.at("status").get<std::string>());
                 b.lightIndex = l.at("light").get<int>();
+                b.lightName = l.value("light_name", "");
+                const nlohmann::json& mis = l.value("mis_pdf", nlohmann::json(0.0f));
+                b.lightDelta = mis.is_string() && mis.get<std::string>() == "delta";
+                b.lightMisPdf = b.lightDelta ? std::numeric_limits<float>::max() : mis.get<float>();
                 b.lightDirection = readVec(l.at("direction"));
                 b.lightDistance = l.at("distance").get<float>();
                 b.lightRadiance = readVec(l.at("radiance"));
@@ -185,7 +193,7 @@ std::string pathsToCsv(const std::vector<PathRecord>& paths) {
          "beta_before_r,beta_before_g,beta_before_b,beta_after_r,beta_after_g,beta_after_b,"
          "emission_r,emission_g,emission_b,emission_mis_weight,stage_albedo_r,stage_albedo_g,stage_albedo_b,"
          "emission_counted,light_counted,"
-         "light_status,light,light_tx,light_ty,light_tz,light_pdf,light_bsdf_pdf,light_mis_weight,"
+         "light_status,light,light_name,light_tx,light_ty,light_tz,light_pdf,light_mis_pdf,light_bsdf_pdf,light_mis_weight,"
          "light_r,light_g,light_b,rr_probability,rr_outcome,value_r,value_g,value_b\n";
     for (std::size_t i = 0; i < paths.size(); ++i) {
         const PathRecord& p = paths[i];
@@ -207,9 +215,12 @@ std::string pathsToCsv(const std::vector<PathRecord>& paths) {
             o << ',' << b.emissionWeight;
             v3(b.stageAlbedo);
             o << ',' << int(b.emissionCounted) << ',' << int(b.lightCounted);
-            o << ',' << lightStatusName(b.lightStatus) << ',' << b.lightIndex;
+            o << ',' << lightStatusName(b.lightStatus) << ',' << b.lightIndex << ',' << b.lightName;
             v3(b.shadowTarget(1.0f));
-            o << ',' << b.lightPdf << ',' << b.lightBsdfPdf << ',' << b.lightMisWeight;
+            o << ',' << b.lightPdf;
+            if (b.lightDelta) o << ",delta";
+            else o << ',' << b.lightMisPdf;
+            o << ',' << b.lightBsdfPdf << ',' << b.lightMisWeight;
             v3(b.lightContribution);
             o << ',' << b.rrProbability << ',' << b.rrOutcome;
             v3(p.value);

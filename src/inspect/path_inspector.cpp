@@ -1,11 +1,13 @@
 #include "inspect/path_inspector.h"
 
+#include "inspect/light_names.h"
 #include "render/debug_buffers.h"
 #include "shaders/include/bindings.glsl"
 #include "shaders/include/path_record_layout.glsl"
 
 #include <glad/gl.h>
 
+#include <limits>
 #include <stdexcept>
 
 namespace raylab {
@@ -53,6 +55,7 @@ BounceRecord decodeBounce(const glm::vec4* s) {
         b.lightFCos = xyz(s[PR_LIGHT_F]);
         b.lightCosTheta = s[PR_LIGHT_F].w;
         b.lightRadiance = xyz(s[PR_LIGHT_LE]);
+        b.lightMisPdf = s[PR_LIGHT_LE].w;
     }
     b.lobe = int(s[PR_SAMPLED].w);
     b.sampled = b.lobe >= 0;
@@ -74,8 +77,9 @@ BounceRecord decodeBounce(const glm::vec4* s) {
 
 } // namespace
 
-TracerOptions PathInspector::inspectorOptions() {
+TracerOptions PathInspector::inspectorOptions(ShaderDefines extraDefines) {
     TracerOptions o;
+    o.extraDefines = std::move(extraDefines);
     o.extraDefines.emplace_back(tracerDefine("RAYLAB_INSPECT_PATHS"), "1");
     o.extraDefines.emplace_back(tracerDefine("RAYLAB_DEBUG_VIEWS"), "1");   // the bounce views' filter
     return o;
@@ -87,8 +91,9 @@ void PathInspector::setBounceFilter(BounceFilter filter, int bounce) {
     filterBounce_ = bounce;
 }
 
-PathInspector::PathInspector(int maxRecords)
-    : tracer_(std::make_unique<PathTracer>(inspectorOptions())), maxRecords_(maxRecords) {
+PathInspector::PathInspector(int maxRecords, ShaderDefines extraDefines)
+    : extraDefines_(std::move(extraDefines)), tracer_(std::make_unique<PathTracer>(inspectorOptions(extraDefines_))),
+      maxRecords_(maxRecords) {
     if (maxRecords < 1) throw std::invalid_argument("PathInspector: maxRecords must be at least 1");
 }
 
@@ -96,6 +101,7 @@ PathInspector::~PathInspector() { glDeleteBuffers(2, buffers_); }
 
 void PathInspector::setScene(const Scene& scene) {
     tracer_->setScene(scene);
+    lights_ = scene.lights;
     hasScene_ = true;
 }
 
@@ -131,6 +137,7 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
     glGetNamedBufferSubData(buffers_[0], 0, GLsizeiptr(bounces.size() * sizeof(glm::vec4)), bounces.data());
     glGetNamedBufferSubData(buffers_[1], 0, GLsizeiptr(paths.size() * sizeof(glm::vec4)), paths.data());
 
+    const LightNumbering numbering{tracer_->gpuScene().lightCount(), tracer_->gpuScene().triangleLightCount(), lights_};
     std::vector<PathRecord> out(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i) {
         const glm::vec4* q = &paths[std::size_t(i) * glsl::PR_PATH_VEC4S];
@@ -147,6 +154,13 @@ std::vector<PathRecord> PathInspector::record(int x, int y, int count, std::uint
             // The GPU traced camera-relative positions (render/camera_relative.h).
             bounce.origin = glm::vec3(glm::dvec3(bounce.origin) + tracer_->origin());
             bounce.position = glm::vec3(glm::dvec3(bounce.position) + tracer_->origin());
+            if (bounce.lightStatus != LightStatus::None) {
+                bounce.lightName = lightSampleName(numbering, bounce.lightIndex);
+                const Light* l = sceneLight(numbering, bounce.lightIndex);
+                bounce.lightDelta = l && isDeltaLight(*l);
+                // A distant light lies at infinity (its shadow ray runs to FLOAT_MAX): no end point, as the sky.
+                if (bounce.lightDistance >= std::numeric_limits<float>::max()) bounce.lightDistance = -1.0f;
+            }
             r.bounces.push_back(bounce);
         }
     }

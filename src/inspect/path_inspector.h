@@ -28,8 +28,11 @@ enum class BounceFilter {
 
 class PathInspector {
 public:
-    // Records at most maxRecords bounces a path (the rest are counted as truncated).
-    explicit PathInspector(int maxRecords = 64);
+    // Records at most maxRecords bounces a path (the rest are counted as truncated); extraDefines
+    // are compiled in as into the traced image's tracer (a code-track exercise's file define), so
+    // the paths are the ones that tracer takes.
+    static constexpr int kDefaultMaxRecords = 64;
+    explicit PathInspector(int maxRecords = kDefaultMaxRecords, ShaderDefines extraDefines = {});
     ~PathInspector();
     PathInspector(const PathInspector&) = delete;
     PathInspector& operator=(const PathInspector&) = delete;
@@ -46,16 +49,19 @@ public:
 
     const PathTracer& tracer() const { return *tracer_; }
     int maxRecords() const { return maxRecords_; }
+    const ShaderDefines& extraDefines() const { return extraDefines_; }
     // The defines that turn the recorder on, with the bounce views' filter (for tests that render
     // with the variant; it traces the beauty image until told another view).
-    static TracerOptions inspectorOptions();
+    static TracerOptions inspectorOptions(ShaderDefines extraDefines = {});
 
 private:
+    ShaderDefines extraDefines_;
     std::unique_ptr<PathTracer> tracer_;
     int maxRecords_;
     BounceFilter filter_ = BounceFilter::All;
     int filterBounce_ = 0;
     bool hasScene_ = false;
+    std::vector<Light> lights_;      // the scene's, to name the lights a sample picks
     unsigned buffers_[2] = {0, 0};   // bindings 20 (bounces) and 21 (paths)
     std::size_t capacity_ = 0;       // paths the buffers hold
 };

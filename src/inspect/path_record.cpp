@@ -2,6 +2,9 @@
 
 #include "shaders/include/bsdf_sample.glsl"
 
+#include <iomanip>
+#include <sstream>
+
 namespace raylab {
 
 std::string lobeName(int lobe) {
@@ -13,6 +16,13 @@ std::string lobeName(int lobe) {
     case glsl::LOBE_GLASS_TRANSMIT: return "glass transmit";
     default: return "-";
     }
+}
+
+std::string lightMisPdfText(const BounceRecord& b) {
+    if (b.lightDelta) return "delta (never hit by BSDF rays)";
+    std::ostringstream o;
+    o << std::setprecision(4) << b.lightMisPdf;
+    return o.str();
 }
 
 std::string lightStatusName(LightStatus s) {

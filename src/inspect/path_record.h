@@ -46,14 +46,17 @@ struct BounceRecord {
     glm::vec3 throughputBefore{0.0f};
     // Next-event estimation from here.
     LightStatus lightStatus = LightStatus::None;
-    int lightIndex = -1;           // light sampled: spheres, then triangles; -1 the sky
+    int lightIndex = -1;           // light sampled: spheres, then triangles, then Scene::lights; -1 the sky
+    std::string lightName;         // inspect/light_names.h: "sky", "sphere light 0", "spot 1", ...
+    bool lightDelta = false;       // a point, spot or disc-less distant light: no BSDF ray can hit it
     glm::vec3 lightDirection{0.0f};
-    float lightDistance = -1.0f;   // to the light's surface; -1: the sky (no end point)
+    float lightDistance = -1.0f;   // to the light's surface or point; -1: the sky or a distant light (no end point)
     glm::vec3 lightRadiance{0.0f};
     glm::vec3 lightFCos{0.0f};     // f·|cosθ| towards the light
     float lightCosTheta = 0.0f;
     float lightPdf = 0.0f;         // the density it was drawn with (light choice included)
     float lightBsdfPdf = 0.0f;     // the BSDF's density for that direction (MIS)
+    float lightMisPdf = 0.0f;      // the light's density as MIS weighs it (a delta light: FLOAT_MAX, w = 1)
     float lightMisWeight = 0.0f;
     glm::vec3 lightContribution{0.0f};   // f·|cosθ|·Le·w/pdf, throughput not included
     // The BSDF sample that continues the path (when sampled).
@@ -80,6 +83,10 @@ struct BounceRecord {
         return position + lightDirection * (lightDistance >= 0.0f ? lightDistance : skyLength);
     }
 };
+
+// The light sample's density as MIS sees it: "delta (never hit by BSDF rays)" for a delta light,
+// else the number.
+std::string lightMisPdfText(const BounceRecord& b);
 
 struct PathRecord {
     int x = 0;                     // image pixel, top-left origin

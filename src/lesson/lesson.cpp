@@ -1,6 +1,6 @@
 #include "lesson/lesson.h"
 
-#include <md4c.h>
+#include "lesson/markdown_dialect.h"
 
 #include <algorithm>
 #include <cctype>
@@ -44,6 +44,7 @@ struct Collector {
     int quoteDepth = 0;
     std::optional<size_t> sink; // the block that text goes to
     std::optional<size_t> item; // the open top-level list item
+    std::vector<std::pair<LessonPicture, std::optional<size_t>>> pictures;   // with the block that locates a source md4c copied
 
     int lineOf(const char* p) const {
         if (p < begin || p >= end) return 0;
@@ -119,8 +120,13 @@ std::string_view spanMarker(MD_SPANTYPE type) {
     }
 }
 
-int enterSpan(MD_SPANTYPE type, void*, void* user) {
-    static_cast<Collector*>(user)->append(spanMarker(type));
+int enterSpan(MD_SPANTYPE type, void* detail, void* user) {
+    auto& c = *static_cast<Collector*>(user);
+    if (type == MD_SPAN_IMG) {
+        const MD_ATTRIBUTE& src = static_cast<MD_SPAN_IMG_DETAIL*>(detail)->src;
+        c.pictures.push_back({{c.lineOf(src.text), std::string(src.text, src.size)}, c.sink});
+    }
+    c.append(spanMarker(type));
     return 0;
 }
 
@@ -266,6 +272,10 @@ std::filesystem::path Lesson::resolve(const std::string& path) const {
     return (root / path).lexically_normal();
 }
 
+std::filesystem::path Lesson::picturePath(const std::string& source) const {
+    return (file.parent_path() / source).lexically_normal();
+}
+
 Lesson parseLesson(std::string_view text, const std::filesystem::path& file, const std::filesystem::path& root) {
     const std::string name = file.string();
     auto fail = [&](int line, const std::string& what) -> LessonError {
@@ -281,13 +291,7 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
     c.lineStarts.push_back(0);
     for (size_t i = 0; i < text.size(); ++i)
         if (text[i] == '\n') c.lineStarts.push_back(i + 1);
-    MD_PARSER parser{};
-    parser.flags = MD_FLAG_TABLES | MD_FLAG_STRIKETHROUGH | MD_FLAG_NOHTML;
-    parser.enter_block = enterBlock;
-    parser.leave_block = leaveBlock;
-    parser.enter_span = enterSpan;
-    parser.leave_span = leaveSpan;
-    parser.text = onText;
+    const MD_PARSER parser = lessonMarkdownParser(enterBlock, leaveBlock, enterSpan, leaveSpan, onText);
     if (md_parse(text.data(), MD_SIZE(text.size()), &parser, &c) != 0) throw fail(0, "md4c could not parse the file");
 
     Lesson lesson;
@@ -469,6 +473,10 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
         }
     }
     closeSection(int(lines.size()) + 1);
+    for (auto& [picture, block] : c.pictures) {
+        if (picture.line == 0 && block) picture.line = c.blocks[*block].line;
+        lesson.pictures.push_back(std::move(picture));
+    }
 
     if (section == Section::BeforeTitle) throw fail(1, "no '# TITLE' heading");
     if (lesson.scene.empty()) throw fail(titleLine, "no 'Scene: PATH' line under the title");

@@ -33,6 +33,12 @@ struct LessonStep {
     std::vector<ScriptCommand> partScript(int part) const;
 };
 
+// A picture of the lesson's Markdown, `![alt](SOURCE)`.
+struct LessonPicture {
+    int line = 0;                         // the line it is written on
+    std::string source;                   // SOURCE as written: a file relative to the lesson's folder
+};
+
 struct Lesson {
     std::filesystem::path file;           // the lesson's Markdown file
     std::filesystem::path root;           // the repository root: the folder above the lesson's folder
@@ -52,9 +58,12 @@ struct Lesson {
     std::string goingFurther;             // "## Going further" Markdown (optional): notebooks, reading
     std::string teacherNotes;             // "## Teacher's notes" Markdown (optional)
     std::string sources;                  // "## Sources" Markdown (optional)
+    std::vector<LessonPicture> pictures;  // every picture, in file order (the files may be missing)
 
     // A path as a script's `open` gives it, resolved like the scene: relative to root.
     std::filesystem::path resolve(const std::string& path) const;
+    // A picture's file: its source relative to the lesson's folder.
+    std::filesystem::path picturePath(const std::string& source) const;
 };
 
 // The levels a "Level:" line may name.

@@ -1,6 +1,6 @@
 #include "lesson/markdown_blocks.h"
 
-#include <md4c.h>
+#include "lesson/markdown_dialect.h"
 
 #include <algorithm>
 
@@ -17,6 +17,7 @@ struct Builder {
     bool inHead = false;
     bool inCell = false;
     bool itemFresh = false;             // the open list item has no paragraph yet
+    int imageDepth = 0;                 // inside an image's alt text
 
     MarkdownBlock& open(MarkdownBlock::Kind kind) {
         MarkdownBlock b;
@@ -43,8 +44,15 @@ struct Builder {
             if (rank(t) > rank(s)) s = t;
         return s;
     }
+    // A picture is a block of its own: it takes over an empty paragraph, or follows the text so far.
+    void openImage(std::string source) {
+        if (current && current->kind == MarkdownBlock::Paragraph && current->spans.empty()) current->kind = MarkdownBlock::Image;
+        else open(MarkdownBlock::Image);
+        current->source = std::move(source);
+    }
     void text(std::string_view t) {
         if (!current) return;
+        if (current->kind == MarkdownBlock::Image && imageDepth == 0) open(MarkdownBlock::Paragraph);   // text after a picture
         if (current->kind == MarkdownBlock::Code) {
             current->code.append(t);
             return;
@@ -129,13 +137,19 @@ MarkdownSpan::Style spanStyle(MD_SPANTYPE type) {
     }
 }
 
-int enterSpan(MD_SPANTYPE type, void*, void* user) {
-    static_cast<Builder*>(user)->styles.push_back(spanStyle(type));
+int enterSpan(MD_SPANTYPE type, void* detail, void* user) {
+    auto& b = *static_cast<Builder*>(user);
+    if (type == MD_SPAN_IMG && b.imageDepth++ == 0) {
+        const MD_ATTRIBUTE& src = static_cast<MD_SPAN_IMG_DETAIL*>(detail)->src;
+        b.openImage(std::string(src.text, src.size));
+    }
+    b.styles.push_back(spanStyle(type));
     return 0;
 }
 
-int leaveSpan(MD_SPANTYPE, void*, void* user) {
+int leaveSpan(MD_SPANTYPE type, void*, void* user) {
     auto& b = *static_cast<Builder*>(user);
+    if (type == MD_SPAN_IMG) --b.imageDepth;
     if (!b.styles.empty()) b.styles.pop_back();
     return 0;
 }
@@ -169,13 +183,7 @@ std::string MarkdownBlock::plainText() const {
 
 std::vector<MarkdownBlock> parseMarkdownBlocks(std::string_view markdown) {
     Builder b;
-    MD_PARSER parser{};
-    parser.flags = MD_FLAG_TABLES | MD_FLAG_STRIKETHROUGH | MD_FLAG_NOHTML;
-    parser.enter_block = enterBlock;
-    parser.leave_block = leaveBlock;
-    parser.enter_span = enterSpan;
-    parser.leave_span = leaveSpan;
-    parser.text = onText;
+    const MD_PARSER parser = lessonMarkdownParser(enterBlock, leaveBlock, enterSpan, leaveSpan, onText);
     // `current` points into the vector: open() re-points it after every append.
     md_parse(markdown.data(), MD_SIZE(markdown.size()), &parser, &b);
     return std::move(b.blocks);

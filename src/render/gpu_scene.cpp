@@ -41,7 +41,8 @@ void uploadBuffer(GLuint buffer, std::vector<T> data) {
 } // namespace
 
 bool metallicOnGpu(const Material& m) {
-    return m.metallicTextureIndex >= 0 || (m.metallic > 0.0f && m.albedoTextureIndex >= 0);
+    return m.metallicTextureIndex >= 0 ||
+           (m.metallic > 0.0f && (m.albedoTextureIndex >= 0 || m.specularTextureIndex >= 0));
 }
 
 GpuScene::GpuScene() {
@@ -107,7 +108,8 @@ void GpuScene::uploadMaterials(const Scene& scene) {
                              glm::vec4(f0, m.ior), unsigned(m.albedoTextureIndex + 1),
                              unsigned(m.normalTextureIndex + 1), unsigned(m.roughnessTextureIndex + 1),
                              unsigned(m.metallicTextureIndex + 1), unsigned(m.emissionTextureIndex + 1),
-                             metallicOnGpu(m) ? m.metallic : 0.0f, m.normalScale, 0u});
+                             metallicOnGpu(m) ? m.metallic : 0.0f, m.normalScale,
+                             unsigned(m.specularTextureIndex + 1)});
     }
     materialRadiance_.clear();
     // Emission varying over a texture is not a light for next-event estimation (the light list

@@ -13,14 +13,6 @@ double luminance(glm::vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.
 
 bool emits(glm::vec3 radiance) { return std::max({radiance.r, radiance.g, radiance.b}) > 0.0f; }
 
-// Radius of the sphere around the top level's root box: what a distant light illuminates.
-double sceneRadius(const SceneGeometry& g) {
-    if (g.topNodes.empty()) return 1.0;
-    const glm::dvec3 extent = glm::dvec3(g.topNodes[0].boundsMax) - glm::dvec3(g.topNodes[0].boundsMin);
-    const double r = 0.5 * glm::length(extent);
-    return std::isfinite(r) && r > 0.0 ? r : 1.0;
-}
-
 } // namespace
 
 double sphereLightPower(glm::vec3 radiance, float radius) {
@@ -49,13 +41,26 @@ glm::vec3 lightIntensity(const Light& l) {
     return glm::vec3(float(double(l.power) / solid));
 }
 
-double analyticLightPower(const Light& l, double sceneRadius) {
+double analyticLightPower(const Light& l) {
     switch (l.type) {
     case Light::Type::Point: return 4.0 * luminance(lightIntensity(l));
     case Light::Type::Spot: return 2.0 * luminance(lightIntensity(l)) * spotConeFactor(l);
-    case Light::Type::Distant: return sceneRadius * sceneRadius * luminance(l.irradiance);
+    case Light::Type::Distant: return luminance(l.irradiance);
     }
     return 0.0;
+}
+
+void shareDistantLights(std::vector<double>& weights, const std::vector<bool>& distant) {
+    double others = 0.0, irradiance = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        (distant[i] ? irradiance : others) += weights[i];
+        count += distant[i] ? 1 : 0;
+    }
+    if (!(others > 0.0) || !(irradiance > 0.0)) return;
+    const double scale = others * double(count) / irradiance;
+    for (std::size_t i = 0; i < weights.size(); ++i)
+        if (distant[i]) weights[i] *= scale;
 }
 
 glsl::GpuAnalyticLight gpuAnalyticLight(const Light& l) {
@@ -121,16 +126,35 @@ int triangleMaterial(const Mesh& mesh, std::size_t triangle) {
     return own >= 0 ? own : mesh.material;
 }
 
-bool meshHasEmissiveTriangle(const Scene& scene, const Mesh& mesh) {
-    auto emissive = [&](int material) {
-        return material >= 0 && std::size_t(material) < scene.materials.size() &&
-               emits(lightRadiance(scene.materials[std::size_t(material)]));
+bool emitsFrontOnly(const Mesh& mesh, const Material& material) {
+    return mesh.emissionSides == EmissionSides::Front || (mesh.emissionSides == EmissionSides::Gltf && !material.doubleSided);
+}
+
+namespace {
+
+// Whether the material of any of the mesh's triangles passes `test`: one test for a mesh of one
+// material, a walk over the per-triangle materials otherwise.
+template <class Test>
+bool anyTriangleMaterial(const Scene& scene, const Mesh& mesh, Test test) {
+    auto passes = [&](int material) {
+        return material >= 0 && std::size_t(material) < scene.materials.size() && test(scene.materials[std::size_t(material)]);
     };
     if (mesh.triangles.empty()) return false;
-    if (mesh.triangleMaterials.empty()) return emissive(mesh.material);
+    if (mesh.triangleMaterials.empty()) return passes(mesh.material);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        if (emissive(triangleMaterial(mesh, t))) return true;
+        if (passes(triangleMaterial(mesh, t))) return true;
     return false;
+}
+
+} // namespace
+
+bool meshHasEmissiveTriangle(const Scene& scene, const Mesh& mesh) {
+    return anyTriangleMaterial(scene, mesh, [](const Material& m) { return emits(lightRadiance(m)); });
+}
+
+bool meshHasFrontOnlyTriangle(const Scene& scene, const Mesh& mesh) {
+    if (mesh.emissionSides != EmissionSides::Gltf) return mesh.emissionSides == EmissionSides::Front && !mesh.triangles.empty();
+    return anyTriangleMaterial(scene, mesh, [&mesh](const Material& m) { return emitsFrontOnly(mesh, m); });
 }
 
 bool lightPowersDiffer(const Scene& scene) {
@@ -151,21 +175,22 @@ bool lightPowersDiffer(const Scene& scene) {
         const glm::mat4 toWorld = transformMatrix(mesh.transform);
         for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
             const glm::uvec3& t = mesh.triangles[k];
-            const glm::vec3 L = radianceOf(triangleMaterial(mesh, k));
+            const int material = triangleMaterial(mesh, k);
+            const glm::vec3 L = radianceOf(material);
             if (!emits(L)) continue;
             glm::dvec3 p[3];
             for (int v = 0; v < 3; ++v) p[v] = glm::dvec3(toWorld * glm::vec4(mesh.positions.at(t[v]), 1.0f));
             const double area = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-            if (area > 0.0) add(triangleLightPower(L, area, mesh.emitsFrontOnly));
+            if (area > 0.0) add(triangleLightPower(L, area, emitsFrontOnly(mesh, scene.materials[std::size_t(material)])));
         }
     }
     bool distant = false;
     for (const Light& l : scene.lights) {
         if (l.type == Light::Type::Distant) distant = true;
-        else add(analyticLightPower(l, 0.0));
+        else add(analyticLightPower(l));
     }
     const std::size_t lights = scene.lights.size() + (hi > 0.0 ? 1 : 0);
-    if (distant && lights > 1) return true;   // its power depends on the scene's extent (buildLightList)
+    if (distant && lights > 1) return true;   // its share depends on the count of lights (shareDistantLights)
     return hi > lo * 1.05;
 }
 
@@ -181,14 +206,16 @@ LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::
     std::size_t first = 0;   // the mesh's first triangle in g.triangles (buildSceneGeometry's order)
     for (const Mesh& mesh : scene.meshes) {
         const std::size_t count = mesh.triangles.size();
-        const std::uint32_t frontOnly = mesh.emitsFrontOnly ? glsl::TRIANGLE_FRONT_ONLY : 0u;
-        for (std::size_t t = first; t < first + count && t < g.triangles.size(); ++t) list.triangleLightIndex[t] = frontOnly;
         {
             const glm::mat4 toWorld = transformMatrix(mesh.transform);
             for (std::size_t t = first; t < first + count && t < g.triangles.size(); ++t) {
                 // The triangle's own material (glTF primitives: w = 1 + material), else the mesh's.
                 const std::uint32_t own = g.triangles[t].vertices.w;
-                const glm::vec3 L = radiance.at(own != 0u ? std::size_t(own - 1u) : std::size_t(mesh.material));
+                const std::size_t material = own != 0u ? std::size_t(own - 1u) : std::size_t(mesh.material);
+                const bool oneSided = emitsFrontOnly(mesh, scene.materials.at(material));
+                const std::uint32_t frontOnly = oneSided ? glsl::TRIANGLE_FRONT_ONLY : 0u;
+                list.triangleLightIndex[t] = frontOnly;
+                const glm::vec3 L = radiance.at(material);
                 if (!emits(L)) continue;
                 glm::vec3 p[3];
                 for (int k = 0; k < 3; ++k)
@@ -196,21 +223,23 @@ LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::
                 const double area = 0.5 * glm::length(glm::cross(glm::dvec3(p[1] - p[0]), glm::dvec3(p[2] - p[0])));
                 if (!(area > 0.0)) continue;   // never hit, never sampled
                 list.triangles.push_back({glm::vec4(p[0], float(area)), glm::vec4(p[1], 0.0f), glm::vec4(p[2], 0.0f),
-                                          glm::vec4(L, mesh.emitsFrontOnly ? 1.0f : 0.0f)});
+                                          glm::vec4(L, oneSided ? 1.0f : 0.0f)});
                 list.triangleLightIndex[t] = std::uint32_t(list.triangles.size()) | frontOnly;
-                list.power.push_back(triangleLightPower(L, area, mesh.emitsFrontOnly));
+                list.power.push_back(triangleLightPower(L, area, oneSided));
             }
         }
         first += count;
     }
     if (first != g.triangles.size()) throw std::logic_error("light list: scene and geometry disagree on triangles");
-    const double radius = sceneRadius(g);
+    std::vector<bool> distant(list.power.size(), false);
     for (const Light& l : scene.lights) {
-        const double power = analyticLightPower(l, radius);
+        const double power = analyticLightPower(l);
         if (!(power > 0.0)) continue;   // emits nothing: never sampled, as a black emitter
         list.analytic.push_back(gpuAnalyticLight(l));
         list.power.push_back(power);
+        distant.push_back(l.type == Light::Type::Distant);
     }
+    shareDistantLights(list.power, distant);
     list.aliasTable = buildAliasTable(list.power);
     return list;
 }

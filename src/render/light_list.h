@@ -22,9 +22,15 @@ double triangleLightPower(glm::vec3 radiance, double area, bool frontOnly = fals
 // A point or spot light's intensity in W/sr: `intensity`, or `power` spread over its cone
 // (pbrt-v4 PointLight/SpotLight::Phi inverted: Φ = 4πI, Φ = 2πI(1 − (cos inner + cos outer)/2)).
 glm::vec3 lightIntensity(const Light& light);
-// The light's power by pbrt-v4's Phi, divided by π like the emitters' above; a distant light
-// lights the scene's bounding sphere of radius sceneRadius (DistantLight::Phi: π r² E).
-double analyticLightPower(const Light& light, double sceneRadius);
+// A point or spot light's power by pbrt-v4's Phi, divided by π like the emitters' above; a
+// distant light's is the luminance of its irradiance, a weight among distant lights alone.
+double analyticLightPower(const Light& light);
+// Turns the distant lights' weights (analyticLightPower) into a share of the light choice that
+// does not grow with the scene's size: n distant lights get n/(n + 1) of it, split by irradiance,
+// beside 1/(n + 1) for all other lights, as pbrt-v4's BVHLightSampler gives each infinite light
+// the share of all bounded ones (pbrt-v4 §12.6.3); DistantLight::Phi's π r² E, r the scene's
+// bounding radius, would hand a sun over a 1000-radius floor sphere nearly every pick.
+void shareDistantLights(std::vector<double>& weights, const std::vector<bool>& distant);
 // The GPU record of a light (positions as given: the caller makes them camera-relative).
 glsl::GpuAnalyticLight gpuAnalyticLight(const Light& light);
 
@@ -34,6 +40,11 @@ int triangleMaterial(const Mesh& mesh, std::size_t triangle);
 // Whether any triangle of the mesh is a light (its material's lightRadiance is above 0): one test
 // for a mesh of one material, a walk over the per-triangle materials otherwise.
 bool meshHasEmissiveTriangle(const Scene& scene, const Mesh& mesh);
+
+// Whether the mesh's triangles of `material` emit from their front alone (emission_sides front,
+// or gltf with a glTF material that is not doubleSided); any triangle of the mesh does so.
+bool emitsFrontOnly(const Mesh& mesh, const Material& material);
+bool meshHasFrontOnlyTriangle(const Scene& scene, const Mesh& mesh);
 
 // The radiance a material's surface has as a light: its emission, or 0 when an emission texture
 // varies it (one radiance per light; such surfaces count through BSDF hits alone, unbiased).
@@ -49,10 +60,10 @@ struct LightList {
     std::vector<glsl::GpuLight> spheres;              // lights 0 … S−1
     std::vector<glsl::GpuTriangleLight> triangles;    // lights S … S+T−1
     std::vector<glsl::GpuAnalyticLight> analytic;     // lights S+T … (Scene::lights)
-    std::vector<double> power;                        // per light, in that order
+    std::vector<double> power;                        // per light, in that order (distant: its share)
     std::vector<glm::vec4> aliasTable;                // over all lights, by power
     // Per triangle of SceneGeometry::triangles: 1 + its index in `triangles`, 0 if it is no light
-    // (not emissive, or no area), plus TRIANGLE_FRONT_ONLY when its mesh emits on the front alone.
+    // (not emissive, or no area), plus TRIANGLE_FRONT_ONLY when it emits on the front alone.
     std::vector<std::uint32_t> triangleLightIndex;
 };
 

@@ -33,6 +33,13 @@ SceneStats sceneStats(const Scene& scene, const SceneGeometry& geometry) {
     s.emissiveSpheres = lights.spheres.size();
     s.emissiveTriangles = lights.triangles.size();
     s.analyticLights = lights.analytic.size();
+    for (const Mesh& m : scene.meshes) {
+        if (m.displacement.texture.empty()) continue;
+        ++s.displacedMeshes;
+        s.displacedTrianglesBefore += m.displacement.trianglesBefore;
+        s.displacedTriangles += m.triangles.size();
+        s.displacementMs += m.displacement.milliseconds;
+    }
     return s;
 }
 
@@ -49,6 +56,13 @@ std::string formatBytes(std::size_t bytes) {
     return buf;
 }
 
+std::string describeDisplacement(const SceneStats& s) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "scene: displacement: %zu meshes, %zu -> %zu triangles, %.1f ms on loading",
+                  s.displacedMeshes, s.displacedTrianglesBefore, s.displacedTriangles, s.displacementMs);
+    return buf;
+}
+
 std::string describeSceneStats(const SceneStats& s) {
     char buf[512];
     std::snprintf(buf, sizeof buf,
@@ -58,7 +72,9 @@ std::string describeSceneStats(const SceneStats& s) {
                   s.objects, s.spheres, s.instances, s.triangles, s.materials, s.topBvhNodes, s.meshBvhNodes,
                   s.bvhDepth, s.textures, formatBytes(s.textureBytes).c_str(), s.emissiveSpheres,
                   s.emissiveTriangles, s.analyticLights);
-    return buf;
+    std::string out = buf;
+    if (s.displacedMeshes > 0) out += "\n" + describeDisplacement(s);
+    return out;
 }
 
 } // namespace raylab

@@ -26,11 +26,19 @@ struct SceneStats {
     std::size_t emissiveSpheres = 0;     // spheres with an emissive material
     std::size_t emissiveTriangles = 0;   // triangles with an emissive material (their own or the mesh's) and area
     std::size_t analyticLights = 0;      // point, spot and distant lights that emit
+    // Meshes tessellated and displaced on loading (scene.h MeshDisplacement):
+    std::size_t displacedMeshes = 0;
+    std::size_t displacedTrianglesBefore = 0;   // their triangles as given
+    std::size_t displacedTriangles = 0;         // after subdivision
+    double displacementMs = 0.0;                // the time it took, on loading
 };
 
 SceneStats sceneStats(const Scene& scene, const SceneGeometry& geometry);
-// Two lines for reports: "objects ... | BVH ... | textures ... | lights ...".
+// Two lines for reports: "objects ... | BVH ... | textures ... | lights ...", and a third with the
+// displacement's cost when some mesh is displaced.
 std::string describeSceneStats(const SceneStats& stats);
+// "scene: displacement: 2 meshes, 4 -> 1024 triangles, 1.2 ms on loading".
+std::string describeDisplacement(const SceneStats& stats);
 // 1536 → "1.5 KiB".
 std::string formatBytes(std::size_t bytes);
 

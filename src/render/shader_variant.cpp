@@ -23,11 +23,12 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.generalBsdf = false;
     for (const Material& m : scene.materials)
         f.generalBsdf |= m.transmission > 0.0f || std::max({m.f0.r, m.f0.g, m.f0.b}) > 0.0f || m.metallic > 0.0f;
-    f.roughnessTextures = f.metallicTextures = f.emissionTextures = f.textureWrapModes = false;
+    f.roughnessTextures = f.metallicTextures = f.emissionTextures = f.specularTextures = f.textureWrapModes = false;
     for (const Material& m : scene.materials) {
         f.roughnessTextures |= m.roughnessTextureIndex >= 0;
         f.metallicTextures |= metallicOnGpu(m);
         f.emissionTextures |= m.emissionTextureIndex >= 0;
+        f.specularTextures |= m.specularTextureIndex >= 0;
     }
     for (const Texture& t : scene.textures)
         f.textureWrapModes |= t.wrapU != TextureWrap::Repeat || t.wrapV != TextureWrap::Repeat;
@@ -46,7 +47,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     for (const Mesh& m : scene.meshes) f.emissiveTriangles |= f.nee && meshHasEmissiveTriangle(scene, m);
     f.analyticLights = !scene.lights.empty();
     f.oneSidedEmitters = false;
-    for (const Mesh& m : scene.meshes) f.oneSidedEmitters |= m.emitsFrontOnly;
+    for (const Mesh& m : scene.meshes) f.oneSidedEmitters |= meshHasFrontOnlyTriangle(scene, m);
     return f;
 }
 

@@ -34,6 +34,7 @@ public:
     void clear();
     // Defines added to every variant from now on (a code-track exercise's slot); clear() to apply.
     void setExtraDefines(ShaderDefines defines) { extraDefines_ = std::move(defines); }
+    const ShaderDefines& extraDefines() const { return extraDefines_; }
 
 private:
     ShaderDefines extraDefines_;

@@ -328,6 +328,7 @@ struct MaterialReader {
         if (emits && g.emissiveTexture.index >= 0)
             m.emissionTextureIndex = texture(g.emissiveTexture.index, g.emissiveTexture.texCoord, false,
                                              mp + ".emissiveTexture");
+        m.doubleSided = g.doubleSided;
         if (g.alphaMode != "OPAQUE" && !g.alphaMode.empty())
             asset.warnings.push_back(name + ": " + mp + ".alphaMode: " + g.alphaMode +
                                      " is ignored; the material is opaque");

@@ -3,7 +3,7 @@
 // every triangle primitive of the default scene (or the first scene), with the node hierarchy's
 // transforms applied to positions and normals; POSITION, NORMAL and TEXCOORD_0 attributes;
 // 8-, 16- and 32-bit indices; and the materials (pbrMetallicRoughness, normal and emissive
-// textures, KHR_materials_emissive_strength) mapped onto raylab's material with their images
+// textures, KHR_materials_emissive_strength, doubleSided) mapped onto raylab's material with their images
 // (external files, data URIs, GLB buffer views) — the mapping is tabled in scenes/FORMAT.md.
 // Not read: animations, skins, morph targets, sparse accessors, alpha (ignored with a warning),
 // occlusion textures, texture coordinate sets other than 0.

@@ -413,8 +413,25 @@ std::vector<std::string_view> lightKeysOf(Light::Type type) {
     return {};
 }
 
+const std::vector<DisplacementParamSpec>& displacementParameters() {
+    static const std::vector<DisplacementParamSpec> table = [] {
+        std::vector<DisplacementParamSpec> t;
+        auto add = [&t](ValueSpec v, auto ref) { t.push_back(makeField<MeshDisplacement>(std::move(v), ref)); };
+        add(spec("displacement_scale", ParamType::Float, kAny, kAny, "object units",
+                 "With displacement_texture: a vertex moves along its normal by this x the texture's value (negative: inwards).",
+                 Trigger::ReloadScene),
+            [](auto& d) -> auto& { return d.scale; });
+        add(spec("displacement_subdivision", ParamType::Int, atLeast(0), atMost(8), "levels",
+                 "With displacement_texture: each triangle is split into 4^n before displacing.", Trigger::ReloadScene),
+            [](auto& d) -> auto& { return d.subdivision; });
+        return t;
+    }();
+    return table;
+}
+
 const std::vector<std::string_view>& meshKeys() {
-    static const std::vector<std::string_view> keys = {"file", "positions", "indices", "normals", "uvs", "emission_sides"};
+    static const std::vector<std::string_view> keys = {"file", "positions", "indices", "normals", "uvs", "emission_sides",
+                                                       "displacement_texture"};
     return keys;
 }
 
@@ -425,6 +442,7 @@ const std::vector<TextureSlot>& textureSlots() {
         {"roughness_texture", &Material::roughnessTexture, &Material::roughnessTextureIndex, true},
         {"metallic_texture", &Material::metallicTexture, &Material::metallicTextureIndex, true},
         {"emission_texture", &Material::emissionTexture, &Material::emissionTextureIndex, false},
+        {"specular_texture", &Material::specularTexture, &Material::specularTextureIndex, false},
     };
     return slots;
 }
@@ -440,7 +458,8 @@ const std::vector<std::string_view>& materialFileKeys() {
 
 const std::vector<PathKey>& pathKeys() {
     static const std::vector<PathKey> keys = [] {
-        std::vector<PathKey> k = {{PathScope::Scene, "sky.map"}, {PathScope::Object, "file"}};
+        std::vector<PathKey> k = {{PathScope::Scene, "sky.map"}, {PathScope::Object, "file"},
+                                  {PathScope::Object, "displacement_texture"}};
         for (const TextureSlot& s : textureSlots()) k.push_back({PathScope::Material, s.key});
         return k;
     }();

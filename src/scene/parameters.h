@@ -82,6 +82,7 @@ using MaterialParamSpec = FieldSpec<Material>;
 using SphereParamSpec = FieldSpec<Sphere>;
 using TransformParamSpec = FieldSpec<Transform>;
 using LightParamSpec = FieldSpec<Light>;
+using DisplacementParamSpec = FieldSpec<MeshDisplacement>;
 
 // camera.*, render.*, sky.* in file-format order.
 const std::vector<ParamSpec>& sceneParameters();
@@ -97,7 +98,10 @@ const std::vector<TransformParamSpec>& transformParameters();
 const std::vector<LightParamSpec>& lightParameters();
 // The keys (names) a light of that type takes besides "type".
 std::vector<std::string_view> lightKeysOf(Light::Type type);
-// Keys of a mesh object that the loader reads itself (arrays and the OBJ path), for FORMAT.md.
+// Keys of a mesh object's displacement besides its texture (displacement_scale, displacement_subdivision).
+const std::vector<DisplacementParamSpec>& displacementParameters();
+// Keys of a mesh object that the loader reads itself (arrays, the OBJ path, the displacement
+// texture), for FORMAT.md.
 const std::vector<std::string_view>& meshKeys();
 // Keys of a material that name files (image textures), read by the loader itself.
 const std::vector<std::string_view>& materialFileKeys();

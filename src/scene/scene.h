@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -95,7 +96,10 @@ struct Material {
     int metallicTextureIndex = -1;
     std::string emissionTexture;     // multiplies the emitted radiance (sRGB-decoded colour)
     int emissionTextureIndex = -1;
+    std::string specularTexture;     // multiplies f0 by its colour (sRGB-decoded like albedo_texture)
+    int specularTextureIndex = -1;
     bool fromGltf = false;           // read from a mesh's glTF file, not the scene's "materials"
+    bool doubleSided = true;         // glTF doubleSided: false emits from the front alone under emission_sides gltf
     glm::vec3 radiance() const { return emission * emissionStrength; }
 };
 
@@ -114,6 +118,24 @@ struct Sphere {
     Transform transform;   // scale must be uniform: a sphere stays a sphere
 };
 
+struct Mesh;
+
+// A mesh tessellated and displaced on loading (src/mesh/displacement.h), so the BVH holds the true
+// surface: each triangle split into 4^subdivision, each vertex moved along its normal by scale × the
+// texture's red channel at its uv, the normals then recomputed.
+struct MeshDisplacement {
+    std::string texture;                  // image as written in the scene ("" = none), linear data
+    float scale = 1.0f;                   // object-space units per unit of texture value
+    int subdivision = 0;                  // levels of 1-to-4 triangle splits, [0, 8]
+    std::shared_ptr<const Mesh> source;   // an inline mesh as written, before displacement (for the writer)
+    std::size_t trianglesBefore = 0;      // triangles before subdivision
+    double milliseconds = 0.0;            // time the subdivision and displacement took on loading
+};
+
+// Which faces of a mesh's emissive triangles emit (emission_sides): both, the front (the side the
+// e01 × e02 normal faces) or, per triangle, what its glTF material's doubleSided says.
+enum class EmissionSides { Both, Front, Gltf };
+
 // A triangle mesh in its own (object) space, placed by `transform`. Normals and uvs are per
 // vertex and either empty or as many as positions.
 struct Mesh {
@@ -126,7 +148,8 @@ struct Mesh {
     // Per triangle (glTF materials): index into Scene::materials, -1 = `material`. Empty = all `material`.
     std::vector<int> triangleMaterials;
     Transform transform;
-    bool emitsFrontOnly = false;         // emission_sides front: only the e01 × e02 side emits
+    EmissionSides emissionSides = EmissionSides::Both;
+    MeshDisplacement displacement;
 };
 
 // A light without a surface (pbrt-v4 PointLight, SpotLight, DistantLight). Point and spot lights

@@ -1,5 +1,6 @@
 #include "scene/scene_builder.h"
 
+#include "mesh/displacement.h"
 #include "scene/gltf_loader.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_error.h"
@@ -112,14 +113,32 @@ struct PendingMesh {
 
 } // namespace
 
-void readTextureSlot(const TextureSlot& slot, const Json& v, const JsonPath& p, const std::filesystem::path& sceneDir,
-                     std::vector<Texture>& textures, Material& material) {
+// A key naming an image file: a non-empty string, relative to the scene file's directory.
+std::string imageKey(const Json& v, const JsonPath& p) {
     if (!v.is_string() || v.get_ref<const std::string&>().empty())
         fail(p, "expected the path of an image file (a string), got " + typeOf(v));
-    const std::string given = v.get<std::string>();
+    return v.get<std::string>();
+}
+
+std::filesystem::path resolvedPath(const std::string& given, const std::filesystem::path& sceneDir) {
+    return std::filesystem::path(given).is_absolute() ? std::filesystem::path(given) : sceneDir / given;
+}
+
+Texture readImage(const std::filesystem::path& path, bool linearData, const JsonPath& p) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) fail(p, path.string() + ": cannot read: no such file");
+    try {
+        return loadTexture(path, linearData);
+    } catch (const TextureError& e) {
+        fail(p, e.what());
+    }
+}
+
+void readTextureSlot(const TextureSlot& slot, const Json& v, const JsonPath& p, const std::filesystem::path& sceneDir,
+                     std::vector<Texture>& textures, Material& material) {
+    const std::string given = imageKey(v, p);
     material.*slot.file = given;
-    const std::filesystem::path path =
-        std::filesystem::path(given).is_absolute() ? std::filesystem::path(given) : sceneDir / given;
+    const std::filesystem::path path = resolvedPath(given, sceneDir);
     const std::string key = (slot.linearData ? "linear:" : "srgb:") + given;   // one file, two decodings
     for (std::size_t i = 0; i < textures.size(); ++i) {
         if (textures[i].file == key) {
@@ -127,15 +146,9 @@ void readTextureSlot(const TextureSlot& slot, const Json& v, const JsonPath& p, 
             return;
         }
     }
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail(p, path.string() + ": cannot read: no such file");
-    try {
-        Texture t = loadTexture(path, slot.linearData);
-        t.file = key;
-        textures.push_back(std::move(t));
-    } catch (const TextureError& e) {
-        fail(p, e.what());
-    }
+    Texture t = readImage(path, slot.linearData, p);
+    t.file = key;
+    textures.push_back(std::move(t));
     material.*slot.index = int(textures.size() - 1);
 }
 
@@ -172,6 +185,7 @@ void addGltfMaterials(GltfAsset gltf, bool objectNamesMaterial, PendingMesh& pen
         remap(m.roughnessTextureIndex);
         remap(m.metallicTextureIndex);
         remap(m.emissionTextureIndex);
+        remap(m.specularTextureIndex);
         m.fromGltf = true;
     }
     pending.gltfMaterials = std::move(gltf.materials);
@@ -211,22 +225,46 @@ std::vector<double> readNumbers(const Json& o, const char* key, const JsonPath& 
     return out;
 }
 
-// "emission_sides": "front" (only the side the e01 x e02 normal faces emits) or "both" (default).
-bool readEmissionSides(const Json& o, const JsonPath& p) {
-    if (!o.contains("emission_sides")) return false;
+// "emission_sides": "both" (default), "front" or "gltf" (only for a mesh read from a glTF file).
+EmissionSides readEmissionSides(const Json& o, const JsonPath& p, bool fromGltfFile) {
+    if (!o.contains("emission_sides")) return EmissionSides::Both;
     const Json& v = o["emission_sides"];
-    const std::vector<std::string_view> names = {"both", "front"};
-    if (!v.is_string()) fail(p.key("emission_sides"), "expected a string (both, front), got " + typeOf(v));
+    const std::vector<std::string_view> names = {"both", "front", "gltf"};
+    if (!v.is_string()) fail(p.key("emission_sides"), "expected a string (both, front, gltf), got " + typeOf(v));
     const std::string& s = v.get_ref<const std::string&>();
-    if (s != "both" && s != "front")
+    if (std::find(names.begin(), names.end(), s) == names.end())
         fail(p.key("emission_sides"), "unknown value " + inQuotes(s) + suggestion(s, names, "allowed values"));
-    return s == "front";
+    if (s == "gltf" && !fromGltfFile)
+        fail(p.key("emission_sides"), "\"gltf\" takes the sides from a glTF file's materials (doubleSided); this mesh "
+                                      "is not read from a .gltf or .glb file");
+    return s == "front" ? EmissionSides::Front : s == "gltf" ? EmissionSides::Gltf : EmissionSides::Both;
+}
+
+// "displacement_texture" with its scale and subdivision level: the mesh is tessellated and displaced
+// here, once (mesh/displacement.h). The image is data (linear), used on loading only.
+void readDisplacement(const Json& o, const JsonPath& p, const std::filesystem::path& sceneDir, Mesh& mesh) {
+    MeshDisplacement& d = mesh.displacement;
+    for (const DisplacementParamSpec& spec : displacementParameters())
+        if (o.contains(spec.key)) spec.set(d, readValue(spec, o[std::string(spec.key)], p.key(spec.key)));
+    if (!o.contains("displacement_texture")) return;
+    const JsonPath tp = p.key("displacement_texture");
+    d.texture = imageKey(o["displacement_texture"], tp);
+    const Texture texture = readImage(resolvedPath(d.texture, sceneDir), true, tp);
+    if (mesh.uvs.empty()) fail(tp, "the mesh has no uvs to read the displacement texture at");
+    const std::size_t factor = std::size_t(1) << (2 * d.subdivision);
+    if (mesh.triangles.size() > kMaxDisplacedTriangles / factor)
+        fail(p.key("displacement_subdivision"),
+             std::to_string(mesh.triangles.size()) + " triangles x 4^" + std::to_string(d.subdivision) +
+                 " exceed the limit of " + std::to_string(kMaxDisplacedTriangles) + " displaced triangles");
+    if (mesh.file.empty()) d.source = std::make_shared<const Mesh>(mesh);
+    displaceMesh(mesh, texture);
 }
 
 // A mesh object: inline arrays, or "file" (OBJ, relative to the scene file's directory).
 Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sceneDir, GltfAsset* gltf) {
     std::vector<std::string_view> known = {"type", "material", "transform"};
     for (std::string_view k : meshKeys()) known.push_back(k);
+    for (const DisplacementParamSpec& spec : displacementParameters()) known.push_back(spec.key);
     for (const auto& [k, v] : o.items()) {
         (void)v;
         if (std::find(known.begin(), known.end(), k) == known.end())
@@ -258,7 +296,7 @@ Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sce
             fail(p.key("file"), e.what());
         }
         mesh.file = given;
-        mesh.emitsFrontOnly = readEmissionSides(o, p);
+        mesh.emissionSides = readEmissionSides(o, p, ext == ".gltf" || ext == ".glb");
         return mesh;
     }
     for (const char* required : {"positions", "indices"})
@@ -294,7 +332,7 @@ Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sce
                                    " numbers), got " + std::to_string(uv.size()) + " numbers");
         for (std::size_t i = 0; i < uv.size(); i += 2) mesh.uvs.emplace_back(float(uv[i]), float(uv[i + 1]));
     }
-    mesh.emitsFrontOnly = readEmissionSides(o, p);
+    mesh.emissionSides = readEmissionSides(o, p, false);
     return mesh;
 }
 
@@ -455,6 +493,7 @@ void buildScene(const Json& root, Scene& scene) {
         if (isMesh) {
             GltfAsset gltf;
             PendingMesh m{readMesh(o, p, sceneDir, &gltf), material, {}};
+            readDisplacement(o, p, sceneDir, m.mesh);
             addGltfMaterials(std::move(gltf), o.contains("material"), m, scene);
             m.mesh.transform = readTransform(o, p);
             meshes.push_back(std::move(m));

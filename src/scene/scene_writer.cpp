@@ -106,6 +106,8 @@ nlohmann::json materialJson(const Material& m) {
 nlohmann::json meshJson(const Mesh& m, const std::string& material) {
     nlohmann::json o = nlohmann::json::object();
     o["type"] = "mesh";
+    // A displaced inline mesh's arrays are written as they were given; loading displaces them again.
+    const Mesh& given = m.displacement.source ? *m.displacement.source : m;
     if (!m.file.empty()) {
         o["file"] = m.file;
     } else {
@@ -115,14 +117,20 @@ nlohmann::json meshJson(const Mesh& m, const std::string& material) {
                 for (int k = 0; k < n; ++k) a.push_back(v[k]);
             return a;
         };
-        o["positions"] = flat(m.positions, 3);
-        o["indices"] = flat(m.triangles, 3);
-        if (!m.normals.empty()) o["normals"] = flat(m.normals, 3);
-        if (!m.uvs.empty()) o["uvs"] = flat(m.uvs, 2);
+        o["positions"] = flat(given.positions, 3);
+        o["indices"] = flat(given.triangles, 3);
+        if (!given.normals.empty()) o["normals"] = flat(given.normals, 3);
+        if (!given.uvs.empty()) o["uvs"] = flat(given.uvs, 2);
     }
     o["transform"] = transformJson(m.transform);
     if (m.triangleMaterials.empty()) o["material"] = material;   // else the glTF file's materials
-    if (m.emitsFrontOnly) o["emission_sides"] = "front";
+    if (m.emissionSides == EmissionSides::Front) o["emission_sides"] = "front";
+    if (m.emissionSides == EmissionSides::Gltf) o["emission_sides"] = "gltf";
+    if (!m.displacement.texture.empty()) {
+        o["displacement_texture"] = m.displacement.texture;
+        for (const DisplacementParamSpec& spec : displacementParameters())
+            o[std::string(spec.key)] = valueJson(spec, m.displacement);
+    }
     return o;
 }
 

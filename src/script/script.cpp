@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -28,9 +29,9 @@ const std::map<std::string, Arity, std::less<>>& commands() {
         {"inspect", {2, 3}},     {"inspect-export", {1, 1}}, {"explore", {1, 2}},  {"panel", {2, 2}},
         {"focus", {2, 2}},       {"focus-mode", {1, 1}},  {"bvh-depth", {1, 1}},  {"heat-scale", {1, 1}},
         {"bounce-step", {1, 1}}, {"stage", {1, 1}},       {"split", {1, 1}},      {"split-a", {2, 2}},
-        {"split-b", {2, 2}},     {"split-divider", {1, 1}}, {"ui-scale", {1, 1}}, {"key", {1, 1}},
+        {"split-b", {2, 2}},     {"split-divider", {1, 1}}, {"ui-scale", {1, 1}}, {"key", {1, 2}},
         {"lesson", {1, 1}},      {"lesson-step", {1, 1}}, {"self-test", {0, 0}},   {"teach", {1, 1}},
-        {"drop", {1, 1}},        {"expect", {2, 2}},      {"hold", {0, 0}},
+        {"drop", {1, 1}},        {"expect", {2, 2}},      {"hold", {0, 0}},       {"select-light", {1, 1}},
     };
     return table;
 }
@@ -52,8 +53,15 @@ std::string debugViewList() {
     return list;
 }
 
-// The names `key` presses, in the table's order.
-constexpr auto kKeys = namesOf<kKeyBindings.size()>(kKeyBindings.data());
+// The names `key` presses: the key actions, then the camera keys, in the tables' order.
+constexpr auto kKeys = [] {
+    const auto actions = namesOf<kKeyBindings.size()>(kKeyBindings.data());
+    const auto camera = namesOf<kCameraKeys.size()>(kCameraKeys.data());
+    std::array<std::string_view, actions.size() + camera.size()> all{};
+    std::copy(actions.begin(), actions.end(), all.begin());
+    std::copy(camera.begin(), camera.end(), all.begin() + actions.size());
+    return all;
+}();
 
 std::string keyChoices() {
     std::string text;
@@ -111,8 +119,11 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         }
         const int n = int(c.args.size());
         if (n < it->second.min || n > it->second.max)
-            fail(c.name + " takes " + std::to_string(it->second.min) + " argument(s), got " + std::to_string(n));
-        const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "scale" ||
+            fail(c.name + " takes " + std::to_string(it->second.min) +
+                 (it->second.max > it->second.min ? " or " + std::to_string(it->second.max) : "") + " argument(s), got " +
+                 std::to_string(n));
+        const bool numeric = c.name == "click" || c.name == "pick" || c.name == "select" || c.name == "select-light" ||
+                             c.name == "scale" ||
                              c.name == "wait-spp" || c.name == "wait-frames" || c.name == "window" ||
                              c.name == "debug-bounce" || c.name == "inspect" || c.name == "explore" ||
                              c.name == "focus" || c.name == "bvh-depth" || c.name == "split-divider" ||
@@ -124,9 +135,9 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
             fail("unknown debug view '" + c.args[0] + "' (" + debugViewList() + ")");
         const auto onOff = [](const std::string& w) { return w == "on" || w == "off"; };
         if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected" && c.args[0] != "paths" &&
-                                     c.args[0] != "bvh" && c.args[0] != "mesh-bvh") ||
+                                     c.args[0] != "bvh" && c.args[0] != "mesh-bvh" && c.args[0] != "lights") ||
                                     !onOff(c.args[1])))
-            fail("overlay takes boxes|selected|paths|bvh|mesh-bvh on|off");
+            fail("overlay takes boxes|selected|paths|bvh|mesh-bvh|lights on|off");
         if (c.name == "panel" && ((c.args[0] != "inspector" && c.args[0] != "brdf-explorer") || !onOff(c.args[1])))
             fail("panel takes inspector|brdf-explorer on|off");
         if (c.name == "focus-mode" && !onOff(c.args[0])) fail("focus-mode takes on|off");
@@ -151,6 +162,9 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         }
         if (c.name == "key" && std::find(kKeys.begin(), kKeys.end(), c.args[0]) == kKeys.end())
             fail("key takes " + keyChoices());
+        if (c.name == "key" && n == 2 && (!isNumber(c.args[1]) || std::stod(c.args[1]) < 1.0 ||
+                                          std::stod(c.args[1]) != std::floor(std::stod(c.args[1]))))
+            fail("key: '" + c.args[1] + "' is not a count of frames (a whole number >= 1)");
         out.push_back(std::move(c));
     }
     return out;

@@ -6,10 +6,12 @@
 //   drop PATH              drop a file on the window: the window's drop handling opens it next
 //                          frame (a failed open shows its error; the script goes on)
 //   set KEY VALUE          edit a scene key (camera.fov 50, materials.red.albedo [1,0,0]);
-//                          selected.KEY: a key of the selected object or of its material
+//                          selected.KEY: a key of the selected object or of its material, or
+//                          of the selected light (selected.intensity)
 //   click X Y              a left click at window pixel (X, Y), as the mouse would
 //   pick X Y               select the object at image pixel (X, Y) of the traced image
 //   select N               select object N (as the outliner does: spheres, then meshes; -1 none)
+//   select-light N         select light N of the scene's `lights` (the outliner's light rows; -1 none)
 //   focus X Y              click-to-focus at image pixel (X, Y): camera.focus_distance becomes the
 //                          distance of the surface there along the view axis
 //   focus-mode on|off      the Camera panel's "click to focus": the next click focuses, not picks
@@ -17,7 +19,8 @@
 //                          debug-bounce K: the bounce the "bounce" view shows;
 //                          heat-scale auto|N: the count shown red
 //   overlay boxes on|off   object bounding boxes;  overlay selected on|off: only the selected one;
-//                          overlay paths on|off: the inspected pixel's paths
+//                          overlay paths on|off: the inspected pixel's paths;
+//                          overlay lights on|off: a gizmo per light
 //   overlay bvh on|off     top-level BVH nodes at the chosen depth; overlay mesh-bvh on|off: the
 //                          meshes' BVH nodes at that depth;  bvh-depth N: the depth (0 = root)
 //   inspect X Y [N]        record the next N (default: the Inspector's count, 8) sample paths of
@@ -47,9 +50,12 @@
 //   split-a KEY VALUE      an override of side A (left); split-b KEY VALUE: of side B (right)
 //   split-divider X        where the sides meet, 0 to 1 of the image width
 //   ui-scale S             UI scale for projectors (0.5 to 4)
-//   key NAME               press a key in the window, through the window's own key handling: a
-//                          name of script/key_actions.h (page-down, page-up, space, r, f5, f9,
-//                          f12, f1, ctrl+s, ctrl+=, ctrl+-, ctrl+0)
+//   key NAME [FRAMES]      press a key in the window, through the window's own key handling, and
+//                          hold it FRAMES frames (default 1): a name of script/key_actions.h
+//                          (page-down, page-up, space, r, f5, f9, f12, f1, f2, ctrl+s, ctrl+=, ctrl+-,
+//                          ctrl+0), or a camera key, which gives the viewport the keyboard and
+//                          acts while held (w, s forward/back, a, d left/right, q, e down/up;
+//                          left, right turn, up, down look up/down)
 //   lesson PATH            open a lesson in the Lesson panel;  lesson-step N: apply its step N
 //   self-test              run the self-test (furnace, χ² of the GLSL samplers), log the verdicts
 //   teach TAB              show the Teach window at lesson, classroom or self-test; off hides it

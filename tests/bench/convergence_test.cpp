@@ -244,14 +244,17 @@ TEST(BenchBlenderExport, TexturesAreNamedByAbsolutePathsWithRaylabsDecodingAndWr
     // The other slots and the glTF wraps, on a copy of the brick material.
     Scene all = scene;
     Material& m = all.materials[0];
-    m.roughnessTextureIndex = m.metallicTextureIndex = m.emissionTextureIndex = m.albedoTextureIndex;
+    m.roughnessTextureIndex = m.metallicTextureIndex = m.emissionTextureIndex = m.specularTextureIndex =
+        m.albedoTextureIndex;
     all.textures[size_t(m.albedoTextureIndex)].wrapU = TextureWrap::MirroredRepeat;
     all.textures[size_t(m.albedoTextureIndex)].wrapV = TextureWrap::ClampToEdge;
     const std::string line = materialLine(blenderScript(all), "brick");
-    for (const char* key : {"albedo_map=", "roughness_map=", "metallic_map=", "normal_map=", "emission_map="})
+    for (const char* key : {"albedo_map=", "roughness_map=", "metallic_map=", "normal_map=", "emission_map=", "specular_map="})
         EXPECT_NE(line.find(key), std::string::npos) << key << " in " << line;
     EXPECT_NE(line.find("\"sRGB\", \"MIRROR\", \"EXTEND\")"), std::string::npos) << line;
     EXPECT_NE(py.find("x = smath(tree, \"PINGPONG\", x, 1.0)"), std::string::npos) << "mirrored repeat folds uv";
+    EXPECT_NE(py.find("f0 = vmath(tree, \"MULTIPLY\", f0[:3], image(tree, specular_map))"), std::string::npos)
+        << "the specular map multiplies f0";
     const fs::path file = scratch() / "textured.py";
     writeBlenderScript(all, file);
     const std::string cmd = "python3 -c \"import ast,sys; ast.parse(open(sys.argv[1]).read())\" '" + file.string() + "'";

@@ -433,7 +433,8 @@ def place(section, key):
         return {"materials": {"m": {key: SENTINEL}}, "objects": [{"material": "m"}]}, "materials.m." + key
     if key.startswith("transform."):
         return {"objects": [{"transform": {key.split(".")[1]: SENTINEL}}]}, "objects[0]." + key
-    if key in MESH or key in ("normals", "uvs", "file", "emission_sides"):
+    if key in MESH or key in ("normals", "uvs", "file", "emission_sides", "displacement_texture", "displacement_scale",
+                              "displacement_subdivision"):
         obj = dict(MESH)
         if key == "file":
             obj = {"type": "mesh"}
@@ -555,6 +556,8 @@ def key_cases(section, key, kind, rng):
             bad_value("type_bool_null", doc, path, "null", "expected true or false, got null")
     elif kind == "string" and rng == "an image file":
         bad_value("key_%s_missing_file" % slug, doc, path, '"no_such_image.png"', "{...}no_such_image.png")
+        if not first:
+            bad_value("key_%s_number" % slug, doc, path, "3", "{...}got number")
         if first:
             bad_value("type_path_number", doc, path, "3", "{...}got number")
             bad_value("type_path_empty", doc, path, '""', "{...}got empty string")
@@ -569,8 +572,10 @@ def key_cases(section, key, kind, rng):
         bad_value("key_type_typo", doc, path, '"shpere"', "unknown object type 'shpere'; did you mean 'sphere'?")
         bad_value("key_type_number", doc, path, "1", "expected a string (sphere, mesh), got number")
     elif kind == "string" and key == "emission_sides":
-        bad_value("key_emission_sides_unknown", doc, path, '"back"', "unknown value 'back' (allowed values: both, front)")
-        bad_value("key_emission_sides_number", doc, path, "1", "expected a string (both, front), got number")
+        bad_value("key_emission_sides_unknown", doc, path, '"back"', "unknown value 'back' (allowed values: both, front, gltf)")
+        bad_value("key_emission_sides_number", doc, path, "1", "expected a string (both, front, gltf), got number")
+        bad_value("key_emission_sides_gltf_inline", doc, path, '"gltf"',
+                  "\"gltf\" takes the sides from a glTF file's materials (doubleSided); this mesh is not read from a .gltf or .glb file")
     elif kind == "string" and key == "material":
         bad_value("key_material_unknown", doc, path, '"nobody"', "unknown material 'nobody'")
         bad_value("key_material_number", doc, path, "0", "expected a material name (a string), got number")
@@ -602,6 +607,18 @@ def key_cases(section, key, kind, rng):
 seen_types = set()
 for section, key, kind, rng in format_keys():
     key_cases(section, key, kind, rng)
+
+# Displacement: a negative level, a mesh without uvs, and subdivision past the triangle limit
+# (62 triangles x 4^8 > 4000000). The image is a valid one of the shipped scenes.
+IMAGE = "../../../scenes/textures/bricks.ppm"
+bad_value("displacement_subdivision_negative", {"objects": [dict(MESH, displacement_texture=IMAGE, displacement_subdivision=SENTINEL)]},
+          "objects[0].displacement_subdivision", "-1", "must be in [0, 8], got -1")
+bad_value("displacement_without_uvs", {"objects": [dict(MESH, displacement_texture=SENTINEL)]},
+          "objects[0].displacement_texture", '"%s"' % IMAGE, "the mesh has no uvs to read the displacement texture at")
+bad_value("displacement_too_many_triangles",
+          {"objects": [dict(MESH, indices=[0, 1, 2] * 62, uvs=[0, 0, 1, 0, 0, 1], displacement_texture=IMAGE,
+                            displacement_subdivision=SENTINEL)]},
+          "objects[0].displacement_subdivision", "8", "62 triangles x 4^8 exceed the limit of 4000000 displaced triangles")
 
 # Values inside a range as doubles that single precision rounds out of it.
 bad_value("float_underflow_radius", {"objects": [{"radius": SENTINEL}]}, "objects[0].radius", "1e-50",

@@ -41,3 +41,17 @@ TEST(MarkdownBlocks, HeadingsParagraphsListsCodeAndTables) {
     EXPECT_TRUE(blocks[12].quote);
     EXPECT_EQ(blocks.back().kind, MarkdownBlock::Rule);
 }
+
+TEST(MarkdownBlocks, APictureIsABlockOfItsOwnWithItsSourceAndAltText) {
+    const auto blocks = parseMarkdownBlocks("![The *slab* test](pictures/slab.png)\n\nBefore ![a](b.png) after.\n");
+    ASSERT_EQ(blocks.size(), 4u);
+    EXPECT_EQ(blocks[0].kind, MarkdownBlock::Image) << "a picture alone takes its paragraph's place";
+    EXPECT_EQ(blocks[0].source, "pictures/slab.png");
+    EXPECT_EQ(blocks[0].plainText(), "The slab test");
+    EXPECT_EQ(blocks[1].kind, MarkdownBlock::Paragraph);
+    EXPECT_EQ(blocks[1].plainText(), "Before ");
+    EXPECT_EQ(blocks[2].kind, MarkdownBlock::Image);
+    EXPECT_EQ(blocks[2].source, "b.png");
+    EXPECT_EQ(blocks[3].kind, MarkdownBlock::Paragraph);
+    EXPECT_EQ(blocks[3].plainText(), " after.");
+}

@@ -1,13 +1,19 @@
 // Point, spot and distant lights and one-sided emitters on the GPU (OSMesa), against analytic
 // values: a Lambert plane of albedo ρ lit by intensity I at distance d shows ρ/π · I/d² · cosθ,
 // under a distant light of irradiance E it shows ρE cosθ/π (pbrt-v4 §12.1, §12.4).
+#include "render/light_list.h"
+#include "render/shader_variant.h"
+#include "scene/scene_writer.h"
 #include "render_helpers.h"
 #include "support/batch_stats.h"
 #include "support/gl_test.h"
+#include "support/gltf_writer.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -192,14 +198,123 @@ TEST_F(AnalyticLightsTest, OneSidedEmitterEmitsFromItsFrontOnly) {
     EXPECT_GE(fractionAgreeing(mis, bsdf), 0.99);
 }
 
+TEST_F(AnalyticLightsTest, GltfDoubleSidedDecidesTheEmittingSidesUnderEmissionSidesGltf) {
+    // Two emissive quads of one glTF file in z = 0, fronts towards +z: materials[0] is not
+    // doubleSided (glTF's default), materials[1] is. Seen from behind, `emission_sides: "gltf"`
+    // leaves quad 0 black and quad 1 lit, per triangle, for camera rays and light samples alike;
+    // without the key both sides of both emit, as before.
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("raylab_gltf_sides_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    test::GltfSpec spec;
+    spec.primitiveMaterials = {0, 1};
+    spec.materials = R"([ { "emissiveFactor": [1, 1, 1] }, { "emissiveFactor": [1, 1, 1], "doubleSided": true } ])";
+    test::writeGltf(dir / "quads.gltf", spec);
+    auto scene = [&](const std::string& sides, const std::string& camera, std::vector<std::string> set = {}) {
+        std::ofstream(dir / "scene.json") << R"({
+  "camera": )" + camera + R"(,
+  "render": { "width": 32, "height": 16, "spp": 16, "rpp": 16, "max_bounces": 1 },
+  "sky": { "type": "constant", "color": 0 },
+  "materials": { "wall": { "albedo": 0.5 } },
+  "objects": [ { "type": "mesh", "file": "quads.gltf")" + sides + R"( },
+               { "type": "mesh", "material": "wall", "positions": [-4, -4, -1,  4, -4, -1,  4, 4, -1,  -4, 4, -1],
+                 "indices": [0, 1, 2, 0, 2, 3] } ]
+})";
+        return loadScene(dir / "scene.json", set);
+    };
+    const std::string gltf = R"(, "emission_sides": "gltf")";
+    // From behind, looking +z: image column x < 16 shows world x > 0 (quad 1), x >= 16 quad 0.
+    const std::string behind = R"({ "position": [0, 0, -0.5], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 90 })";
+    // Between the quads and the wall, looking at the wall (lit by the quads' backs alone).
+    const std::string wall = R"({ "position": [0, 0, -0.2], "look_at": [0, 0, -1], "up": [0, 1, 0], "fov": 60 })";
+    const std::string front = R"({ "position": [0, 0, 3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40 })";
+
+    // The host's light list: quad 0's two triangles are one-sided, with half the power.
+    const Scene s = scene(gltf, behind);
+    ASSERT_EQ(s.meshes[0].emissionSides, EmissionSides::Gltf);
+    EXPECT_EQ(sceneToJson(s, dir / "saved.json")["objects"][0]["emission_sides"], "gltf") << "saving keeps the key";
+    const LightList lights = buildLightList(s, buildSceneGeometry(s), [&] {
+        std::vector<glm::vec3> r;
+        for (const Material& m : s.materials) r.push_back(m.radiance());
+        return r;
+    }());
+    ASSERT_EQ(lights.triangles.size(), 4u);
+    int oneSided = 0;
+    for (const glsl::GpuTriangleLight& t : lights.triangles) oneSided += t.radiance.w == 1.0f;
+    EXPECT_EQ(oneSided, 2);
+    EXPECT_NE(featureName(sceneFeatures(s)).find("one-sided"), std::string::npos);
+    EXPECT_EQ(featureName(sceneFeatures(scene("", behind))).find("one-sided"), std::string::npos)
+        << "without the key nothing is one-sided";
+
+    for (const char* mode : {"render.nee=false", "render.mis=true"}) {
+        SCOPED_TRACE(mode);
+        const Image seen = test::render(scene(gltf, behind, {mode}));
+        double quad0 = 0.0, quad1 = 0.0;
+        for (int y = 0; y < seen.height; ++y)
+            for (int x = 0; x < seen.width; ++x) (x < seen.width / 2 ? quad1 : quad0) += seen.rgb(x, y).r;
+        EXPECT_EQ(quad0, 0.0) << "the back of a material that is not doubleSided is black";
+        EXPECT_GT(quad1, 0.0);
+        const Image both = test::render(scene("", behind, {mode}));
+        for (int y = 0; y < both.height; ++y)
+            for (int x = 0; x < both.width; ++x) EXPECT_GT(both.rgb(x, y).r, 0.0f) << "without the key both sides emit";
+        // The front of both still emits (from the front, image column x < 16 shows quad 0).
+        const Image fromFront = test::render(scene(gltf, front, {mode}));
+        double front0 = 0.0, front1 = 0.0;
+        for (int y = 0; y < fromFront.height; ++y)
+            for (int x = 0; x < fromFront.width; ++x) (x < fromFront.width / 2 ? front0 : front1) += fromFront.rgb(x, y).r;
+        EXPECT_GT(front0, 0.0);
+        EXPECT_GT(front1, 0.0);
+    }
+    // The wall behind: NEE and BSDF samples agree that only quad 1's back lights it, and it is
+    // darker than with both sides emitting.
+    const BatchStats bsdf = renderBatches(scene(gltf, wall, {"render.nee=false"}), 16);
+    const BatchStats mis = renderBatches(scene(gltf, wall, {"render.mis=true"}), 16);
+    EXPECT_GE(fractionAgreeing(mis, bsdf), 0.99);
+    const BatchStats twoSided = renderBatches(scene("", wall, {"render.mis=true"}), 16);
+    EXPECT_LT(fractionAgreeing(mis, twoSided), 0.5) << "the test can fail: both sides emitting is seen";
+    fs::remove_all(dir);
+}
+
+TEST_F(AnalyticLightsTest, SunOverAHugeFloorSphereLeavesThePointLightItsShare) {
+    // A 1000-radius floor sphere, a point light 2 above the pixel and a sun below the horizon (it
+    // lights none of the pixels, yet it is a light to pick). One sample per pixel: 0, or the point
+    // light's ρ/π · I/d² over p, its pick probability, so a pixel's relative variance is 1/p − 1.
+    // Bound: p ≥ 1/4, relative variance ≤ 3 (the distant lights' share gives p = 1/2; π r² E with
+    // the floor's r gives p ≈ 5e-6). The estimate from 1024 pixels has a standard error of about
+    // 0.07 at p = 1/2, so the bound is far beyond chance; the mean is tested with a z-test at α = 0.01.
+    const Scene s = parseScene(R"({
+  "camera": { "position": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 0.002 },
+  "render": { "width": 32, "height": 32, "spp": 1, "rpp": 1, "max_bounces": 1 },
+  "sky": { "type": "constant", "color": 0 },
+  "materials": { "floor": { "albedo": 0.5 } },
+  "objects": [ { "type": "sphere", "center": [0, -1000, 0], "radius": 1000, "material": "floor" } ],
+  "lights": [ { "type": "point", "position": [0, 2, 0], "intensity": 3 },
+              { "type": "distant", "direction": [0.3, 1, 0], "irradiance": 1 } ]
+})",
+                               "floor_sphere.json");
+    const double expected = kAlbedo / kPi * 3.0 / 4.0;
+    const std::vector<double> v = reds(s);
+    const PixelMean m = pixelMean(v);
+    const double variance = m.standardError * m.standardError * double(v.size());
+    EXPECT_LT(std::abs(m.mean - expected), test::normalQuantileTwoSided(0.01) * m.standardError)
+        << m.mean << " vs " << expected;
+    EXPECT_GT(m.mean, 0.0) << "the point light was never picked";
+    EXPECT_LE(variance / (m.mean * m.mean), 3.0) << "relative variance of a pixel";
+}
+
 TEST_F(AnalyticLightsTest, PowerSelectionAmongMixedLightsIsUnbiased) {
     // Point, spot, disc sun and an emissive sphere of very different power, picked by power: the
     // image must be the sum of the images of each light alone (each picked with probability 1),
-    // pixel by pixel, with NEE alone and with MIS.
+    // pixel by pixel, with NEE alone and with MIS; on a floor quad and on a 1000-radius floor
+    // sphere (where the sun's share does not come from the scene's size).
     const std::vector<std::string> lights = {
         R"({ "type": "point", "position": [1, 2, 1], "intensity": 2 })",
         R"({ "type": "spot", "position": [-1, 2, 0], "direction": [0.3, -1, 0], "power": 60, "inner_angle": 15, "outer_angle": 35 })",
         R"({ "type": "distant", "direction": [-1, -2, -0.5], "irradiance": 0.5, "angular_radius": 8 })"};
+    const std::vector<std::string> floors = {
+        R"({ "type": "mesh", "material": "white", "positions": [-5, 0, -5,  5, 0, -5,  5, 0, 5,  -5, 0, 5], "indices": [0, 2, 1, 0, 3, 2] })",
+        R"({ "type": "sphere", "center": [0, -1000, 0], "radius": 1000, "material": "white" })"};
+    std::string floor;
     auto scene = [&](const std::vector<std::string>& which, bool lamp, const char* mode) {
         std::string list;
         for (const std::string& l : which) list += (list.empty() ? "" : ", ") + l;
@@ -210,7 +325,7 @@ TEST_F(AnalyticLightsTest, PowerSelectionAmongMixedLightsIsUnbiased) {
   "materials": { "white": { "albedo": 0.6 }, "lamp": { "albedo": 0, "emission": 1, "strength": )" +
                                  std::string(lamp ? "6" : "0") + R"( } },
   "objects": [
-    { "type": "mesh", "material": "white", "positions": [-5, 0, -5,  5, 0, -5,  5, 0, 5,  -5, 0, 5], "indices": [0, 2, 1, 0, 3, 2] },
+    )" + floor + R"(,
     { "type": "sphere", "center": [0, 0.5, 0], "radius": 0.5, "material": "white" },
     { "type": "sphere", "center": [1.5, 1.5, -1], "radius": 0.2, "material": "lamp" } ],
   "lights": [ )" + list + R"( ]
@@ -218,15 +333,19 @@ TEST_F(AnalyticLightsTest, PowerSelectionAmongMixedLightsIsUnbiased) {
         return parseScene(text, "mixed.json", {mode});
     };
     constexpr int batches = 16;
-    for (const char* mode : {"render.mis=false", "render.mis=true"}) {
-        SCOPED_TRACE(mode);
-        const BatchStats all = renderBatches(scene(lights, true, mode), batches);
-        BatchStats sum = renderBatches(scene({}, true, mode), batches);
-        for (const std::string& l : lights) sum = plus(sum, renderBatches(scene({l}, false, mode), batches));
-        EXPECT_GE(fractionAgreeing(all, sum), 0.99);
-        // The test can fail: without the spot the sum must be seen to differ.
-        BatchStats less = renderBatches(scene({}, true, mode), batches);
-        for (size_t k : {size_t(0), size_t(2)}) less = plus(less, renderBatches(scene({lights[k]}, false, mode), batches));
-        EXPECT_LT(fractionAgreeing(all, less), 0.9);
+    for (const std::string& f : floors) {
+        floor = f;
+        for (const char* mode : {"render.mis=false", "render.mis=true"}) {
+            SCOPED_TRACE(std::string(mode) + ", floor " + f);
+            const BatchStats all = renderBatches(scene(lights, true, mode), batches);
+            BatchStats sum = renderBatches(scene({}, true, mode), batches);
+            for (const std::string& l : lights) sum = plus(sum, renderBatches(scene({l}, false, mode), batches));
+            EXPECT_GE(fractionAgreeing(all, sum), 0.99);
+            // The test can fail: without the spot the sum must be seen to differ.
+            BatchStats less = renderBatches(scene({}, true, mode), batches);
+            for (size_t k : {size_t(0), size_t(2)})
+                less = plus(less, renderBatches(scene({lights[k]}, false, mode), batches));
+            EXPECT_LT(fractionAgreeing(all, less), 0.9);
+        }
     }
 }

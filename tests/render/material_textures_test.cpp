@@ -1,4 +1,4 @@
-// Roughness, metallic and emission textures through the whole path (scene keys → loader → GPU),
+// Roughness, metallic, emission and specular textures through the whole path (scene keys → loader → GPU),
 // each compared with renders whose materials say the same thing without a texture: a texture must
 // change the image where it says and nowhere else. And glTF materials per primitive on the GPU.
 #include "render/shader_variant.h"
@@ -106,6 +106,51 @@ TEST_F(MaterialTexturesTest, MetallicTextureTintsTheSpecularWhereItIsOne) {
     // Without a texture the metallic mix is baked on loading: the same image as the explicit metal.
     const Image baked = test::render(load(dir, quadScene("{ " + common + R"(, "metallic": 1 })")));
     EXPECT_LT(maxDifference(baked, metal, 0, 16), 1e-4f);
+    fs::remove_all(dir);
+}
+
+TEST_F(MaterialTexturesTest, ConstantSpecularTextureRendersAsTheMaterialWithThatF0) {
+    // f0 1 × a constant sRGB texel (255, 128, 64) is f0 = (1, decode(128), decode(64)): the same
+    // BSDF at every hit as the plain material, so the same image up to float rounding (glossy, with
+    // a diffuse base, so both lobes and the lobe choice see f0).
+    const fs::path dir = scratch("spec_const");
+    writeHalves(dir / "spec.png", {255, 128, 64}, {255, 128, 64});
+    auto decode = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+    const std::string common = R"("albedo": [0.2, 0.5, 0.3], "roughness": 0.4)";
+    const Scene textured = load(dir, quadScene("{ " + common + R"(, "f0": 1, "specular_texture": "spec.png" })", 2));
+    EXPECT_NE(featureName(sceneFeatures(textured)).find("specular-tex"), std::string::npos);
+    const Image withTexture = test::render(textured);
+    const std::string f0 = "[1, " + std::to_string(decode(128.0 / 255.0)) + ", " + std::to_string(decode(64.0 / 255.0)) + "]";
+    const Image plain = test::render(load(dir, quadScene("{ " + common + R"(, "f0": )" + f0 + " }", 2)));
+    EXPECT_LT(maxDifference(withTexture, plain, 0, 16), 1e-5f);
+    const Image white = test::render(load(dir, quadScene("{ " + common + R"(, "f0": 1 })", 2)));
+    EXPECT_GT(maxDifference(white, plain, 0, 16), 0.05f) << "the texture's colour must show";
+    fs::remove_all(dir);
+}
+
+TEST_F(MaterialTexturesTest, SpecularTextureGivesEachHalfItsF0) {
+    // A mirror (albedo 0, roughness 0) seen almost head on in a sky of 1 returns Schlick's F ≈ f0
+    // (f90 = 1; (1 - cos θ)^5 < 1e-4 here). Red texels on the left half, blue on the right: each
+    // half must equal the plain mirror of that f0, and show it.
+    const fs::path dir = scratch("spec_halves");
+    writeHalves(dir / "spec.png", {255, 0, 0}, {0, 0, 255});
+    const Scene textured = load(dir, quadScene(R"({ "albedo": 0, "roughness": 0, "f0": 1, "specular_texture": "spec.png" })"));
+    const Image image = test::render(textured);
+    const Image red = test::render(load(dir, quadScene(R"({ "albedo": 0, "roughness": 0, "f0": [1, 0, 0] })")));
+    const Image blue = test::render(load(dir, quadScene(R"({ "albedo": 0, "roughness": 0, "f0": [0, 0, 1] })")));
+    EXPECT_LT(maxDifference(image, red, 0, kLeftEnd), 1e-5f) << "left half: f0 red";
+    EXPECT_LT(maxDifference(image, blue, kRightStart, 16), 1e-5f) << "right half: f0 blue";
+    for (int y = 0; y < 16; ++y) {
+        EXPECT_NEAR(image.rgb(2, y).r, 1.0f, 1e-3f) << y;
+        EXPECT_NEAR(image.rgb(2, y).b, 0.0f, 1e-3f) << y;
+        EXPECT_NEAR(image.rgb(13, y).r, 0.0f, 1e-3f) << y;
+        EXPECT_NEAR(image.rgb(13, y).b, 1.0f, 1e-3f) << y;
+    }
+    // Before the metallic mix: metallic 1 takes f0 from the base colour, whatever the texture says.
+    const Image metal = test::render(load(dir, quadScene(
+        R"({ "albedo": [0, 1, 0], "roughness": 0, "f0": 1, "metallic": 1, "specular_texture": "spec.png" })")));
+    const Image green = test::render(load(dir, quadScene(R"({ "albedo": 0, "roughness": 0, "f0": [0, 1, 0] })")));
+    EXPECT_LT(maxDifference(metal, green, 0, 16), 1e-5f);
     fs::remove_all(dir);
 }
 

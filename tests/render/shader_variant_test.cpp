@@ -39,9 +39,9 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     EXPECT_EQ(d[0].first, "RAYLAB_FEATURES_SPECIALISED");
     EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
     EXPECT_EQ(d[2].first, "RAYLAB_TOP_LEVEL_LINEAR");
-    // 5 geometry features + NEE, BSDF, sky map + roughness, metallic, emission textures, wrap modes
-    // + triangle lights, light power selection + point/spot/distant lights, one-sided emitters
-    EXPECT_EQ(on(featureDefines(allFeatures())).size(), 17u);
+    // 5 geometry features + NEE, BSDF, sky map + roughness, metallic, emission, specular textures,
+    // wrap modes + triangle lights, light power selection + point/spot/distant lights, one-sided emitters
+    EXPECT_EQ(on(featureDefines(allFeatures())).size(), 18u);
 }
 
 TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore) {
@@ -73,6 +73,7 @@ TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore
     withOne([](Material& m) { m.roughnessTextureIndex = 0; }, "RAYLAB_TEXTURE_ROUGHNESS");
     withOne([](Material& m) { m.emissionTextureIndex = 0; }, "RAYLAB_TEXTURE_EMISSION");
     withOne([](Material& m) { m.metallicTextureIndex = 0; }, "RAYLAB_TEXTURE_METALLIC");
+    withOne([](Material& m) { m.specularTextureIndex = 0; }, "RAYLAB_TEXTURE_SPECULAR");
     Scene wrapped = bricks;
     wrapped.textures[0].wrapU = TextureWrap::ClampToEdge;
     EXPECT_EQ(on(featureDefines(sceneFeatures(wrapped))).back().first, "RAYLAB_TEXTURE_WRAP_MODES");

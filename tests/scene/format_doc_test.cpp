@@ -82,6 +82,7 @@ TEST(SceneFormatDoc, EveryMaterialAndObjectKeyHasATableRow) {
     for (const SphereParamSpec& p : sphereParameters()) expectRowMatches(rows, p, p.defaultValue());
     for (const TransformParamSpec& p : transformParameters()) expectRowMatches(rows, p, p.defaultValue());
     for (const LightParamSpec& p : lightParameters()) expectRowMatches(rows, p, p.defaultValue());
+    for (const DisplacementParamSpec& p : displacementParameters()) expectRowMatches(rows, p, p.defaultValue());
     // Keys of an object that the loader handles itself.
     for (const char* key : {"type", "material", "sky.map"}) EXPECT_EQ(rows.count(key), 1u) << "`" << key << "` undocumented";
     for (std::string_view key : meshKeys()) EXPECT_EQ(rows.count(std::string(key)), 1u) << "`" << key << "` undocumented";
@@ -99,6 +100,8 @@ TEST(SceneFormatDoc, NoRowsForKeysThatDoNotExist) {
                            std::any_of(transformParameters().begin(), transformParameters().end(),
                                        [&](const auto& p) { return p.key == key; }) ||
                            std::any_of(lightParameters().begin(), lightParameters().end(),
+                                       [&](const auto& p) { return p.key == key; }) ||
+                           std::any_of(displacementParameters().begin(), displacementParameters().end(),
                                        [&](const auto& p) { return p.key == key; }) ||
                            std::any_of(meshKeys().begin(), meshKeys().end(),
                                        [&](std::string_view k) { return k == key; }) ||

@@ -67,15 +67,17 @@ TEST(Script, RejectsMistakesWithFileAndLine) {
     EXPECT_EQ(errorOf("wait-spp lots\n"), "s.txt:1: error: wait-spp: 'lots' is not a number");
     EXPECT_EQ(errorOf("window 800 tall\n"), "s.txt:1: error: window: 'tall' is not a number");
     EXPECT_EQ(errorOf("debug-view heat\n"), "s.txt:1: error: unknown debug view 'heat' (" + debugViewList() + ")");
-    EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh on|off");
-    EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh on|off");
+    EXPECT_EQ(errorOf("overlay boxes maybe\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh|lights on|off");
+    EXPECT_EQ(errorOf("overlay grid on\n"), "s.txt:1: error: overlay takes boxes|selected|paths|bvh|mesh-bvh|lights on|off");
+    EXPECT_EQ(errorOf("select-light 1\noverlay lights on\n"), "<no error>");
+    EXPECT_EQ(errorOf("select-light sun\n"), "s.txt:1: error: select-light: 'sun' is not a number");
 }
 
 TEST(Script, InspectorCommands) {
     EXPECT_EQ(errorOf("inspect 10 20\ninspect 10 20 4\noverlay paths off\nexplore 0\nexplore 1 2\n"
                       "inspect-export p.json\npanel inspector on\npanel brdf-explorer off\n"),
               "<no error>");
-    EXPECT_EQ(errorOf("inspect 10\n"), "s.txt:1: error: inspect takes 2 argument(s), got 1");
+    EXPECT_EQ(errorOf("inspect 10\n"), "s.txt:1: error: inspect takes 2 or 3 argument(s), got 1");
     EXPECT_EQ(errorOf("inspect 10 y\n"), "s.txt:1: error: inspect: 'y' is not a number");
     EXPECT_EQ(errorOf("explore first\n"), "s.txt:1: error: explore: 'first' is not a number");
     EXPECT_EQ(errorOf("panel lesson on\n"), "s.txt:1: error: panel takes inspector|brdf-explorer on|off");
@@ -121,14 +123,22 @@ TEST(Script, ParsesTheTeachingCommands) {
     EXPECT_EQ(errorOf("stage phong\n"), "s.txt:1: error: unknown stage 'phong' (primary, emission, lambert, ggx, textures, full)");
     EXPECT_EQ(errorOf("split halves\n"), "s.txt:1: error: split takes samples, time or off");
     EXPECT_EQ(errorOf("split-a render.nee\n"), "s.txt:1: error: split-a needs KEY VALUE");
-    EXPECT_EQ(errorOf("key escape\n"), "s.txt:1: error: key takes page-down, page-up, space, r, f5, f9, f12, f1, ctrl+s, ctrl+=, ctrl+- or ctrl+0");
+    EXPECT_EQ(errorOf("key escape\n"), "s.txt:1: error: key takes page-down, page-up, space, r, f5, f9, f12, f1, f2, ctrl+s, ctrl+=, ctrl+-, ctrl+0, "
+              "w, s, a, d, q, e, left, right, up or down");
     EXPECT_EQ(errorOf("ui-scale big\n"), "s.txt:1: error: ui-scale: 'big' is not a number");
     EXPECT_EQ(errorOf("lesson-step two\n"), "s.txt:1: error: lesson-step: 'two' is not a number");
 }
 
 TEST(Script, KeysAndDrops) {
     for (std::string_view k : scriptKeys()) EXPECT_EQ(errorOf("key " + std::string(k) + "\n"), "<no error>") << k;
-    EXPECT_EQ(errorOf("key F9\n"), "s.txt:1: error: key takes page-down, page-up, space, r, f5, f9, f12, f1, ctrl+s, ctrl+=, ctrl+- or ctrl+0");
+    EXPECT_EQ(errorOf("key F9\n"), "s.txt:1: error: key takes page-down, page-up, space, r, f5, f9, f12, f1, f2, ctrl+s, ctrl+=, ctrl+-, ctrl+0, "
+              "w, s, a, d, q, e, left, right, up or down");
+    const auto held = parseScript("key w 5\nkey left\n", "s.txt");
+    EXPECT_EQ(held.at(0).args, (std::vector<std::string>{"w", "5"}));
+    EXPECT_EQ(held.at(1).args.size(), 1u);
+    EXPECT_EQ(errorOf("key w 0\n"), "s.txt:1: error: key: '0' is not a count of frames (a whole number >= 1)");
+    EXPECT_EQ(errorOf("key w 1.5\n"), "s.txt:1: error: key: '1.5' is not a count of frames (a whole number >= 1)");
+    EXPECT_EQ(errorOf("key w 2 3\n"), "s.txt:1: error: key takes 1 or 2 argument(s), got 3");
     EXPECT_EQ(parseScript("drop /tmp/scene.json\n", "s.txt").at(0).args.at(0), "/tmp/scene.json");
     EXPECT_EQ(errorOf("drop\n"), "s.txt:1: error: drop takes 1 argument(s), got 0");
     EXPECT_EQ(errorOf("drop a.json b.json\n"), "s.txt:1: error: drop takes 1 argument(s), got 2");

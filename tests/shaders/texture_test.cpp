@@ -2,7 +2,7 @@
 // the mip pyramid (texture/texture.h).
 #include "texture/texture.h"
 
-#include "support/cpu_texels.h"
+#include "texture/cpu_texels.h"
 #include "shaders/include/texture.glsl"
 
 #include "accel/cpu_traversal.h"

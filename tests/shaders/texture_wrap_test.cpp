@@ -2,7 +2,7 @@
 // at bounces (shaders/include/ray_cone.glsl).
 #include "texture/texture.h"
 
-#include "support/cpu_texels.h"
+#include "texture/cpu_texels.h"
 #include "shaders/include/ray_cone.glsl"
 #include "shaders/include/texture.glsl"
 

@@ -10,10 +10,15 @@ void runAction(KeyAction action, Viewer& viewer, UiState& ui) {
     case KeyAction::Reset: viewer.resetAccumulation(); return;
     case KeyAction::ReloadShaders:
         if (viewer.reloadShaders()) viewer.log().info("reloaded the shaders (F5)");
+        if (ui.exercise.exercise() && ui.exercise.checkOnReload) {
+            ui.exercise.check();
+            viewer.resetAccumulation();   // the checks used the GPU: start the image over cleanly
+        }
         return;
     case KeyAction::Export: viewer.exportRender(ui.exportPath); return;
     case KeyAction::Screenshot: ui.pendingScreenshot = ui.screenshotPath; return;
     case KeyAction::ToggleTeach: ui.showTeach = !ui.showTeach; return;
+    case KeyAction::TogglePresenter: ui.presenter.show = !ui.presenter.show; return;
     case KeyAction::SaveScene:
         if (!ui.savePath.empty()) viewer.document().save(ui.savePath);
         return;

@@ -3,6 +3,7 @@
 // pupil file the tracer is compiled with, the last compile error and the last checks' verdicts.
 // Choosing an exercise or recompiling (F5) goes through Viewer::setTracerDefines, so a compile
 // error leaves the previous tracer running.
+#include "app/split_screen.h"
 #include "app/viewer.h"
 #include "exercise/grading.h"
 #include "exercise/manifest.h"
@@ -31,7 +32,16 @@ public:
 
     // Runs the selected exercise's checks on the current GL context.
     void check();
+    bool checkOnReload = true;   // F5 runs the checks too, after recompiling the tracer
     const std::optional<ExerciseReport>& report() const { return report_; }
+    // The render check's pixel where the pupil's render and the reference differ most, in the
+    // path inspector: opens the check's scene (unless it is open) and inspects the pixel, scaled to
+    // the viewer's resolution, with the pupil's function. False when the check has no pixel or
+    // the scene or the inspection fails (the log says why).
+    bool inspectDifference(Viewer& viewer, const CheckResult& check) const;
+    // The split screen with the pupil's function on the left (A) and the reference on the right
+    // (B), at equal samples, on the viewer's scene. False without an exercise.
+    bool splitWithReference(Viewer& viewer, SplitScreen& split) const;
 
 private:
     std::vector<Exercise> exercises_;

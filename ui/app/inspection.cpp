@@ -21,7 +21,8 @@ bool Inspection::inspect(Viewer& viewer, int x, int y) {
         return false;
     }
     try {
-        if (!inspector_) inspector_ = std::make_unique<PathInspector>();
+        if (!inspector_ || inspector_->extraDefines() != viewer.runningTracerDefines())
+            inspector_ = std::make_unique<PathInspector>(PathInspector::kDefaultMaxRecords, viewer.runningTracerDefines());
         inspector_->setScene(viewer.tracedScene());
         inspector_->setBounceFilter(bounceFilterFor(viewer.debugView()), viewer.debugBounce());
         pathCount = std::clamp(pathCount, 1, 256);

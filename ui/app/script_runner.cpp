@@ -67,11 +67,14 @@ bool ScriptRunner::step(Viewer& viewer, UiState& ui, ScriptHost& host, double no
 namespace {
 
 // "selected.KEY" names a key of the selected object ("selected.radius", "selected.transform.
-// translation") or of the material it edits ("selected.albedo"), as the Material panel shows them.
+// translation") or of the material it edits ("selected.albedo"), as the Material panel shows them,
+// or of the selected light ("selected.intensity"), as the Light panel does.
 std::string selectedKey(const Viewer& viewer, const std::string& key) {
     const std::string prefix = "selected.";
-    if (key.rfind(prefix, 0) != 0 || viewer.selection.object() < 0) return key;
+    if (key.rfind(prefix, 0) != 0) return key;
     const std::string field = key.substr(prefix.size());
+    if (viewer.selection.light() >= 0) return "lights." + std::to_string(viewer.selection.light()) + "." + field;
+    if (viewer.selection.object() < 0) return key;
     for (const MaterialParamSpec& p : materialParameters())
         if (p.key == field) return "materials." + std::to_string(viewer.selection.editedMaterial()) + "." + field;
     return "objects." + std::to_string(viewer.selection.object()) + "." + field;
@@ -110,6 +113,12 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
         viewer.selection.select(i);
         return true;
     }
+    if (c.name == "select-light") {
+        const int i = int(num(0));
+        if (i < -1 || i >= int(viewer.scene().lights.size())) return false;
+        viewer.selection.selectLight(i);
+        return true;
+    }
     if (c.name == "debug-view") {
         viewer.setDebugView(*parseDebugView(a[0]));
         return true;
@@ -121,6 +130,7 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
     if (c.name == "overlay") {
         OverlaySettings& o = viewer.overlays;
         if (a[0] == "paths") viewer.inspection.overlay.show = a[1] == "on";
+        else if (a[0] == "lights") o.lights = a[1] == "on";
         else (a[0] == "boxes" ? o.boxes : a[0] == "selected" ? o.selectedOnly : a[0] == "bvh" ? o.bvh : o.meshBvh) = a[1] == "on";
         return true;
     }
@@ -188,7 +198,9 @@ bool ScriptRunner::run(const ScriptCommand& c, Viewer& viewer, UiState& ui, Scri
     }
     if (c.name == "key") {   // pressed in the window loop, as a presenter's clicker would
         ui.pendingKey = a[0];
-        waitFrames_ = 2;
+        ui.pendingKeyFrames = a.size() > 1 ? int(num(1)) : 1;
+        waitFrames_ = ui.pendingKeyFrames + 1;   // held, then released
+
         return true;
     }
     if (c.name == "lesson") {

@@ -11,6 +11,12 @@ void Selection::select(int object, int material) {
     const bool valid = objectRef(scene_, object).has_value();
     object_ = valid ? object : -1;
     material_ = valid ? material : -1;
+    light_ = -1;
+}
+
+void Selection::selectLight(int light) {
+    select(-1);
+    light_ = light >= 0 && light < int(scene_.lights.size()) ? light : -1;
 }
 
 int Selection::editedMaterial() const {

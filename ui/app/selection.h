@@ -2,7 +2,8 @@
 // The selected object (app/scene_object.h: spheres, then mesh instances; -1 = none), shared by the
 // outliner, picking, the box overlay, the Material panel, `selected.KEY` and the BRDF explorer;
 // and the material of it that they edit: a click takes the material under the cursor (a glTF
-// mesh's per-triangle one), -1 = the object's own.
+// mesh's per-triangle one), -1 = the object's own. Or, instead of an object, a light of
+// Scene::lights (the outliner's rows after the objects, the Light panel, the light gizmos).
 #include "app/log.h"
 #include "app/view_geometry.h"
 #include "scene/scene.h"
@@ -14,8 +15,10 @@ namespace raylab::ui {
 class Selection {
 public:
     explicit Selection(const Scene& scene) : scene_(scene) {}
-    void select(int object, int material = -1);   // out of range: none
+    void select(int object, int material = -1);   // out of range: none; deselects the light
+    void selectLight(int light);                   // out of range: none; deselects the object
     int object() const { return object_; }
+    int light() const { return light_; }           // index into Scene::lights, -1 = none
     int material() const { return material_; }
     // The material the Material panel and `selected.KEY` edit (-1 when nothing is selected).
     int editedMaterial() const;
@@ -27,6 +30,7 @@ private:
     const Scene& scene_;
     int object_ = -1;
     int material_ = -1;
+    int light_ = -1;
 };
 
 } // namespace raylab::ui

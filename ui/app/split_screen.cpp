@@ -27,8 +27,11 @@ void SplitScreen::start(SplitBudget budget) {
 
 void SplitScreen::stop() {
     on_ = false;
-    overrides_[0].clear();
-    overrides_[1].clear();
+    for (int i = 0; i < 2; ++i) {
+        overrides_[i].clear();
+        defines_[i].reset();
+        definesName_[i].clear();
+    }
     tracers_[0].reset();
     tracers_[1].reset();
     dirty_ = true;
@@ -49,11 +52,19 @@ std::string SplitScreen::addOverride(int side, const std::string& key, const std
     return "";
 }
 
+void SplitScreen::setDefines(int side, ShaderDefines defines, std::string name) {
+    defines_[side & 1] = std::move(defines);
+    definesName_[side & 1] = std::move(name);
+    dirty_ = true;
+}
+
 std::string SplitScreen::label(int side) const {
     std::string s = side == 0 ? "A" : "B";
     const auto& list = overrides_[side & 1];
-    if (list.empty()) return s + ": as the scene";
+    const std::string& name = definesName_[side & 1];
+    if (list.empty()) return s + ": " + (name.empty() ? "as the scene" : name);
     s += ":";
+    if (!name.empty()) s += " " + name + ",";
     for (const auto& [k, v] : list) s += " " + k + "=" + v;
     return s;
 }
@@ -71,8 +82,14 @@ void SplitScreen::rebuild(Viewer& viewer) {
         s.render.height = viewer.imageHeight();
         try {
             for (const auto& [k, v] : overrides_[i]) setParam(s, k, v);
-            const bool fresh = !tracers_[i];
-            if (fresh) tracers_[i] = std::make_unique<PathTracer>();
+            const ShaderDefines& wanted = defines_[i] ? *defines_[i] : viewer.runningTracerDefines();
+            const bool fresh = !tracers_[i] || builtWith_[i] != wanted;
+            if (fresh) {
+                TracerOptions options;
+                options.extraDefines = wanted;
+                tracers_[i] = std::make_unique<PathTracer>(options);
+                builtWith_[i] = wanted;
+            }
             const std::string variant = tracers_[i]->variantName();
             tracers_[i]->setScene(s);
             if (fresh || tracers_[i]->variantName() != variant) {

@@ -5,6 +5,8 @@
 // in whole passes on the same seed as raylab-render, so each half is exactly raylab-render's image
 // of that side's settings. Both sides keep a convergence series (stats/convergence_series.h).
 // Follows the viewer: any restart of its accumulation (an edit, a camera move) rebuilds both sides.
+// Each side's tracer is compiled with the viewer's running defines (a code-track exercise's
+// function) unless the side is given its own (the exercise's "yours against the reference").
 // Needs a current GL 4.5 context once turned on.
 #include "app/split_accounting.h"
 #include "app/viewer.h"
@@ -13,6 +15,7 @@
 #include "stats/convergence_series.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +39,9 @@ public:
     std::string addOverride(int side, const std::string& key, const std::string& value, const Scene& scene);
     const std::vector<std::pair<std::string, std::string>>& overrides(int side) const { return overrides_[side & 1]; }
     std::string label(int side) const;   // "A: render.nee=false" (or "A: as the scene")
+    // Side 0 or 1 compiled with these defines instead of the viewer's; stop() forgets them.
+    // `name` is what the side's label calls them ("your function", "the reference").
+    void setDefines(int side, ShaderDefines defines, std::string name);
     float divider = 0.5f;                // 0 to 1 of the image width: A left of it, B right
 
     // Traces whole passes, side by side as the accounting says, for about budgetSeconds (at least
@@ -62,6 +68,9 @@ private:
     bool dirty_ = true;
     std::uint64_t seenRestarts_ = ~std::uint64_t(0);
     std::vector<std::pair<std::string, std::string>> overrides_[2];
+    std::optional<ShaderDefines> defines_[2];   // none: the viewer's running defines
+    std::string definesName_[2];
+    ShaderDefines builtWith_[2];                 // the defines tracers_[i] was compiled with
     Scene scenes_[2];
     std::unique_ptr<PathTracer> tracers_[2];
     SplitAccounting accounting_;

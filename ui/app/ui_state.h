@@ -3,6 +3,7 @@
 // out (a screenshot needs the finished frame), and where the viewport drew the image last frame.
 #include "app/exercise_session.h"
 #include "app/lesson_session.h"
+#include "app/presenter.h"
 #include "app/split_screen.h"
 #include "inspect/sample_points.h"
 #include "selftest/self_test.h"
@@ -38,8 +39,11 @@ struct UiState {
     bool showTeach = false;        // the Teach window is open (F1, --lesson, the script's lesson)
     int teachTab = -1;             // a tab to bring to the front next frame (0 lesson, 1 classroom, 2 self-test, 3 exercise)
     std::string pendingKey;        // a key the script presses next frame ("page-down", "page-up")
+    int pendingKeyFrames = 1;      // how many frames the script holds it down
+    bool focusViewport = false;    // the viewport takes the keyboard next frame (the script's camera keys)
     bool teachFocused = false;     // the Teach window had the keyboard last frame (arrows and Space step)
     LessonSession lesson;          // the Lesson panel's model; its step scripts run in the window loop
+    PresenterState presenter;      // class mode and the presenter view (app/presenter.h)
     ExerciseSession exercise;      // the Exercise tab's model: the code track's pupil function in the tracer
     bool stepScriptRunning = false;   // a lesson step's script is running (an automation script waits)
     SplitScreen split;             // A/B split screen

@@ -34,10 +34,11 @@ bool Viewer::openScene(const std::filesystem::path& file) {
 }
 
 void Viewer::pollFileChanges() {
-    const int keep = selection.object(), keepMaterial = selection.material();
+    const int keep = selection.object(), keepMaterial = selection.material(), keepLight = selection.light();
     if (!document_.reloadIfChanged()) return;
     selection.select(-1);
     if (keep < objectCount(scene_)) selection.select(keep, keepMaterial);
+    if (keepLight >= 0) selection.selectLight(keepLight);   // none when the light is gone
 }
 
 bool Viewer::exportRender(const std::filesystem::path& file) {
@@ -113,6 +114,7 @@ bool Viewer::reloadShaders() {
         return false;
     }
     document_.clearError();
+    runningDefines_ = variants_.extraDefines();
     slicer_.forgetCosts();   // new shaders, new costs
     if (document_.loaded()) {
         tracer_->setScene(tracedScene());

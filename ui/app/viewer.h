@@ -40,6 +40,7 @@ struct OverlaySettings {
     bool bvh = false;            // the top-level BVH's nodes at bvhDepth (app/bvh_overlay.h)
     bool meshBvh = false;        // the meshes' BVH nodes at bvhDepth
     int bvhDepth = 0;            // 0 = the root
+    bool lights = false;         // a gizmo per light (app/light_gizmo.h)
 };
 
 class Viewer : private SceneRenderer {
@@ -68,6 +69,9 @@ public:
     // Compiles the tracer with these defines added (a code-track exercise's file define; empty:
     // the reference); on a compile error the previous tracer keeps running. False on an error.
     bool setTracerDefines(ShaderDefines defines);
+    // The defines the running tracer was compiled with (the last that compiled), which the path
+    // inspector compiles in too so that it records the paths of the image on screen.
+    const ShaderDefines& runningTracerDefines() const { return runningDefines_; }
     Scene tracedScene() const;   // the scene with the resolution scale applied (what the tracer traces)
     bool hasScene() const { return document_.loaded() && tracer_ != nullptr; }
 
@@ -138,6 +142,7 @@ private:
     const Scene& scene_ = document_.scene();   // what the tracer traces
     std::unique_ptr<PathTracer> compileVariant(TracerVariant v);   // throws ShaderError
     bool activateVariant(TracerVariant v);
+    ShaderDefines runningDefines_;
     TracerVariants variants_;   // the fragment entry (bands need its scissor), compiled when a view first needs one
     PathTracer* tracer_ = nullptr;
     TracerVariant variant_ = TracerVariant::Beauty;

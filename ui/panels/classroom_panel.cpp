@@ -1,5 +1,6 @@
 // The Classroom tab of the Teach window: UI scale for projectors, bounce stepping, the renderer's
 // stages, the A/B split screen, and the live convergence plot.
+#include "app/actions.h"
 #include "panels/convergence_plot.h"
 #include "panels/panels.h"
 
@@ -41,6 +42,8 @@ void drawClassroomPanel(Viewer& viewer, UiState& ui) {
     if (ImGui::CollapsingHeader("Projector", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::SetNextItemWidth(160.0f);
         ImGui::SliderFloat("UI scale (Ctrl +/-/0)", &ui.uiScale, kMinUiScale, kMaxUiScale, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+        ImGui::Checkbox("class mode: answers only on the presenter view", &ui.presenter.classMode);
+        ImGui::Checkbox(buttonLabel("presenter view", KeyAction::TogglePresenter).c_str(), &ui.presenter.show);
     }
     if (!viewer.hasScene()) return;
     if (ImGui::CollapsingHeader("Bounce stepping", ImGuiTreeNodeFlags_DefaultOpen)) {

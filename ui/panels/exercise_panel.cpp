@@ -1,6 +1,7 @@
 // The Exercise tab of the Teach window: pick a code-track exercise, and the tracer runs with the
 // pupil's function (F5 recompiles it after an edit); a compile error shows here at the pupil's
-// lines while the previous tracer keeps running; "Check" runs its checks and shows the verdicts.
+// lines while the previous tracer keeps running; "Check" (and F5) runs its checks and shows the
+// verdicts, and a failed render check opens the path inspector at the pixel it picked.
 #include "panels/panels.h"
 
 #include <imgui.h>
@@ -50,6 +51,11 @@ void drawExercisePanel(Viewer& viewer, UiState& ui) {
         s.check();
         viewer.resetAccumulation();   // the checks used the GPU: start the image over cleanly
     }
+    ImGui::SameLine();
+    ImGui::Checkbox("check on F5", &s.checkOnReload);
+    if (ImGui::Button("Split: yours | the reference")) s.splitWithReference(viewer, ui.split);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Left of the divider your function, right the reference, at equal samples (Classroom tab: split)");
     if (!s.report()) return;
     const ExerciseReport& r = *s.report();
     if (!r.compiled) {
@@ -68,6 +74,11 @@ void drawExercisePanel(Viewer& viewer, UiState& ui) {
             ImGui::PushStyleColor(ImGuiCol_Text, kFail);
             ImGui::TextWrapped("%s", c.message.c_str());
             ImGui::PopStyleColor();
+        }
+        if (c.pixelX >= 0) {
+            const std::string label = "Inspect pixel (" + std::to_string(c.pixelX) + ", " + std::to_string(c.pixelY) +
+                                      ") of the check's scene##" + c.check;
+            if (ImGui::Button(label.c_str())) s.inspectDifference(viewer, c);
         }
         ImGui::Unindent();
     }

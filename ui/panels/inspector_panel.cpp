@@ -100,11 +100,12 @@ void bounceTable(Viewer& viewer, const PathRecord& p) {
         cell(rgb(b.emission));
         cell(num(b.emissionWeight));
         cell(added(b.emissionCounted, b.emissionAdded()));
-        cell(lightStatusName(b.lightStatus));
+        cell(b.lightStatus == LightStatus::None ? "-" : lightStatusName(b.lightStatus) + ": " + b.lightName);
         if (b.lightStatus != LightStatus::None && ImGui::IsItemHovered())
-            ImGui::SetTooltip("light %d, dir %s\nLe %s\nf cos %s, cos %.4g\nlight pdf %.4g, BSDF pdf %.4g", b.lightIndex,
-                              rgb(b.lightDirection).c_str(), rgb(b.lightRadiance).c_str(), rgb(b.lightFCos).c_str(),
-                              double(b.lightCosTheta), double(b.lightPdf), double(b.lightBsdfPdf));
+            ImGui::SetTooltip("%s (light %d), dir %s\nLe %s\nf cos %s, cos %.4g\nlight pdf %.4g, BSDF pdf %.4g\nMIS pdf %s",
+                              b.lightName.c_str(), b.lightIndex, rgb(b.lightDirection).c_str(), rgb(b.lightRadiance).c_str(),
+                              rgb(b.lightFCos).c_str(), double(b.lightCosTheta), double(b.lightPdf), double(b.lightBsdfPdf),
+                              lightMisPdfText(b).c_str());
         cell(b.lightStatus == LightStatus::None ? "-" : num(b.lightMisWeight));
         cell(b.lightStatus == LightStatus::None ? "-" : added(b.lightCounted, b.lightAdded()));
         cell(b.rrOutcome < 0 ? "-" : num(b.rrProbability) + (b.rrOutcome ? " lived" : " died"));

@@ -22,11 +22,11 @@ void heading(const char* text) {
     ImGui::Separator();
 }
 
-void listItems(const std::vector<std::string>& items, bool numbered) {
+void listItems(const std::vector<std::string>& items, bool numbered, const Lesson& lesson) {
     for (std::size_t i = 0; i < items.size(); ++i) {
         ImGui::PushID(int(i));
         const std::string md = (numbered ? std::to_string(i + 1) + ". " : "- ") + items[i];
-        drawMarkdown(md);
+        drawMarkdown(md, &lesson);
         ImGui::PopID();
     }
 }
@@ -94,11 +94,11 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     if (!l.level.empty() || l.minutes > 0)
         ImGui::TextDisabled("Level: %s, %d minutes", l.level.empty() ? "-" : l.level.c_str(), l.minutes);
     ImGui::PushID("intro");
-    drawMarkdown(l.introduction);
+    drawMarkdown(l.introduction, &l);
     ImGui::PopID();
     heading("Learning goals");
     ImGui::PushID("goals");
-    listItems(l.goals, false);
+    listItems(l.goals, false, l);
     ImGui::PopID();
     for (int i = 0; i < n; ++i) {
         const LessonStep& step = l.steps[std::size_t(i)];
@@ -122,7 +122,7 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
             ImGui::SetScrollHereY(0.1f);
             scrolledTo = cur;
         }
-        drawMarkdown(step.text);
+        drawMarkdown(step.text, &l);
         if (active) {   // a bar down the left edge of the current step
             const ImVec2 bottom = ImGui::GetCursorScreenPos();
             ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(top.x - 6.0f, top.y), ImVec2(top.x - 3.0f, bottom.y),
@@ -132,16 +132,16 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     }
     heading("Questions");
     ImGui::PushID("questions");
-    listItems(l.questions, true);
+    listItems(l.questions, true, l);
     ImGui::PopID();
     heading("Exercise");
     ImGui::PushID("exercise");
-    drawMarkdown(l.exercise);
+    drawMarkdown(l.exercise, &l);
     ImGui::PopID();
     if (!l.writeItYourself.empty()) {
         heading("Write it yourself");
         ImGui::PushID("code");
-        drawMarkdown(l.writeItYourself);
+        drawMarkdown(l.writeItYourself, &l);
         // Each exercise the section names opens in the Exercise tab, the tracer running the pupil's file.
         for (const std::string& name : l.codeExercises) {
             if (!ImGui::Button(("Open exercise " + name).c_str())) continue;
@@ -160,17 +160,21 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     if (!l.goingFurther.empty()) {
         heading("Going further");
         ImGui::PushID("further");
-        drawMarkdown(l.goingFurther);
+        drawMarkdown(l.goingFurther, &l);
         ImGui::PopID();
     }
-    if (!l.teacherNotes.empty() && ImGui::CollapsingHeader("Teacher's notes")) {
+    // Class mode: the answers stay off the projector, on the presenter view.
+    if (!l.teacherNotes.empty() && ui.presenter.classMode) {
+        ImGui::Spacing();
+        ImGui::TextDisabled("Teacher's notes: on the presenter view (%s)", std::string(keyBinding(KeyAction::TogglePresenter).keyLabel).c_str());
+    } else if (!l.teacherNotes.empty() && ImGui::CollapsingHeader("Teacher's notes")) {
         ImGui::PushID("notes");
-        drawMarkdown(l.teacherNotes);
+        drawMarkdown(l.teacherNotes, &l);
         ImGui::PopID();
     }
     if (!l.sources.empty() && ImGui::CollapsingHeader("Sources")) {
         ImGui::PushID("sources");
-        drawMarkdown(l.sources);
+        drawMarkdown(l.sources, &l);
         ImGui::PopID();
     }
     if (lessonFont()) ImGui::PopFont();

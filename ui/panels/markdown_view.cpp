@@ -1,9 +1,15 @@
 #include "panels/markdown_view.h"
 
+#include "io/image_io.h"
+
+#include <glad/gl.h>
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <unordered_map>
 
@@ -110,9 +116,86 @@ void drawTable(const std::vector<MarkdownBlock>& blocks, std::size_t& i) {
     --i;   // the caller's loop steps past the last row
 }
 
+// A picture file read once: its size and texture, or why it cannot be shown.
+struct Picture {
+    int width = 0, height = 0;
+    std::vector<float> rgba;   // kept until a GL context takes it
+    GLuint texture = 0;
+    std::string error;
+};
+
+// Textures need the viewer's GL context: ImGui's OpenGL backend is installed only where there is one.
+bool haveGlContext() {
+    const char* backend = ImGui::GetIO().BackendRendererName;
+    return backend && std::strcmp(backend, "imgui_impl_opengl3") == 0 && GLAD_GL_VERSION_1_1;
+}
+
+Picture& picture(const std::filesystem::path& file) {
+    static std::map<std::filesystem::path, Picture> pictures;
+    auto [it, fresh] = pictures.try_emplace(file);
+    Picture& p = it->second;
+    if (fresh) {
+        try {
+            Image image = readImage(file);
+            p.width = image.width;
+            p.height = image.height;
+            p.rgba = std::move(image.rgba);
+        } catch (const std::exception& e) {
+            p.error = e.what();
+        }
+    }
+    if (p.error.empty() && p.texture == 0 && haveGlContext()) {
+        glGenTextures(1, &p.texture);
+        glBindTexture(GL_TEXTURE_2D, p.texture);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, p.width, p.height, 0, GL_RGBA, GL_FLOAT, p.rgba.data());
+        glBindTexture(GL_TEXTURE_2D, 0);
+        p.rgba = {};
+    }
+    return p;
+}
+
+// The picture at the panel's width (its top row first, as OpenImageIO reads it); a frame with its
+// alt text where no texture can be made, the located reason where the file cannot be read.
+void drawPicture(const MarkdownBlock& b, const Lesson* lesson) {
+    std::string alt;
+    for (const MarkdownSpan& s : b.spans) alt += s.text;
+    std::string where = lesson ? lesson->file.string() : std::string("markdown");
+    if (lesson) {
+        const auto it = std::find_if(lesson->pictures.begin(), lesson->pictures.end(),
+                                     [&](const LessonPicture& p) { return p.source == b.source; });
+        if (it != lesson->pictures.end() && it->line > 0) where += ":" + std::to_string(it->line);
+    }
+    auto problem = [&](const std::string& why) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s: cannot show the picture '%s': %s", where.c_str(),
+                           b.source.c_str(), why.c_str());
+        ImGui::PopTextWrapPos();
+    };
+    if (!lesson) return problem("pictures are files relative to a lesson, and there is none");
+    const Picture& p = picture(lesson->picturePath(b.source));
+    if (!p.error.empty()) return problem(p.error);
+    const float width = std::max(1.0f, ImGui::GetContentRegionAvail().x);
+    const ImVec2 size(width, width * float(p.height) / float(std::max(1, p.width)));
+    if (p.texture) {
+        ImGui::Image(ImTextureID(std::uintptr_t(p.texture)), size);
+    } else {
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        ImGui::GetWindowDrawList()->AddRect(at, ImVec2(at.x + size.x, at.y + size.y), IM_COL32(128, 128, 128, 255));
+        ImGui::TextDisabled("[picture: %s]", alt.c_str());
+        ImGui::SetCursorScreenPos(at);
+        ImGui::Dummy(size);
+    }
+    if (!alt.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", alt.c_str());
+}
+
 } // namespace
 
-void drawMarkdown(const std::vector<MarkdownBlock>& blocks) {
+void drawMarkdown(const std::vector<MarkdownBlock>& blocks, const Lesson* lesson) {
     const float indentStep = ImGui::GetFontSize() * 1.2f;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         const MarkdownBlock& b = blocks[i];
@@ -159,6 +242,7 @@ void drawMarkdown(const std::vector<MarkdownBlock>& blocks) {
         }
         case MarkdownBlock::TableRow: drawTable(blocks, i); break;
         case MarkdownBlock::Rule: ImGui::Separator(); break;
+        case MarkdownBlock::Image: drawPicture(b, lesson); break;
         }
         if (indent > 0.0f) ImGui::Unindent(indent);
     }
@@ -184,7 +268,7 @@ void loadLessonFonts(float pixels) {
 
 ImFont* lessonFont() { return g_fonts.regular; }
 
-void drawMarkdown(std::string_view markdown) {
+void drawMarkdown(std::string_view markdown, const Lesson* lesson) {
     // Lesson texts do not change between frames: parse each once (the cache is dropped when large).
     static std::unordered_map<std::string, std::vector<MarkdownBlock>> cache;
     auto it = cache.find(std::string(markdown));
@@ -192,7 +276,7 @@ void drawMarkdown(std::string_view markdown) {
         if (cache.size() > 512) cache.clear();
         it = cache.emplace(std::string(markdown), parseMarkdownBlocks(markdown)).first;
     }
-    drawMarkdown(it->second);
+    drawMarkdown(it->second, lesson);
 }
 
 } // namespace raylab::ui

@@ -1,10 +1,12 @@
-// Material panel: the outliner (every object: spheres, then mesh instances; click to select), the
-// selected object's keys (a sphere's centre and radius, a mesh's transform) and the keys of the
-// material it edits, all built from the parameter tables so new keys show up without UI changes.
-// A mesh with glTF per-triangle materials lists them; the one under the last click is edited.
+// Material panel: the outliner (every object: spheres, then mesh instances, then the lights; click
+// to select), the selected object's keys (a sphere's centre and radius, a mesh's transform) and the
+// keys of the material it edits, or the selected light's keys (light_panel.cpp), all built from
+// the parameter tables so new keys show up without UI changes. A mesh with glTF per-triangle
+// materials lists them; the one under the last click is edited.
 #include "panels/panels.h"
 #include "panels/param_widget.h"
 
+#include "app/scene_light.h"
 #include "app/scene_object.h"
 
 #include <imgui.h>
@@ -76,14 +78,25 @@ void drawMaterialPanel(Viewer& viewer, UiState&) {
     ImGui::PushItemWidth(-80.0f);
     ImGui::TextDisabled("Click an object in the viewport or here.");
     if (ImGui::BeginListBox("##outliner", ImVec2(-1, 6 * ImGui::GetTextLineHeightWithSpacing()))) {
-        static int scrolledTo = -1;   // a pick in the viewport scrolls its row into view once
-        for (int i = 0; i < objectCount(scene); ++i) {
-            const std::string label = objectLabel(scene, i);
-            if (ImGui::Selectable(label.c_str(), viewer.selection.object() == i)) viewer.selection.select(i);
-            if (viewer.selection.object() == i && scrolledTo != i) ImGui::SetScrollHereY();
+        static int scrolledTo = -1;   // a pick or a script's select scrolls its row into view once
+        // One row per object, then one per light: the selection's row.
+        const int objects = objectCount(scene);
+        const int selRow = viewer.selection.light() >= 0 ? objects + viewer.selection.light() : viewer.selection.object();
+        for (int i = 0; i < objects + int(scene.lights.size()); ++i) {
+            const bool light = i >= objects;
+            const std::string label = light ? lightLabel(scene, i - objects) : objectLabel(scene, i);
+            if (ImGui::Selectable(label.c_str(), i == selRow)) {
+                if (light) viewer.selection.selectLight(i - objects);
+                else viewer.selection.select(i);
+            }
+            if (i == selRow && scrolledTo != i) ImGui::SetScrollHereY();
         }
-        scrolledTo = viewer.selection.object();
+        scrolledTo = selRow;
         ImGui::EndListBox();
+    }
+    if (viewer.selection.light() >= 0) {
+        ImGui::Separator();
+        drawLightKeys(viewer, positionSpeed(viewer));
     }
     const int sel = viewer.selection.object();
     if (const auto r = objectRef(scene, sel)) {

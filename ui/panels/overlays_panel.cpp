@@ -22,6 +22,8 @@ void drawOverlaysPanel(Viewer& viewer, UiState&) {
     ImGui::Checkbox("mesh BVHs", &viewer.overlays.meshBvh);
     ImGui::SliderInt("depth", &viewer.overlays.bvhDepth, 0, std::max(1, viewer.geometry() ? viewer.geometry()->maxDepth : 1));
     ImGui::TextDisabled("BVH nodes at that depth (and shallower leaves): top level magenta, meshes orange.");
+    ImGui::Checkbox("lights", &viewer.overlays.lights);
+    ImGui::TextDisabled("A gizmo per light: point a star, spot its cone, sun an arrow from the centre; selected cyan.");
     ImGui::Separator();
     ImGui::Checkbox("inspect mode (a click inspects)", &viewer.inspection.clickInspects);
     ImGui::Checkbox("Inspector", &viewer.inspection.panelOpen);

@@ -12,6 +12,9 @@ void drawViewport(Viewer& viewer, UiState& ui);       // viewport_panel.cpp: ima
 void drawRenderPanel(Viewer& viewer, UiState& ui);    // render_panel.cpp: files, passes, stop conditions
 void drawCameraPanel(Viewer& viewer, UiState& ui);    // camera_panel.cpp
 void drawMaterialPanel(Viewer& viewer, UiState& ui);  // material_panel.cpp: outliner, object, material
+// The selected light's keys (light_panel.cpp), drawn by the Material panel when the outliner's
+// selection is a light; positions drag by positionSpeed per pixel.
+void drawLightKeys(Viewer& viewer, float positionSpeed);
 void drawOverlaysPanel(Viewer& viewer, UiState& ui);  // overlays_panel.cpp
 void drawDebugPanel(Viewer& viewer, UiState& ui);     // debug_panel.cpp
 void drawStatsPanel(Viewer& viewer, UiState& ui);     // stats_panel.cpp
@@ -28,6 +31,9 @@ void drawLessonPanel(Viewer& viewer, UiState& ui);
 void drawClassroomPanel(Viewer& viewer, UiState& ui);
 void drawSelfTestPanel(Viewer& viewer, UiState& ui);
 void drawExercisePanel(Viewer& viewer, UiState& ui);   // exercise_panel.cpp: the code track
+// The presenter view (presenter_panel.cpp) into the current window: the main window's Presenter
+// panel (F2) or the presenter's own window (ui/presenter_window.h).
+void drawPresenterPanel(UiState& ui);
 // The Teach window's presenter keys (lesson_panel.cpp): Right/Left/Space while it has the
 // keyboard. Call between NewFrame and drawing.
 void presenterKeys(UiState& ui);

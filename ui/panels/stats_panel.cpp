@@ -40,6 +40,9 @@ void drawStatsPanel(Viewer& viewer, UiState&) {
                         st.materials);
             ImGui::Text("lights: %zu emissive spheres, %zu triangles, %zu point/spot/distant", st.emissiveSpheres,
                         st.emissiveTriangles, st.analyticLights);
+            if (st.displacedMeshes > 0)
+                ImGui::Text("displaced %zu meshes: %zu -> %zu triangles, %.1f ms on loading", st.displacedMeshes,
+                            st.displacedTrianglesBefore, st.displacedTriangles, st.displacementMs);
         }
         ImGui::Text("image %d x %d, restarts %llu", t->width(), t->height(), (unsigned long long)s.restarts);
     }

@@ -4,9 +4,11 @@
 
 #include "app/bvh_overlay.h"
 #include "app/camera_control.h"
+#include "app/light_gizmo.h"
 #include "app/scene_object.h"
 #include "panels/heat_legend.h"
 #include "app/view_geometry.h"
+#include "script/key_actions.h"
 
 #include <imgui.h>
 
@@ -28,7 +30,7 @@ ImVec2 toWindow(const ImageRect& r, int w, int h, ImagePoint p) {
 void drawOverlays(Viewer& viewer, const ImageRect& r) {
     const Scene& scene = viewer.scene();
     const OverlaySettings& o = viewer.overlays;
-    if (!o.boxes && !o.selectedOnly && !o.bvh && !o.meshBvh) return;
+    if (!o.boxes && !o.selectedOnly && !o.bvh && !o.meshBvh && !o.lights) return;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.width, r.y + r.height), true);
     const int w = viewer.imageWidth(), h = viewer.imageHeight();
@@ -50,6 +52,11 @@ void drawOverlays(Viewer& viewer, const ImageRect& r) {
         for (const Segment& s : projectBox(scene, w, h, *box))
             dl->AddLine(toWindow(r, w, h, s.a), toWindow(r, w, h, s.b), colour, 1.0f);
     }
+    for (int i = 0; o.lights && i < int(scene.lights.size()); ++i) {
+        const ImU32 colour = i == viewer.selection.light() ? IM_COL32(0, 255, 255, 255) : IM_COL32(255, 230, 90, 255);
+        for (const Segment& s : lightGizmo(scene, w, h, i))
+            dl->AddLine(toWindow(r, w, h, s.a), toWindow(r, w, h, s.b), colour, 1.0f);
+    }
     dl->PopClipRect();
 }
 
@@ -58,13 +65,17 @@ void keyboardCamera(Viewer& viewer) {
     if (io.WantTextInput || io.KeyCtrl) return;
     const float dt = std::min(io.DeltaTime, 0.1f);
     const float step = viewer.cameraSpeed * dt * (io.KeyShift ? 4.0f : 1.0f);
-    // GLFW's key codes for letters are their upper-case ASCII codes (the backend indexes KeysDown by them).
-    auto down = [](int key) { return key >= 0 && key < int(IM_ARRAYSIZE(ImGui::GetIO().KeysDown)) && ImGui::IsKeyDown(key); };
-    const float forward = float(down('W')) - float(down('S'));
-    const float right = float(down('D')) - float(down('A'));
-    const float up = float(down('E')) - float(down('Q'));
-    const float yaw = float(down(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) - float(down(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)));
-    const float pitch = float(down(ImGui::GetKeyIndex(ImGuiKey_UpArrow))) - float(down(ImGui::GetKeyIndex(ImGuiKey_DownArrow)));
+    // The backend indexes KeysDown by GLFW key codes (script/key_actions.h).
+    auto down = [](CameraMotion m) {
+        const int key = cameraKey(m);
+        return key >= 0 && key < int(IM_ARRAYSIZE(ImGui::GetIO().KeysDown)) && ImGui::IsKeyDown(key);
+    };
+    auto axis = [&down](CameraMotion plus, CameraMotion minus) { return float(down(plus)) - float(down(minus)); };
+    const float forward = axis(CameraMotion::Forward, CameraMotion::Back);
+    const float right = axis(CameraMotion::Right, CameraMotion::Left);
+    const float up = axis(CameraMotion::Up, CameraMotion::Down);
+    const float yaw = axis(CameraMotion::TurnRight, CameraMotion::TurnLeft);
+    const float pitch = axis(CameraMotion::LookUp, CameraMotion::LookDown);
     if (forward == 0.0f && right == 0.0f && up == 0.0f && yaw == 0.0f && pitch == 0.0f) return;
     Camera& cam = viewer.scene().camera;
     moveCamera(cam, forward * step, right * step, up * step);
@@ -106,6 +117,8 @@ void tooltip(Viewer& viewer, const ImageRect& r) {
 
 void drawViewport(Viewer& viewer, UiState& ui) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
+    if (ui.focusViewport) ImGui::SetNextWindowFocus();
+    ui.focusViewport = false;
     const bool open = ImGui::Begin("Viewport", nullptr, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     if (!open) {

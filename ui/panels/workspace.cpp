@@ -38,6 +38,13 @@ void drawWorkspace(Viewer& viewer, UiState& ui, float W, float H) {
     place(left + mid * 0.3f, H * 0.3f, mid * 0.7f, H * 0.5f);
     drawBrdfExplorerPanel(viewer, ui);
     drawTeachWindow(viewer, ui, H);   // on top, when open (F1)
+    // The presenter view on one screen (F2), over the image's right half; with its own window the
+    // window loop draws it there.
+    if (ui.presenter.show && !ui.presenter.ownWindow) {
+        place(left + mid * 0.5f, 20, mid * 0.5f, H * 0.6f);
+        if (ImGui::Begin("Presenter", &ui.presenter.show)) drawPresenterPanel(ui);
+        ImGui::End();
+    }
 }
 
 } // namespace raylab::ui

@@ -1,8 +1,8 @@
 #pragma once
 // The CPU side of shaders/include/texture.glsl's one external: `vec4 texelAt(uint i)` reads the
-// texels a test points `cpuTexels` at. One definition for every test that includes texture.glsl:
+// texels a caller points `cpuTexels` at. One definition for every file that includes texture.glsl:
 // two inline texelAt with different bodies in one program break the one-definition rule (the
-// linker keeps one, and the other test reads through a null pointer).
+// linker keeps one, and the other reads through a null pointer).
 #include <glm/glm.hpp>
 
 #include <vector>

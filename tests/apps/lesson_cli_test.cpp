@@ -1,0 +1,58 @@
+// raylab-lesson as a teacher runs it: a handout by the lesson's name, and located errors with a
+// non-zero exit for an unknown lesson, an output it cannot write and bad flags.
+#include "support/render_cli.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace raylab::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Runs in the source folder: outputs are named by absolute paths into `dir`.
+CliRun lessonCli(const std::string& args, const fs::path& dir) { return runProgram(RAYLAB_LESSON_EXE, args, dir); }
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+} // namespace
+
+TEST(LessonCli, ExportsBothSheetsOfALessonByName) {
+    const fs::path dir = scratchDir("raylab_lesson_export");
+    CliRun r = lessonCli("export 03 --pupil -o " + quoted(dir / "pupil.html"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string pupil = slurp(dir / "pupil.html");
+    EXPECT_NE(pupil.find("<h1>Lesson 3: Ray–sphere intersection</h1>"), std::string::npos);
+    EXPECT_EQ(pupil.find("Teacher's notes"), std::string::npos);
+    r = lessonCli("export '" + (fs::path(RAYLAB_SOURCE_DIR) / "lessons/03-ray-sphere.md").string() + "' --teacher -o " + quoted(dir / "teacher.html"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(slurp(dir / "teacher.html").find("Teacher's notes and answers"), std::string::npos);
+    r = lessonCli("list", dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("03-ray-sphere\tVWO 5–6\t45\tLesson 3: Ray–sphere intersection"), std::string::npos) << r.out;
+    fs::remove_all(dir);
+}
+
+TEST(LessonCli, BadInputExitsNonZeroWithALocatedMessage) {
+    const fs::path dir = scratchDir("raylab_lesson_bad");
+    CliRun r = lessonCli("export 99-nothing --pupil -o " + quoted(dir / "a.html"), dir);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("99-nothing: error: no such lesson file, nor a lesson of that name"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("03-ray-sphere"), std::string::npos) << "the message lists the lessons: " << r.err;
+    r = lessonCli("export 03 --pupil -o '" + (dir / "no/such/folder/a.html").string() + "'", dir);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find((dir / "no/such/folder/a.html").string() + ": error: cannot write the sheet"), std::string::npos) << r.err;
+    r = lessonCli("export 03 -o " + quoted(dir / "a.html"), dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("error: give one of --pupil or --teacher"), std::string::npos) << r.err;
+    r = lessonCli("export 03 --pupil --teacher -o " + quoted(dir / "a.html"), dir);
+    EXPECT_EQ(r.status, 2);
+    r = lessonCli("export 03 --pupil -o " + quoted(dir / "a.pdf"), dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find((dir / "a.pdf").string() + ": error: the sheet is HTML"), std::string::npos) << r.err;
+    r = lessonCli("export 03 --pupil --colour -o " + quoted(dir / "a.html"), dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_FALSE(fs::exists(dir / "a.html"));
+    fs::remove_all(dir);
+}
