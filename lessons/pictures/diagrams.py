@@ -234,6 +234,80 @@ def thin_lens(out):
     finish(fig, out)
 
 
+def plot(xlabel, ylabel):
+    """A figure with plain axes, for the diagrams that are graphs."""
+    fig = plt.figure(figsize=(W / DPI, H / DPI), dpi=DPI)
+    ax = fig.add_axes([0.11, 0.17, 0.86, 0.78])
+    ax.set_xlabel(xlabel, fontsize=9)
+    ax.set_ylabel(ylabel, fontsize=9)
+    ax.tick_params(labelsize=8)
+    for side in ("top", "right"):
+        ax.spines[side].set_visible(False)
+    return fig, ax
+
+
+def tone_curves(out):
+    """Lesson 16: clamp, Reinhard and the ACES fit of shaders/include/tone_map.glsl over five decades."""
+    fig, ax = plot(r"linear value $\times\ 2^{exposure}$", "display value before sRGB")
+    x = np.logspace(-2, 2, 400)
+    aces = np.clip(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0, 1)
+    ax.semilogx(x, np.minimum(x, 1), color=GREY, lw=2, label="clamp: min(x, 1)")
+    ax.semilogx(x, x / (1 + x), color=BLUE, lw=2, label="Reinhard: x/(1 + x)")
+    ax.semilogx(x, aces, color=ORANGE, lw=2, label="ACES fit (Narkowicz 2015)")
+    ax.axvline(0.18, color=GREEN, lw=1, ls="--")
+    ax.text(0.2, 0.03, "middle grey 0.18", color=GREEN, fontsize=8)
+    ax.set_ylim(0, 1.05)
+    ax.set_xlim(0.01, 100)
+    ax.legend(loc="lower right", fontsize=8, frameon=False)
+    finish(fig, out)
+
+
+def schlick_angle(out):
+    """Lesson 18: Schlick's F in the mirror configuration from the right cosine, ωi·h, and the thesis's ωi·ωo."""
+    fig, ax = plot("angle θ of ωi and ωo from the normal (mirror configuration, h = n)", "Fresnel F, F0 = 0.04")
+    theta = np.linspace(0, 90, 400)
+    f0 = 0.04
+
+    def schlick(c):
+        return f0 + (1 - f0) * (1 - c) ** 5
+
+    ax.plot(theta, schlick(np.cos(np.radians(theta))), color=BLUE, lw=2, label=r"right: cos = $\omega_i \cdot h$ = cos θ")
+    ax.plot(theta, schlick(np.maximum(np.cos(np.radians(2 * theta)), 0)), color=RED, lw=2,
+            label=r"slip: cos = $\omega_i \cdot \omega_o$ = cos 2θ")
+    for f, colour in ((schlick(np.cos(np.radians(45))), BLUE), (1.0, RED)):
+        ax.plot(45, f, "o", color=colour, ms=5)
+        ax.text(46.5, f - 0.02 if f > 0.5 else f + 0.07, f"F = {f:.3f} at 45°", color=colour, fontsize=8,
+                va="top" if f > 0.5 else "bottom")
+    ax.set_xlim(0, 90)
+    ax.set_ylim(0, 1.05)
+    ax.set_xticks([0, 15, 30, 45, 60, 75, 90])
+    ax.legend(loc="upper left", fontsize=8, frameon=False)
+    finish(fig, out)
+
+
+def strata(out):
+    """Lesson 17: 16 independent points clump and leave cells empty; 16 stratified points fill each cell once."""
+    fig = plt.figure(figsize=(W / DPI, H / DPI), dpi=DPI)
+    rng = np.random.default_rng(19)
+    cells = np.arange(16)
+    jittered = (np.c_[cells % 4, cells // 4] + rng.random((16, 2))) / 4
+    for left, points, title, colour in ((0.06, rng.random((16, 2)), "independent: clumps and holes", ORANGE),
+                                        (0.54, jittered, "stratified: one point per cell", BLUE)):
+        ax = fig.add_axes([left, 0.05, 0.4, 0.78])
+        ax.set_aspect("equal")
+        ax.set_xticks(np.linspace(0, 1, 5))
+        ax.set_yticks(np.linspace(0, 1, 5))
+        ax.set_xticklabels([])
+        ax.set_yticklabels([])
+        ax.tick_params(length=0)
+        ax.grid(color="#cccccc", lw=0.8)
+        ax.set_xlim(0, 1)
+        ax.set_ylim(0, 1)
+        ax.plot(points[:, 0], points[:, 1], "o", color=colour, ms=5)
+        ax.set_title(title, fontsize=9.5, color=colour)
+    finish(fig, out)
+
+
 DIAGRAMS = {
     "rendering-equation": rendering_equation,
     "ray-sphere": ray_sphere,
@@ -241,6 +315,9 @@ DIAGRAMS = {
     "hemisphere-pdf": hemisphere_pdf,
     "microfacet-normal": microfacet_normal,
     "thin-lens": thin_lens,
+    "tone-curves": tone_curves,
+    "strata": strata,
+    "schlick-angle": schlick_angle,
 }
 
 

@@ -53,3 +53,22 @@ diagram strips "$here/11-one-and-64-samples.png" "1 spp" "$tmp/11-1.png" "64 spp
 render 12.png lesson_one_sphere.json --set materials.ball.albedo=0 --set materials.ball.transmission=1 \
     --set materials.ball.roughness=0 --set materials.ball.ior=1.5 --set render.max_bounces=12 --spp 256
 diagram palette "$tmp/12.png" "$here/12-glass-ball.png"
+
+for n in 1 8 64; do render "13-$n.png" default.json $naive --rpp 1 --spp $n; done
+diagram strips "$here/13-pass-after-pass.png" "1 pass" "$tmp/13-1.png" "8 passes" "$tmp/13-8.png" "64 passes" "$tmp/13-64.png"
+
+render 14-bsdf.png environment.json --set render.sampler=independent --set render.nee=false --spp 16
+render 14-nee.png environment.json --set render.sampler=independent --set render.nee=true --spp 16
+diagram strips "$here/14-finding-the-sun.png" "BSDF sampling" "$tmp/14-bsdf.png" "sampling the map too" "$tmp/14-nee.png"
+
+metal="--set materials.grey.albedo=0 --set materials.grey.f0=1 --set materials.grey.roughness=0.5"
+wide="--set camera.fov=100 --set render.exposure=-1"   # the whole sphere, and fireflies above the sky's grey
+render 15-dcos.png furnace.json $naive $metal $wide --set render.ggx_sampling=d_cos --spp 16
+render 15-vndf.png furnace.json $naive $metal $wide --set render.ggx_sampling=vndf --spp 16
+diagram strips "$here/15-d-cos-and-visible-normals.png" "D·cos θh" "$tmp/15-dcos.png" "visible normals" "$tmp/15-vndf.png"
+
+diagram tone-curves "$here/16-tone-curves.png"
+
+diagram strata "$here/17-strata.png"
+
+diagram schlick-angle "$here/18-schlick-angle.png"
