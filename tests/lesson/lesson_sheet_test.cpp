@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -41,7 +43,11 @@ std::string squeeze(const std::string& s) {
 std::string pageText(const std::string& html) {
     std::string text;
     bool tag = false;
-    for (const char ch : html) {
+    for (std::size_t i = 0; i < html.size(); ++i) {
+        const char ch = html[i];
+        // A table's cells are apart on the page (and tab-separated in MarkdownBlock::plainText).
+        const auto at = [&](const char* t) { return html.compare(i, std::strlen(t), t) == 0; };
+        if (ch == '<' && (at("<td") || at("<th") || at("</td") || at("</th") || at("<tr") || at("</tr"))) text += ' ';
         if (ch == '<') tag = true;
         else if (ch == '>' && tag) tag = false;
         else if (!tag) text += ch;
