@@ -87,7 +87,8 @@ TEST(MeshLoader, ErrorsNameTheValue) {
               "test.json:1:51: error: objects[0].positions: a mesh takes either \"file\" or inline arrays, not both");
     EXPECT_EQ(errorOf(mesh(R"("positions": [0,0,0, 1,0,0, 0,1,0], "indices": [0,1,2], "radius": 1)")),
               "test.json:1:90: error: objects[0].radius: unknown key 'radius' in objects[0] (known keys: type, "
-              "material, transform, file, positions, indices, normals, uvs, emission_sides)");
+              "material, transform, file, positions, indices, normals, uvs, emission_sides, displacement_texture, "
+              "displacement_scale, displacement_subdivision)");
     EXPECT_EQ(errorOf(mesh(R"("positions": [0,0,0, 1,0,0, 0,1,0], "indices": [0,1,2], "normals": [0,0,1])")),
               "test.json:1:101: error: objects[0].normals: expected one normal per vertex (9 numbers), got 3 numbers");
     EXPECT_EQ(errorOf(R"({ "objects": [ { "type": "sphere", "transform": { "scale": [1, 2, 1] } } ] })"),
