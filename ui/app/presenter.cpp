@@ -18,9 +18,8 @@ PresenterContent presenterContent(const LessonSession& session, double minutesEl
     }
     const Lesson& l = session.lesson();
     c.title = l.title;
-    if (!l.level.empty() || l.minutes > 0)
-        c.level = (l.level.empty() ? std::string() : l.level + ", ") + (l.minutes > 0 ? std::to_string(l.minutes) + " minutes" : "");
-    if (c.level.size() >= 2 && c.level.compare(c.level.size() - 2, 2, ", ") == 0) c.level.resize(c.level.size() - 2);
+    c.level = l.level;
+    if (l.minutes > 0) c.level += (c.level.empty() ? "" : ", ") + std::to_string(l.minutes) + " minutes";
     const int n = session.stepCount(), cur = session.current();
     if (cur < 0) {
         c.step = "Not started";
