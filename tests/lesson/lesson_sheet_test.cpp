@@ -116,9 +116,9 @@ TEST(LessonSheet, AMissingPictureIsALocatedError) {
     fs::create_directories(dir / "scenes");
     std::ofstream(dir / "scenes/s.json") << "{}";
     const fs::path file = dir / "lessons/01-x.md";
-    std::ofstream(file) << "# X\n\nScene: scenes/s.json\n\n## Learning goals\n\n- g\n\n## Step 1: S\n\nText\n\n"
+    std::ofstream(file) << "# X\n\nScene: scenes/s.json\n\n## Learning goals {#goals}\n\n- g\n\n## Step 1: S {#step}\n\nText\n\n"
                            "![the slab test](pictures/nowhere.png)\n\n```raylab\nopen scenes/s.json\n```\n\n"
-                           "## Questions\n\n1. q\n\n## Exercise\n\ne\n";
+                           "## Questions {#questions}\n\n1. q\n\n## Exercise {#exercise}\n\ne\n";
     const Lesson lesson = loadLesson(file);
     ASSERT_EQ(lesson.pictures.size(), 1u);
     EXPECT_EQ(lesson.pictures[0].line, 13);
