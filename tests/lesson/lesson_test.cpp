@@ -243,3 +243,88 @@ TEST(Lesson, LevelMinutesAndOptionalSteps) {
     EXPECT_EQ(errorOf(replaced(text, "Minutes: 45\n", "Minutes: 45\nLevel: VWO 5\u20136\n")),
               "lessons/t.md:7: error: 'Minutes: ...' must be a paragraph of its own");
 }
+
+TEST(Lesson, RolesComeFromMarkersAndHeadingsStayAsWritten) {
+    std::string nl = replaced(kGood, "Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: nl\n");
+    for (const auto& [from, to] : {std::pair{"## Learning goals {#goals}", "## Leerdoelen {#goals}"},
+                                   {"## Step 1: Look {#step}", "## Stap 1: Kijk {#step}"},
+                                   {"## Step 2: Change {#step}", "## Stap 2: Verander {#step .optional}"},
+                                   {"## Questions {#questions}", "## Vragen {#questions}"},
+                                   {"## Exercise {#exercise}", "## Opdracht {#exercise}"},
+                                   {"## Going further {#further}", "## Verder {#further}"},
+                                   {"## Sources {#sources}", "## Bronnen {#sources}"}})
+        nl = replaced(nl, from, to);
+    const Lesson l = parseLesson(nl, "lessons/nl/t.md", kRoot);
+    EXPECT_EQ(l.language, "nl");
+    EXPECT_EQ(l.introduction, "An *introduction* paragraph.") << "the Language line is not part of it";
+    EXPECT_EQ(l.goals.size(), 2u);
+    ASSERT_EQ(l.steps.size(), 2u);
+    EXPECT_EQ(l.steps[0].heading, "Stap 1: Kijk");
+    EXPECT_EQ(l.steps[0].title, "Kijk");
+    EXPECT_FALSE(l.steps[0].optional);
+    EXPECT_EQ(l.steps[1].heading, "Stap 2: Verander");
+    EXPECT_TRUE(l.steps[1].optional);
+    EXPECT_EQ(l.questions.size(), 2u);
+    EXPECT_EQ(l.exercise, "Do it.");
+    EXPECT_EQ(l.sources, "- Kajiya 1986.");
+    std::string roles;
+    for (const LessonSection& s : l.sections) roles += roleMarker(s.role) + " " + std::to_string(s.line) + " " + s.heading + "; ";
+    EXPECT_EQ(roles, "{#goals} 9 Leerdoelen; {#step} 14 Stap 1: Kijk; {#step} 24 Stap 2: Verander; {#questions} 31 Vragen; "
+                     "{#exercise} 37 Opdracht; {#further} 41 Verder; {#sources} 45 Bronnen; ");
+    EXPECT_EQ(l.heading(LessonRole::Goals), "Leerdoelen");
+    EXPECT_EQ(l.heading(LessonRole::Notes), "Aantekeningen voor de docent") << "a section it lacks: the language's word";
+    const Lesson en = parseLesson(kGood, "lessons/t.md", kRoot);
+    EXPECT_EQ(en.language, "en");
+    EXPECT_EQ(en.steps[0].heading, "Step 1: Look");
+    EXPECT_EQ(en.heading(LessonRole::Questions), "Questions");
+    EXPECT_EQ(en.heading(LessonRole::Notes), "Teacher's notes");
+    EXPECT_EQ(parseLesson(replaced(kGood, "Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: en\n"), "lessons/t.md", kRoot)
+                  .language,
+              "en");
+}
+
+TEST(Lesson, MarkerMistakesNameFileAndLineAndListTheMarkers) {
+    const std::string markers = "; end a '## ' heading in one of {#goals}, {#step}, {#step .optional}, {#questions}, "
+                                "{#exercise}, {#code}, {#further}, {#notes}, {#sources}";
+    EXPECT_EQ(errorOf(replaced(kGood, "## Questions {#questions}", "## Questions")),
+              "lessons/t.md:29: error: the heading 'Questions' has no role marker" + markers);
+    EXPECT_EQ(errorOf(replaced(kGood, "## Step 2: Change {#step}", "## Step 2: Change (optional)")),
+              "lessons/t.md:22: error: the heading 'Step 2: Change (optional)' has no role marker" + markers);
+    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{#quiz}")),
+              "lessons/t.md:29: error: unknown role '#quiz' in '{#quiz}'" + markers);
+    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{questions}")),
+              "lessons/t.md:29: error: malformed marker '{questions}' (write {#ROLE}, or {#step .optional})" + markers);
+    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{#questions")),
+              "lessons/t.md:29: error: malformed marker '{#questions' (write {#ROLE}, or {#step .optional})" + markers);
+    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{ }")),
+              "lessons/t.md:29: error: malformed marker '{ }' (write {#ROLE}, or {#step .optional})" + markers);
+    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{#questions .optional}")),
+              "lessons/t.md:29: error: unknown class '.optional' in '{#questions .optional}' (only a step takes '.optional', once)" +
+                  markers);
+    EXPECT_EQ(errorOf(replaced(kGood, "Change {#step}", "Change {#step .hidden}")),
+              "lessons/t.md:22: error: unknown class '.hidden' in '{#step .hidden}' (only a step takes '.optional', once)" + markers);
+    EXPECT_EQ(errorOf(replaced(kGood, "## Questions {#questions}", "## {#questions}")),
+              "lessons/t.md:29: error: the marker '{#questions}' has no heading before it");
+    EXPECT_EQ(errorOf(replaced(kGood, "## Step 2: Change {#step}", "## Change {#step}")),
+              "lessons/t.md:22: error: a step heading is 'WORD N: TITLE' (Step 2: ..., Stap 2: ...), not 'Change'");
+    EXPECT_EQ(errorOf(replaced(kGood, "## Exercise {#exercise}", "## Exercise {#questions}")),
+              "lessons/t.md:35: error: a second {#questions} section (the first is on line 29)");
+    EXPECT_EQ(errorOf(replaced(kGood, "# Lesson 0: A test", "# Lesson 0: A test {#goals}")),
+              "lessons/t.md:1: error: the '# ' title takes no marker; '## ' sections do");
+    // English words with the wrong marker are what the marker says: a step, here, without its number.
+    EXPECT_EQ(errorOf(replaced(kGood, "## Questions {#questions}", "## Questions {#step}")),
+              "lessons/t.md:29: error: a step heading is 'WORD N: TITLE' (Step 3: ..., Stap 3: ...), not 'Questions'");
+    const std::string withLanguage = replaced(kGood, "Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: fr\n");
+    EXPECT_EQ(errorOf(withLanguage), "lessons/t.md:5: error: 'Language:' is one of en, nl");
+    EXPECT_EQ(errorOf(replaced(withLanguage, "Language: fr", "Language: nl\n\nLanguage: nl")),
+              "lessons/t.md:7: error: a second 'Language:' line");
+    // `###` headings inside a section are free.
+    EXPECT_EQ(parseLesson(replaced(kGood, "Do it.", "### A part\n\nDo it."), "lessons/t.md", kRoot).exercise, "### A part\n\nDo it.");
+}
+
+TEST(Lesson, RootOfAnEditionIsTheFolderAboveLessons) {
+    EXPECT_EQ(lessonRoot("/r/lessons/03-x.md"), fs::path("/r"));
+    EXPECT_EQ(lessonRoot("/r/lessons/nl/03-x.md"), fs::path("/r"));
+    EXPECT_EQ(lessonRoot("/r/mine/03-x.md"), fs::path("/r")) << "a folder not named lessons: the folder above";
+    EXPECT_EQ(lessonRoot("/r/mine/nl/03-x.md"), fs::path("/r/mine"));
+}
