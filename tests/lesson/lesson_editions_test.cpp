@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace raylab;
@@ -50,12 +51,6 @@ class LessonEditions : public testing::Test {
 protected:
     void SetUp() override { f = test::makeDutchLessonFixture(dir, "03-ray-sphere.md"); }
     void TearDown() override { fs::remove_all(dir); }
-    // The drift of the fixture's Dutch text after `edit`.
-    std::vector<std::string> driftAfter(const std::string& from, const std::string& to) {
-        const std::string edited = replacedOnce(test::readLessonText(f.dutch), from, to);
-        std::ofstream(f.dutch, std::ios::binary) << edited;
-        return editionDifferences(loadLesson(f.english), loadLesson(f.dutch));
-    }
     const fs::path dir = fs::temp_directory_path() / ("raylab_lesson_editions_" + std::to_string(::getpid()));
     test::DutchLessonFixture f;
 };
@@ -91,31 +86,26 @@ TEST_F(LessonEditions, ADutchLessonResolvesLikeItsOriginal) {
 
 TEST_F(LessonEditions, TheFixtureDoesNotDriftAndEveryKindOfDriftIsFound) {
     EXPECT_EQ(joined(editionDifferences(loadLesson(f.english), loadLesson(f.dutch))), "");
-    const std::string at = f.dutch.string() + ":";
-    // The test can fail: each change below is a drift, named in the Dutch file.
-    auto expectOne = [&](const std::vector<std::string>& drift, const std::string& part) {
-        ASSERT_FALSE(drift.empty()) << part;
-        for (const std::string& d : drift) EXPECT_EQ(d.rfind(at, 0), 0u) << d;
-        EXPECT_NE(joined(drift).find(part), std::string::npos) << joined(drift);
+    // The test can fail: each change of the Dutch text is a drift, named in the Dutch file. Each
+    // is the Dutch text replaced, what replaces it, and a part of the message.
+    const std::tuple<std::string, std::string, std::string> drifts[] = {
+        {"debug-view depth\nwait-spp 4", "debug-view normals\nwait-spp 4", "step 1's 'debug-view normals'"},
+        {"wait-spp 4\nexpect debug-view depth", "wait-spp 4\nhold\nexpect debug-view depth", "step 1's"},
+        {"Language: nl", "Language: en", "'Language: en' is the original's language"},
+        {"Minutes: 45", "Minutes: 50", "'Minutes: 50' differs"},
+        {"Scene: scenes/lesson_one_sphere.json", "Scene: scenes/default.json", "'Scene: scenes/default.json' differs"},
+        {"](../pictures/03-ray-sphere.png)", "](../pictures/05-slab-test.png)", "picture 1"},
+        {"Normals {#step}", "Normals {#step .optional}", "step 2 (optional) differs"},
+        {"## Vragen {#questions}\n\n1. ", "## Vragen {#questions}\n\n1. An extra question.\n2. ", "questions differs"},
+        {"## Bronnen {#sources}", "## Bronnen {#further}", "the sections ("},
     };
-    expectOne(driftAfter("debug-view depth\nwait-spp 4", "debug-view normals\nwait-spp 4"), "step 1's 'debug-view normals'");
-    const std::string text = test::readLessonText(f.english);
-    std::ofstream(f.dutch, std::ios::binary) << test::dutchEditionOf(text);
-    expectOne(driftAfter("Language: nl", "Language: en"), "'Language: en' is the original's language");
-    std::ofstream(f.dutch, std::ios::binary) << test::dutchEditionOf(text);
-    expectOne(driftAfter("Minutes: 45", "Minutes: 50"), "'Minutes: 50' differs");
-    std::ofstream(f.dutch, std::ios::binary) << test::dutchEditionOf(text);
-    expectOne(driftAfter("](../pictures/03-ray-sphere.png)", "](../pictures/05-slab-test.png)"), "picture 1");
-    std::ofstream(f.dutch, std::ios::binary) << test::dutchEditionOf(text);
-    expectOne(driftAfter("Normals {#step}", "Normals {#step .optional}"), "step 2 (optional) differs");
-    std::ofstream(f.dutch, std::ios::binary) << test::dutchEditionOf(text);
-    expectOne(driftAfter("## Vragen {#questions}\n\n1. ", "## Vragen {#questions}\n\n1. An extra question.\n2. "), "questions differs");
-    std::ofstream(f.dutch, std::ios::binary) << test::dutchEditionOf(text);
-    expectOne(driftAfter("wait-spp 4\nexpect debug-view depth", "wait-spp 4\nhold\nexpect debug-view depth"), "step 1's");
-    std::ofstream(f.dutch, std::ios::binary) << test::dutchEditionOf(text);
-    expectOne(driftAfter("Scene: scenes/lesson_one_sphere.json", "Scene: scenes/default.json"), "'Scene: scenes/default.json' differs");
-    std::ofstream(f.dutch, std::ios::binary) << test::dutchEditionOf(text);
-    expectOne(driftAfter("## Bronnen {#sources}", "## Bronnen {#further}"), "the sections (");
+    const std::string edition = test::readLessonText(f.dutch);
+    for (const auto& [from, to, part] : drifts) {
+        std::ofstream(f.dutch, std::ios::binary) << replacedOnce(edition, from, to);
+        const std::string drift = joined(editionDifferences(loadLesson(f.english), loadLesson(f.dutch)));
+        EXPECT_EQ(drift.rfind(f.dutch.string() + ":", 0), 0u) << to << ": " << drift;
+        EXPECT_NE(drift.find(part), std::string::npos) << to << ": " << drift;
+    }
 }
 
 // The real folders: until every translation is in, this names each missing Dutch lesson.

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace raylab;
@@ -286,38 +287,32 @@ TEST(Lesson, RolesComeFromMarkersAndHeadingsStayAsWritten) {
 TEST(Lesson, MarkerMistakesNameFileAndLineAndListTheMarkers) {
     const std::string markers = "; end a '## ' heading in one of {#goals}, {#step}, {#step .optional}, {#questions}, "
                                 "{#exercise}, {#code}, {#further}, {#notes}, {#sources}";
-    EXPECT_EQ(errorOf(replaced(kGood, "## Questions {#questions}", "## Questions")),
-              "lessons/t.md:29: error: the heading 'Questions' has no role marker" + markers);
-    EXPECT_EQ(errorOf(replaced(kGood, "## Step 2: Change {#step}", "## Step 2: Change (optional)")),
-              "lessons/t.md:22: error: the heading 'Step 2: Change (optional)' has no role marker" + markers);
-    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{#quiz}")),
-              "lessons/t.md:29: error: unknown role '#quiz' in '{#quiz}'" + markers);
-    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{questions}")),
-              "lessons/t.md:29: error: malformed marker '{questions}' (write {#ROLE}, or {#step .optional})" + markers);
-    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{#questions")),
-              "lessons/t.md:29: error: malformed marker '{#questions' (write {#ROLE}, or {#step .optional})" + markers);
-    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{ }")),
-              "lessons/t.md:29: error: malformed marker '{ }' (write {#ROLE}, or {#step .optional})" + markers);
-    EXPECT_EQ(errorOf(replaced(kGood, "{#questions}", "{#questions .optional}")),
-              "lessons/t.md:29: error: unknown class '.optional' in '{#questions .optional}' (only a step takes '.optional', once)" +
-                  markers);
-    EXPECT_EQ(errorOf(replaced(kGood, "Change {#step}", "Change {#step .hidden}")),
-              "lessons/t.md:22: error: unknown class '.hidden' in '{#step .hidden}' (only a step takes '.optional', once)" + markers);
-    EXPECT_EQ(errorOf(replaced(kGood, "## Questions {#questions}", "## {#questions}")),
-              "lessons/t.md:29: error: the marker '{#questions}' has no heading before it");
-    EXPECT_EQ(errorOf(replaced(kGood, "## Step 2: Change {#step}", "## Change {#step}")),
-              "lessons/t.md:22: error: a step heading is 'WORD N: TITLE' (Step 2: ..., Stap 2: ...), not 'Change'");
-    EXPECT_EQ(errorOf(replaced(kGood, "## Exercise {#exercise}", "## Exercise {#questions}")),
-              "lessons/t.md:35: error: a second {#questions} section (the first is on line 29)");
-    EXPECT_EQ(errorOf(replaced(kGood, "# Lesson 0: A test", "# Lesson 0: A test {#goals}")),
-              "lessons/t.md:1: error: the '# ' title takes no marker; '## ' sections do");
-    // English words with the wrong marker are what the marker says: a step, here, without its number.
-    EXPECT_EQ(errorOf(replaced(kGood, "## Questions {#questions}", "## Questions {#step}")),
-              "lessons/t.md:29: error: a step heading is 'WORD N: TITLE' (Step 3: ..., Stap 3: ...), not 'Questions'");
-    const std::string withLanguage = replaced(kGood, "Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: fr\n");
-    EXPECT_EQ(errorOf(withLanguage), "lessons/t.md:5: error: 'Language:' is one of en, nl");
-    EXPECT_EQ(errorOf(replaced(withLanguage, "Language: fr", "Language: nl\n\nLanguage: nl")),
-              "lessons/t.md:7: error: a second 'Language:' line");
+    const std::string write = " (write {#ROLE}, or {#step .optional})" + markers;
+    const std::string once = " (only a step takes '.optional', once)" + markers;
+    // Each mistake: the text replaced in kGood, what replaces it, the message.
+    const std::tuple<std::string, std::string, std::string> mistakes[] = {
+        {"## Questions {#questions}", "## Questions", "29: error: the heading 'Questions' has no role marker" + markers},
+        {"## Step 2: Change {#step}", "## Step 2: Change (optional)",
+         "22: error: the heading 'Step 2: Change (optional)' has no role marker" + markers},
+        {"{#questions}", "{#quiz}", "29: error: unknown role '#quiz' in '{#quiz}'" + markers},
+        {"{#questions}", "{questions}", "29: error: malformed marker '{questions}'" + write},
+        {"{#questions}", "{#questions", "29: error: malformed marker '{#questions'" + write},
+        {"{#questions}", "{ }", "29: error: malformed marker '{ }'" + write},
+        {"{#questions}", "{#questions .optional}", "29: error: unknown class '.optional' in '{#questions .optional}'" + once},
+        {"Change {#step}", "Change {#step .hidden}", "22: error: unknown class '.hidden' in '{#step .hidden}'" + once},
+        {"## Questions {#questions}", "## {#questions}", "29: error: the marker '{#questions}' has no heading before it"},
+        {"## Step 2: Change {#step}", "## Change {#step}",
+         "22: error: a step heading is 'WORD N: TITLE' (Step 2: ..., Stap 2: ...), not 'Change'"},
+        {"## Exercise {#exercise}", "## Exercise {#questions}", "35: error: a second {#questions} section (the first is on line 29)"},
+        {"# Lesson 0: A test", "# Lesson 0: A test {#goals}", "1: error: the '# ' title takes no marker; '## ' sections do"},
+        // English words with another marker are what the marker says: here a step without its number.
+        {"## Questions {#questions}", "## Questions {#step}",
+         "29: error: a step heading is 'WORD N: TITLE' (Step 3: ..., Stap 3: ...), not 'Questions'"},
+        {"Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: fr\n", "5: error: 'Language:' is one of en, nl"},
+        {"Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: nl\n\nLanguage: nl\n",
+         "7: error: a second 'Language:' line"},
+    };
+    for (const auto& [from, to, message] : mistakes) EXPECT_EQ(errorOf(replaced(kGood, from, to)), "lessons/t.md:" + message) << to;
     // `###` headings inside a section are free.
     EXPECT_EQ(parseLesson(replaced(kGood, "Do it.", "### A part\n\nDo it."), "lessons/t.md", kRoot).exercise, "### A part\n\nDo it.");
 }

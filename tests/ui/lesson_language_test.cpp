@@ -80,15 +80,7 @@ TEST_F(LessonLanguagePanelTest, TheLessonPanelOffersTheChoiceAndSpeaksTheLessons
     ASSERT_FALSE(ui.lesson.open(f.dutch).has_value());
     EXPECT_EQ(ui.lesson.language(), "nl") << "an opened lesson's language is the session's";
     ui.lesson.apply(5);
-    const auto panelText = [&] {
-        return windowText([&] {
-            ImGui::SetNextWindowSize(ImVec2(600, 20000));
-            ImGui::Begin("lesson");
-            drawLessonPanel(*viewer, ui);
-            ImGui::End();
-        });
-    };
-    const std::string nl = panelText();
+    const std::string nl = lessonPanelText();
     EXPECT_TRUE(contains(nl, "Nederlands")) << nl;
     EXPECT_TRUE(contains(nl, "Leerdoelen"));
     EXPECT_TRUE(contains(nl, "Stap 6: What Lambert leaves out (facultatief)")) << nl;
@@ -97,7 +89,7 @@ TEST_F(LessonLanguagePanelTest, TheLessonPanelOffersTheChoiceAndSpeaksTheLessons
     EXPECT_TRUE(contains(nl, "Aantekeningen voor de docent"));
     EXPECT_FALSE(contains(nl, "{#")) << "markers are the loader's";
     ASSERT_EQ(ui.lesson.setLanguage("en"), std::nullopt);
-    const std::string en = panelText();
+    const std::string en = lessonPanelText();
     EXPECT_TRUE(contains(en, "English"));
     EXPECT_TRUE(contains(en, "Step 6: What Lambert leaves out (optional)")) << en;
     EXPECT_TRUE(contains(en, "Learning goals"));
