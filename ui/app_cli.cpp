@@ -4,6 +4,8 @@
 #include "exercise/manifest.h"
 #include "gl/shader_source.h"
 #include "lesson/lesson.h"
+#include "lesson/lesson_edition.h"
+#include "lesson/lesson_words.h"
 #include "script/script.h"
 
 #include <CLI/CLI.hpp>
@@ -52,6 +54,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, AppOptions& o) {
     app.add_flag("--presenter-window", o.presenterWindow,
                  "The presenter view (lesson position, clock, notes and answers) in a second window, for the teacher's screen");
     app.add_option("--lesson", o.lessonPath, "Open a lesson (lessons/NN-topic.md) in the Teach window; its scene unless SCENE is given");
+    app.add_option("--lang", o.language,
+                   "The lessons' language: en, or nl for the Dutch edition (lessons/nl/): the Teach window's lessons and --lesson's")
+        ->type_name("LANG");
     app.add_option("--ui-scale", o.uiScale, "UI scale for projectors (default: as last time, from the layout file)")
         ->check(CLI::Range(double(kMinUiScale), double(kMaxUiScale)));
     try {
@@ -73,8 +78,18 @@ std::optional<int> parseCommandLine(int argc, char** argv, AppOptions& o) {
             return 1;
         }
     }
+    if (!o.language.empty() && !isLessonLanguage(o.language)) {
+        std::fprintf(stderr, "raylab: --lang: unknown language '%s' (%s)\n", o.language.c_str(), lessonLanguageList().c_str());
+        return 1;
+    }
     if (!o.lessonPath.empty()) {
         try {
+            if (!o.language.empty()) {
+                const auto edition = lessonInLanguage(o.lessonPath, o.language);
+                if (!edition)
+                    throw std::runtime_error(o.lessonPath + ": error: --lang needs a lesson in lessons/ or lessons/LANG/");
+                o.lessonPath = edition->string();
+            }
             const Lesson lesson = loadLesson(o.lessonPath);   // fail before a window opens
             if (o.scenePath.empty()) o.scenePath = lesson.scenePath.string();
         } catch (const std::exception& e) {

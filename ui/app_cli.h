@@ -22,7 +22,8 @@ struct AppOptions {
     std::string frameLog;              // per-frame time and resident memory, written at exit
     bool vsync = false;
     bool continuous = false;
-    std::string lessonPath;
+    std::string lessonPath;            // --lesson, already the --lang edition's file
+    std::string language;              // --lang: the lessons' edition ("" = English, or the lesson's own)
     std::string exercise;              // --exercise: a code-track exercise whose pupil file the tracer runs
     std::string exerciseDir;           // --exercise-dir: where the pupil's files are (default: the stubs')
     bool classMode = false;            // --class: the teacher's notes only on the presenter view

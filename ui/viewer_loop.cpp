@@ -24,6 +24,7 @@ ViewerLoop::ViewerLoop(GLFWwindow* window, WindowEvents& events, AppOptions& opt
     const ImGuiIO& io = ImGui::GetIO();
     if (io.IniFilename) ImGui::LoadIniSettingsFromDisk(io.IniFilename);   // now, so --ui-scale wins
     if (options_.uiScale > 0.0f) ui_.uiScale = options_.uiScale;
+    if (!options_.language.empty()) ui_.lesson.setLanguage(options_.language);   // checked by the command line
     if (!options_.lessonPath.empty() && !ui_.lesson.open(options_.lessonPath)) {
         ui_.showTeach = true;
         ui_.teachTab = 0;

@@ -1,5 +1,6 @@
 #include "lesson/lesson.h"
 
+#include "lesson/lesson_words.h"
 #include "lesson/markdown_dialect.h"
 
 #include <algorithm>
@@ -160,11 +161,6 @@ std::string trim(std::string_view s) {
     return std::string(s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1));
 }
 
-std::string lower(std::string s) {
-    for (char& ch : s) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    return s;
-}
-
 std::vector<std::string> splitLines(std::string_view text) {
     std::vector<std::string> lines;
     size_t start = 0;
@@ -212,7 +208,7 @@ std::vector<Fence> scanFences(const std::vector<std::string>& lines, const std::
     return fences;
 }
 
-enum class Section { BeforeTitle, Introduction, Goals, Step, Questions, Exercise, WriteItYourself, GoingFurther, TeacherNotes, Sources };
+enum class Section { BeforeTitle, Introduction, Role };
 
 // The code-track exercises a "Write it yourself" section opens: every `--exercise NAME` in it.
 std::vector<std::string> codeExercisesIn(const std::string& text) {
@@ -227,10 +223,11 @@ std::vector<std::string> codeExercisesIn(const std::string& text) {
 // so reading stops growing it there (no overflow).
 constexpr int kMaxStepNumber = 9999;
 
-// "Step N: TITLE" (also "Step N. TITLE"); nullopt when the heading is not a step.
+// "WORD N: TITLE" (also "WORD N. TITLE"; WORD is "Step", "Stap"); nullopt when it is not that.
 std::optional<std::pair<int, std::string>> parseStepHeading(const std::string& heading) {
-    if (lower(heading.substr(0, 5)) != "step ") return std::nullopt;
-    size_t i = 5;
+    const size_t space = heading.find(' ');
+    if (space == 0 || space == std::string::npos) return std::nullopt;
+    size_t i = space + 1;
     int n = 0;
     bool digits = false;
     while (i < heading.size() && std::isdigit(static_cast<unsigned char>(heading[i]))) {
@@ -241,9 +238,9 @@ std::optional<std::pair<int, std::string>> parseStepHeading(const std::string& h
     return std::pair{n, trim(std::string_view(heading).substr(i + 1))};
 }
 
-// A paragraph "KEY: value" of the introduction (Scene, Level, Minutes); nullopt for any other.
+// A paragraph "KEY: value" of the introduction (Scene, Level, Minutes, Language); nullopt for any other.
 std::optional<std::pair<std::string, std::string>> frontMatter(const std::string& plain) {
-    for (const char* key : {"Scene:", "Level:", "Minutes:"})
+    for (const char* key : {"Scene:", "Level:", "Minutes:", "Language:"})
         if (plain.rfind(key, 0) == 0) return std::pair{std::string(key), trim(std::string_view(plain).substr(std::strlen(key)))};
     return std::nullopt;
 }
@@ -276,6 +273,23 @@ std::filesystem::path Lesson::picturePath(const std::string& source) const {
     return (file.parent_path() / source).lexically_normal();
 }
 
+std::string Lesson::heading(LessonRole role) const {
+    const auto it = std::find_if(sections.begin(), sections.end(), [&](const LessonSection& s) { return s.role == role; });
+    if (it != sections.end()) return it->heading;
+    const LessonWords& w = lessonWords(language);
+    switch (role) {
+    case LessonRole::Goals: return w.goals;
+    case LessonRole::Step: return w.step;
+    case LessonRole::Questions: return w.questions;
+    case LessonRole::Exercise: return w.exercise;
+    case LessonRole::Code: return w.code;
+    case LessonRole::Further: return w.further;
+    case LessonRole::Notes: return w.notes;
+    case LessonRole::Sources: return w.sources;
+    }
+    return {};
+}
+
 Lesson parseLesson(std::string_view text, const std::filesystem::path& file, const std::filesystem::path& root) {
     const std::string name = file.string();
     auto fail = [&](int line, const std::string& what) -> LessonError {
@@ -299,8 +313,9 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
     lesson.root = root;
     int titleLine = 0;
     Section section = Section::BeforeTitle;
+    LessonRole role = LessonRole::Goals;   // the current section's, when section is Role
     int sectionLine = 0;       // heading line of the current section (or the title's)
-    int goalsLine = 0, questionsLine = 0, exerciseLine = 0;
+    int goalsLine = 0, questionsLine = 0, exerciseLine = 0, languageLine = 0;
     std::vector<std::pair<int, int>> hidden;   // line ranges left out of Markdown slices (1-based)
     size_t fenceIndex = 0;
 
@@ -330,20 +345,22 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
     // Called when a section ends just before line `next` (a heading line, or past the end).
     auto closeSection = [&](int next) {
         const int last = next - 1;
-        switch (section) {
-        case Section::Introduction: lesson.introduction = slice(titleLine, last); break;
-        case Section::Step: lesson.steps.back().text = slice(sectionLine, last); break;
-        case Section::Exercise: lesson.exercise = slice(sectionLine, last); break;
-        case Section::WriteItYourself:
+        if (section == Section::Introduction) lesson.introduction = slice(titleLine, last);
+        if (section != Section::Role) return;
+        switch (role) {
+        case LessonRole::Step: lesson.steps.back().text = slice(sectionLine, last); break;
+        case LessonRole::Exercise: lesson.exercise = slice(sectionLine, last); break;
+        case LessonRole::Code:
             lesson.writeItYourself = slice(sectionLine, last);
             lesson.codeExercises = codeExercisesIn(lesson.writeItYourself);
             break;
-        case Section::GoingFurther: lesson.goingFurther = slice(sectionLine, last); break;
-        case Section::TeacherNotes: lesson.teacherNotes = slice(sectionLine, last); break;
-        case Section::Sources: lesson.sources = slice(sectionLine, last); break;
+        case LessonRole::Further: lesson.goingFurther = slice(sectionLine, last); break;
+        case LessonRole::Notes: lesson.teacherNotes = slice(sectionLine, last); break;
+        case LessonRole::Sources: lesson.sources = slice(sectionLine, last); break;
         default: break;
         }
     };
+    auto inRole = [&](LessonRole r) { return section == Section::Role && role == r; };
 
     int lastLine = 1;   // the latest located line, for blocks md4c gave no text for
     for (Block& b : c.blocks) {
@@ -359,51 +376,43 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             if (b.level == 1) {
                 if (section != Section::BeforeTitle)
                     throw fail(b.line, "a second '# ' title; a lesson has one, sections are '## '");
+                if (withoutSectionMarker(heading) != heading)
+                    throw fail(b.line, "the '# ' title takes no marker; '## ' sections do");
                 lesson.title = heading;
                 titleLine = sectionLine = b.line;
                 section = Section::Introduction;
                 break;
             }
             if (section == Section::BeforeTitle) throw fail(b.line, "the lesson must start with a '# TITLE' heading");
+            const auto parsed = parseMarkedHeading(heading);
+            if (const auto* error = std::get_if<std::string>(&parsed)) throw fail(b.line, *error);
+            const MarkedHeading& marked = std::get<MarkedHeading>(parsed);
             closeSection(b.line);
             sectionLine = b.line;
-            const std::string key = lower(heading);
-            if (auto step = parseStepHeading(heading)) {
-                const int expected = int(lesson.steps.size()) + 1;
-                if (step->first != expected)
-                    throw fail(b.line, "step numbered " +
-                                           (step->first > kMaxStepNumber ? "above " + std::to_string(kMaxStepNumber)
-                                                                         : std::to_string(step->first)) +
-                                           ", expected " + std::to_string(expected));
-                if (step->second.empty()) throw fail(b.line, "step " + std::to_string(expected) + " has no title");
-                std::string title = step->second;
-                const std::string mark = "(optional)";
-                const bool optional = title.size() > mark.size() && title.compare(title.size() - mark.size(), mark.size(), mark) == 0;
-                if (optional) title = trim(std::string_view(title).substr(0, title.size() - mark.size()));
-                lesson.steps.push_back({b.line, title, optional, {}, {}});
-                section = Section::Step;
-            } else if (key == "learning goals") {
-                section = Section::Goals;
-                goalsLine = b.line;
-            } else if (key == "questions") {
-                section = Section::Questions;
-                questionsLine = b.line;
-            } else if (key == "exercise") {
-                section = Section::Exercise;
-                exerciseLine = b.line;
-            } else if (key == "write it yourself") {
-                section = Section::WriteItYourself;
-            } else if (key == "going further") {
-                section = Section::GoingFurther;
-            } else if (key == "teacher's notes" || key == "teacher\u2019s notes" || key == "notes for the teacher") {
-                section = Section::TeacherNotes;
-            } else if (key == "sources" || key == "references") {
-                section = Section::Sources;
-            } else {
-                throw fail(b.line, "unknown section '" + heading +
-                                       "'; expected 'Learning goals', 'Step N: TITLE', 'Questions', 'Exercise', "
-                                       "'Write it yourself', 'Going further', 'Teacher's notes' or 'Sources'");
-            }
+            section = Section::Role;
+            role = marked.role;
+            if (role != LessonRole::Step)
+                for (const LessonSection& earlier : lesson.sections)
+                    if (earlier.role == role)
+                        throw fail(b.line, "a second " + roleMarker(role) + " section (the first is on line " +
+                                               std::to_string(earlier.line) + ")");
+            lesson.sections.push_back({role, b.line, marked.text});
+            if (role == LessonRole::Goals) goalsLine = b.line;
+            if (role == LessonRole::Questions) questionsLine = b.line;
+            if (role == LessonRole::Exercise) exerciseLine = b.line;
+            if (role != LessonRole::Step) break;
+            const auto step = parseStepHeading(marked.text);
+            const int expected = int(lesson.steps.size()) + 1;
+            if (!step)
+                throw fail(b.line, "a step heading is 'WORD N: TITLE' (Step " + std::to_string(expected) + ": ..., Stap " +
+                                       std::to_string(expected) + ": ...), not '" + marked.text + "'");
+            if (step->first != expected)
+                throw fail(b.line, "step numbered " +
+                                       (step->first > kMaxStepNumber ? "above " + std::to_string(kMaxStepNumber)
+                                                                     : std::to_string(step->first)) +
+                                       ", expected " + std::to_string(expected));
+            if (step->second.empty()) throw fail(b.line, "step " + std::to_string(expected) + " has no title");
+            lesson.steps.push_back({b.line, marked.text, step->second, marked.optional, {}, {}});
             break;
         }
         case Block::Paragraph: {
@@ -421,6 +430,11 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
                 if (std::find(std::begin(kLessonLevels), std::end(kLessonLevels), value) == std::end(kLessonLevels))
                     throw fail(b.line, "'Level:' is '" + std::string(kLessonLevels[0]) + "' or '" + kLessonLevels[1] + "'");
                 lesson.level = value;
+            } else if (key == "Language:") {
+                if (languageLine > 0) throw fail(b.line, "a second 'Language:' line");
+                if (!isLessonLanguage(value)) throw fail(b.line, "'Language:' is one of " + lessonLanguageList());
+                lesson.language = value;
+                languageLine = b.line;
             } else {
                 if (lesson.minutes > 0) throw fail(b.line, "a second 'Minutes:' line");
                 const bool digits = !value.empty() && value.size() < 4 &&
@@ -433,8 +447,8 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
         }
         case Block::Item:
             if (b.level != 1) break;
-            if (section == Section::Goals) lesson.goals.push_back(trim(b.text));
-            if (section == Section::Questions) lesson.questions.push_back(trim(b.text));
+            if (inRole(LessonRole::Goals)) lesson.goals.push_back(trim(b.text));
+            if (inRole(LessonRole::Questions)) lesson.questions.push_back(trim(b.text));
             break;
         case Block::Code: {
             if (!b.fenced) break;
@@ -447,8 +461,7 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
             lastLine = f.close;
             const std::string info = trim(b.info);
             if (info != "raylab" && info.rfind("raylab ", 0) != 0) break;
-            if (section != Section::Step)
-                throw fail(f.open, "a ```raylab block outside a '## Step N: TITLE' section");
+            if (!inRole(LessonRole::Step)) throw fail(f.open, "a ```raylab block outside a {#step} section");
             LessonStep& step = lesson.steps.back();
             if (!step.commands.empty() || std::any_of(hidden.begin(), hidden.end(), [&](const auto& r) {
                     return r.first > step.line;
@@ -485,15 +498,15 @@ Lesson parseLesson(std::string_view text, const std::filesystem::path& file, con
     if (!std::filesystem::is_regular_file(lesson.scenePath, ec))
         throw fail(lesson.sceneLine, "scene '" + lesson.scene + "' not found (" + lesson.scenePath.string() + ")");
     if (lesson.goals.empty())
-        throw fail(goalsLine ? goalsLine : titleLine, "no learning goals (a '## Learning goals' list)");
-    if (lesson.steps.empty()) throw fail(titleLine, "no steps ('## Step 1: TITLE' sections)");
+        throw fail(goalsLine ? goalsLine : titleLine, "no learning goals (a {#goals} section's list)");
+    if (lesson.steps.empty()) throw fail(titleLine, "no steps ('## Step 1: TITLE {#step}' sections)");
     for (size_t i = 0; i < lesson.steps.size(); ++i)
         if (lesson.steps[i].commands.empty())
             throw fail(lesson.steps[i].line, "step " + std::to_string(i + 1) + " has no ```raylab block");
     if (lesson.questions.empty())
-        throw fail(questionsLine ? questionsLine : titleLine, "no questions (a '## Questions' list)");
+        throw fail(questionsLine ? questionsLine : titleLine, "no questions (a {#questions} section's list)");
     if (lesson.exercise.empty())
-        throw fail(exerciseLine ? exerciseLine : titleLine, "no exercise (a '## Exercise' section)");
+        throw fail(exerciseLine ? exerciseLine : titleLine, "no exercise (a {#exercise} section)");
     return lesson;
 }
 
@@ -502,8 +515,13 @@ Lesson loadLesson(const std::filesystem::path& file) {
     if (!in) throw LessonError(file.string() + ": error: cannot read the lesson");
     std::stringstream s;
     s << in.rdbuf();
-    const std::filesystem::path root = std::filesystem::absolute(file).lexically_normal().parent_path().parent_path();
-    return parseLesson(s.str(), file, root);
+    return parseLesson(s.str(), file, lessonRoot(file));
+}
+
+std::filesystem::path lessonRoot(const std::filesystem::path& file) {
+    const std::filesystem::path folder = std::filesystem::absolute(file).lexically_normal().parent_path();
+    if (folder.parent_path().filename() == "lessons" && folder.filename() != "lessons") return folder.parent_path().parent_path();
+    return folder.parent_path();
 }
 
 std::vector<Lesson> loadLessons(const std::filesystem::path& dir) {

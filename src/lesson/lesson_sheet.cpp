@@ -1,6 +1,7 @@
 #include "lesson/lesson_sheet.h"
 
 #include "lesson/data_uri.h"
+#include "lesson/lesson_words.h"
 #include "lesson/markdown_html.h"
 
 #include <algorithm>
@@ -67,35 +68,39 @@ std::string lessonSheetHtml(const Lesson& lesson, LessonSheet sheet) {
     };
     auto md = [&](const std::string& markdown) { return markdownToHtml(markdown, images); };
 
-    std::string h = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
-                    htmlEscape(lesson.title) + (teacher ? " \u2014 teacher's sheet" : " \u2014 worksheet") +
-                    "</title>\n<style>\n" + kCss + "</style>\n</head>\n<body class=\"" + (teacher ? "teacher-sheet" : "pupil-sheet") +
-                    "\">\n<header>\n<h1>" + htmlEscape(lesson.title) + "</h1>\n";
+    const LessonWords& w = lessonWords(lesson.language);
+    const std::string sep = " \u00b7 ";
+    std::string h = "<!DOCTYPE html>\n<html lang=\"" + htmlEscape(lesson.language) + "\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
+                    htmlEscape(lesson.title) + " \u2014 " + (teacher ? w.teacherSheet : w.worksheet) + "</title>\n<style>\n" + kCss +
+                    "</style>\n</head>\n<body class=\"" + (teacher ? "teacher-sheet" : "pupil-sheet") + "\">\n<header>\n<h1>" +
+                    htmlEscape(lesson.title) + "</h1>\n";
     if (teacher) {
         int core = 0;
         for (const LessonStep& s : lesson.steps) core += s.optional ? 0 : 1;
-        h += "<p class=\"meta\">Teacher's sheet \u00b7 Level: " + htmlEscape(lesson.level.empty() ? "not given" : lesson.level) +
-             " \u00b7 Minutes: " + (lesson.minutes > 0 ? std::to_string(lesson.minutes) : "not given") + " \u00b7 Steps: " +
-             std::to_string(core) + " core, " + std::to_string(int(lesson.steps.size()) - core) + " optional \u00b7 Scene: <code>" +
+        h += "<p class=\"meta\">" + std::string(w.teacherSheetHeading) + sep + w.level + ": " +
+             htmlEscape(lesson.level.empty() ? w.notGiven : lesson.level) + sep + w.minutesLabel + ": " +
+             (lesson.minutes > 0 ? std::to_string(lesson.minutes) : w.notGiven) + sep + w.steps + ": " + std::to_string(core) + " " +
+             w.core + ", " + std::to_string(int(lesson.steps.size()) - core) + " " + w.optional + sep + w.scene + ": <code>" +
              htmlEscape(lesson.scene) + "</code></p>\n";
     } else {
-        h += "<p class=\"meta\">Name: ______________________ \u00a0 Class: ________ \u00a0 Date: ____________</p>\n";
+        h += "<p class=\"meta\">" + std::string(w.name) + ": ______________________ \u00a0 " + w.className +
+             ": ________ \u00a0 " + w.date + ": ____________</p>\n";
     }
     h += "</header>\n";
     if (!lesson.introduction.empty()) h += "<section class=\"introduction\">\n" + md(lesson.introduction) + "</section>\n";
 
     std::string goals = "<ul>\n";
     for (const std::string& g : lesson.goals) goals += "<li>" + inlineHtml(g, images) + "</li>\n";
-    h += section("goals", "Learning goals", goals + "</ul>\n");
+    h += section("goals", lesson.heading(LessonRole::Goals), goals + "</ul>\n");
 
-    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
-        const LessonStep& s = lesson.steps[i];
-        h += "<section class=\"step\">\n<h2>Step " + std::to_string(i + 1) + ": " + htmlEscape(s.title);
-        if (teacher) h += std::string(" <span class=\"mark\">") + (s.optional ? "optional" : "core") + "</span>";
+    for (const LessonStep& s : lesson.steps) {
+        h += "<section class=\"step\">\n<h2>" + htmlEscape(s.heading);
+        if (teacher) h += std::string(" <span class=\"mark\">") + (s.optional ? w.optional : w.core) + "</span>";
         h += "</h2>\n" + md(s.text);
         if (teacher) {
             const int parts = s.partCount();
-            h += "<p class=\"meta\">In raylab" + (parts > 1 ? " (" + std::to_string(parts) + " sub-steps, the presenter's key between them)" : std::string()) +
+            h += "<p class=\"meta\">" + std::string(w.inRaylab) +
+                 (parts > 1 ? " (" + std::to_string(parts) + " " + w.subSteps + ")" : std::string()) +
                  ":</p>\n<pre class=\"script\"><code>" + htmlEscape(scriptText(s)) + "</code></pre>\n";
         }
         h += "</section>\n";
@@ -104,13 +109,14 @@ std::string lessonSheetHtml(const Lesson& lesson, LessonSheet sheet) {
     std::string questions = "<ol class=\"questions\">\n";
     for (const std::string& q : lesson.questions)
         questions += "<li>" + inlineHtml(q, images) + (teacher ? "" : "\n<div class=\"answer\"></div>") + "</li>\n";
-    h += section("questions", "Questions", questions + "</ol>\n");
-    h += section("exercise", "Exercise", md(lesson.exercise) + (teacher ? "" : "<div class=\"exercise-space\"></div>\n"));
-    if (!lesson.writeItYourself.empty()) h += section("write-it-yourself", "Write it yourself", md(lesson.writeItYourself));
-    if (!lesson.goingFurther.empty()) h += section("going-further", "Going further", md(lesson.goingFurther));
+    h += section("questions", lesson.heading(LessonRole::Questions), questions + "</ol>\n");
+    h += section("exercise", lesson.heading(LessonRole::Exercise),
+                 md(lesson.exercise) + (teacher ? "" : "<div class=\"exercise-space\"></div>\n"));
+    if (!lesson.writeItYourself.empty()) h += section("write-it-yourself", lesson.heading(LessonRole::Code), md(lesson.writeItYourself));
+    if (!lesson.goingFurther.empty()) h += section("going-further", lesson.heading(LessonRole::Further), md(lesson.goingFurther));
     if (teacher && !lesson.teacherNotes.empty())
-        h += "<section class=\"teacher\">\n<h2>Teacher's notes and answers</h2>\n" + md(lesson.teacherNotes) + "</section>\n";
-    if (!lesson.sources.empty()) h += section("sources", "Sources", md(lesson.sources));
+        h += "<section class=\"teacher\">\n<h2>" + htmlEscape(w.notesAndAnswers) + "</h2>\n" + md(lesson.teacherNotes) + "</section>\n";
+    if (!lesson.sources.empty()) h += section("sources", lesson.heading(LessonRole::Sources), md(lesson.sources));
     return h + "</body>\n</html>\n";
 }
 

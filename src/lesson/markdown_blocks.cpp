@@ -1,6 +1,7 @@
 #include "lesson/markdown_blocks.h"
 
 #include "lesson/markdown_dialect.h"
+#include "lesson/section_marker.h"
 
 #include <algorithm>
 
@@ -115,6 +116,13 @@ int enterBlock(MD_BLOCKTYPE type, void* detail, void* user) {
 int leaveBlock(MD_BLOCKTYPE type, void*, void* user) {
     auto& b = *static_cast<Builder*>(user);
     switch (type) {
+    case MD_BLOCK_H:   // a lesson's role marker is for the loader, not the reader
+        if (b.current && !b.current->spans.empty()) {
+            std::string& last = b.current->spans.back().text;
+            last.erase(sectionMarkerStart(last));
+            if (last.empty()) b.current->spans.pop_back();
+        }
+        break;
     case MD_BLOCK_UL:
     case MD_BLOCK_OL: b.listCounters.pop_back(); break;
     case MD_BLOCK_LI: b.itemFresh = false; break;

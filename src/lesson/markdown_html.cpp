@@ -1,6 +1,7 @@
 #include "lesson/markdown_html.h"
 
 #include "lesson/markdown_dialect.h"
+#include "lesson/section_marker.h"
 
 #include <exception>
 
@@ -12,6 +13,7 @@ struct Writer {
     const ImageSource* imageSource = nullptr;
     int imageDepth = 0;                 // inside an image's alt text: text only, no tags
     std::exception_ptr error;           // an ImageSource failure, rethrown after md_parse
+    std::size_t headingStart = 0;       // where the open heading's text starts in `out`
     void tag(std::string_view t) {
         if (imageDepth == 0) out += t;
     }
@@ -70,12 +72,17 @@ std::string blockTag(MD_BLOCKTYPE type, void* detail, bool close) {
 }
 
 int enterBlock(MD_BLOCKTYPE type, void* detail, void* user) {
-    static_cast<Writer*>(user)->tag(blockTag(type, detail, false));
+    auto& w = *static_cast<Writer*>(user);
+    w.tag(blockTag(type, detail, false));
+    if (type == MD_BLOCK_H) w.headingStart = w.out.size();
     return 0;
 }
 
 int leaveBlock(MD_BLOCKTYPE type, void* detail, void* user) {
-    static_cast<Writer*>(user)->tag(blockTag(type, detail, true));
+    auto& w = *static_cast<Writer*>(user);
+    // A lesson's role marker is for the loader, not the reader (escaping leaves `{#.}` as they are).
+    if (type == MD_BLOCK_H) w.out.erase(w.headingStart + sectionMarkerStart(std::string_view(w.out).substr(w.headingStart)));
+    w.tag(blockTag(type, detail, true));
     return 0;
 }
 

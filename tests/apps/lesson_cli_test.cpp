@@ -1,5 +1,7 @@
-// raylab-lesson as a teacher runs it: a handout by the lesson's name, and located errors with a
-// non-zero exit for an unknown lesson, an output it cannot write and bad flags.
+// raylab-lesson as a teacher runs it: a handout by the lesson's name, the Dutch edition's with
+// --lang nl, and located errors with a non-zero exit for an unknown lesson or language, an output
+// it cannot write and bad flags.
+#include "support/dutch_lesson_fixture.h"
 #include "support/render_cli.h"
 
 #include <gtest/gtest.h>
@@ -54,5 +56,40 @@ TEST(LessonCli, BadInputExitsNonZeroWithALocatedMessage) {
     r = lessonCli("export 03 --pupil --colour -o " + quoted(dir / "a.html"), dir);
     EXPECT_EQ(r.status, 2);
     EXPECT_FALSE(fs::exists(dir / "a.html"));
+    fs::remove_all(dir);
+}
+
+TEST(LessonCli, LangNlExportsTheDutchEditionsSheets) {
+    const fs::path dir = scratchDir("raylab_lesson_dutch");
+    const DutchLessonFixture f = makeDutchLessonFixture(dir / "repo", "03-ray-sphere.md");
+    // The English file named, --lang nl: its Dutch twin's sheets.
+    CliRun r = lessonCli("export " + quoted(f.english) + " --lang nl --pupil -o " + quoted(dir / "pupil.html"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string pupil = slurp(dir / "pupil.html");
+    EXPECT_NE(pupil.find("<h1>Les 3: Ray–sphere intersection</h1>"), std::string::npos) << pupil.substr(0, 2000);
+    EXPECT_NE(pupil.find("<html lang=\"nl\">"), std::string::npos);
+    EXPECT_NE(pupil.find("<h2>Leerdoelen</h2>"), std::string::npos);
+    EXPECT_EQ(pupil.find("Aantekeningen voor de docent"), std::string::npos) << "the pupil's sheet has no notes";
+    r = lessonCli("export " + quoted(f.english) + " --lang nl --teacher -o " + quoted(dir / "teacher.html"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(slurp(dir / "teacher.html").find("Aantekeningen voor de docent en antwoorden"), std::string::npos);
+    // Without --lang a file is taken as it is.
+    r = lessonCli("export " + quoted(f.dutch) + " --pupil -o " + quoted(dir / "as-is.html"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(slurp(dir / "as-is.html").find("<h1>Les 3:"), std::string::npos);
+    r = lessonCli("export " + quoted(f.dutch) + " --lang en --pupil -o " + quoted(dir / "en.html"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(slurp(dir / "en.html").find("<h1>Lesson 3:"), std::string::npos);
+    // An unknown language, and a lesson the edition lacks.
+    r = lessonCli("export 03 --lang fr --pupil -o " + quoted(dir / "fr.html"), dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--lang: unknown language 'fr' (en, nl)"), std::string::npos) << r.err;
+    r = lessonCli("list --lang xx", dir);
+    EXPECT_EQ(r.status, 2);
+    fs::remove(f.dutch);
+    r = lessonCli("export " + quoted(f.english) + " --lang nl --pupil -o " + quoted(dir / "gone.html"), dir);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find(f.dutch.string() + ": error: cannot read the lesson"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "fr.html"));
     fs::remove_all(dir);
 }

@@ -167,7 +167,10 @@ def main():
     write_dict(os.path.join(out, "fuzz_script.dict"),
                sorted(commands) + keys + enum_names + ["```raylab\n", "```\n", "## Step 1: ", "# ", "Scene: ",
                                                       "## Learning goals", "## Questions", "## Exercise",
-                                                      "## Teacher's notes", "## Sources", "on", "off", "next"])
+                                                      "## Teacher's notes", "## Sources", "{#goals}", "{#step}",
+                                                      "{#step .optional}", "{#questions}", "{#exercise}", "{#code}",
+                                                      "{#further}", "{#notes}", "{#sources}", "Language: ", "on",
+                                                      "off", "next"])
     for c in (scene, obj, gltf, script):
         print("%s: %d seeds" % (os.path.basename(c.dir), c.count))
 

@@ -7,7 +7,11 @@
 #include "lesson/markdown_blocks.h"
 #include "lesson/markdown_html.h"
 
+#include "support/dutch_lesson_fixture.h"
+
 #include <gtest/gtest.h>
+
+#include <unistd.h>
 
 #include <cstring>
 
@@ -100,6 +104,30 @@ TEST(LessonSheet, PupilSheetLeavesOutEveryAnswerThatTheTeacherSheetHolds) {
     }
 }
 
+// A Dutch lesson's sheets speak Dutch around its text: the words come from its language.
+TEST(LessonSheet, ADutchLessonsSheetsAreInDutchAndThePupilsHasNoNotes) {
+    const fs::path dir = fs::temp_directory_path() / ("raylab_sheet_dutch_" + std::to_string(::getpid()));
+    const test::DutchLessonFixture f = test::makeDutchLessonFixture(dir, "07-lambert.md");
+    const Lesson nl = loadLesson(f.dutch);
+    const std::string pupilHtml = lessonSheetHtml(nl, LessonSheet::Pupil), teacherHtml = lessonSheetHtml(nl, LessonSheet::Teacher);
+    EXPECT_NE(pupilHtml.find("<html lang=\"nl\">"), std::string::npos);
+    const std::string pupil = pageText(pupilHtml), teacher = pageText(teacherHtml);
+    EXPECT_NE(pupil.find("Naam: ___"), std::string::npos);
+    EXPECT_NE(pupil.find("Leerdoelen"), std::string::npos);
+    EXPECT_NE(pupil.find("Stap 6: What Lambert leaves out"), std::string::npos) << pupil;
+    EXPECT_EQ(pupil.find("Aantekeningen voor de docent"), std::string::npos);
+    EXPECT_EQ(pupil.find("Q3: the bowl sees itself"), std::string::npos) << "an answer on the worksheet";
+    EXPECT_EQ(pupil.find("{#"), std::string::npos);
+    EXPECT_NE(teacher.find("Docentenblad \u00b7 Niveau: " + nl.level + " \u00b7 Minuten: 45 \u00b7 Stappen: 5 kern, 1 facultatief"),
+              std::string::npos)
+        << teacher.substr(0, 400);
+    EXPECT_NE(teacher.find("Stap 6: What Lambert leaves out facultatief"), std::string::npos);
+    EXPECT_NE(teacher.find("Aantekeningen voor de docent en antwoorden"), std::string::npos);
+    EXPECT_NE(teacher.find("Q3: the bowl sees itself"), std::string::npos);
+    EXPECT_EQ(teacher.find("Teacher's"), std::string::npos) << "no English word of the sheet's own";
+    fs::remove_all(dir);
+}
+
 TEST(LessonSheet, PicturesAreEmbeddedAsDataUris) {
     for (const Lesson& lesson : loadLessons(kLessons)) {
         SCOPED_TRACE(lesson.file.string());
@@ -116,9 +144,9 @@ TEST(LessonSheet, AMissingPictureIsALocatedError) {
     fs::create_directories(dir / "scenes");
     std::ofstream(dir / "scenes/s.json") << "{}";
     const fs::path file = dir / "lessons/01-x.md";
-    std::ofstream(file) << "# X\n\nScene: scenes/s.json\n\n## Learning goals\n\n- g\n\n## Step 1: S\n\nText\n\n"
+    std::ofstream(file) << "# X\n\nScene: scenes/s.json\n\n## Learning goals {#goals}\n\n- g\n\n## Step 1: S {#step}\n\nText\n\n"
                            "![the slab test](pictures/nowhere.png)\n\n```raylab\nopen scenes/s.json\n```\n\n"
-                           "## Questions\n\n1. q\n\n## Exercise\n\ne\n";
+                           "## Questions {#questions}\n\n1. q\n\n## Exercise {#exercise}\n\ne\n";
     const Lesson lesson = loadLesson(file);
     ASSERT_EQ(lesson.pictures.size(), 1u);
     EXPECT_EQ(lesson.pictures[0].line, 13);
@@ -143,6 +171,11 @@ TEST(MarkdownHtml, WritesCommonMarkBlocksAndSpans) {
               "<tbody>\n<tr><td>1</td><td style=\"text-align:right\">2</td></tr>\n</tbody>\n</table>\n");
     EXPECT_EQ(markdownToHtml("> q &amp; <b>raw</b>\n", kNoImages), "<blockquote>\n<p>q &amp; &lt;b&gt;raw&lt;/b&gt;</p>\n</blockquote>\n")
         << "raw HTML is text, as in the viewer";
+}
+
+TEST(MarkdownHtml, HeadingsLoseTheirRoleMarker) {
+    EXPECT_EQ(markdownToHtml("## Leerdoelen {#goals}\n\n## Step 2: `x` {#step .optional}\n\n## A {b}\n", kNoImages),
+              "<h2>Leerdoelen</h2>\n<h2>Step 2: <code>x</code></h2>\n<h2>A {b}</h2>\n");
 }
 
 TEST(MarkdownHtml, AnImageTakesItsSourceFromTheCallerAndItsAltTextWithoutTags) {

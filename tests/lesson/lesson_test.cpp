@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace raylab;
@@ -24,12 +25,12 @@ Scene: scenes/default.json
 
 An *introduction* paragraph.
 
-## Learning goals
+## Learning goals {#goals}
 
 - Say what a `ray` is.
 - Count to two.
 
-## Step 1: Look
+## Step 1: Look {#step}
 Some text.
 
 ```raylab
@@ -39,28 +40,28 @@ debug-view normals
 
 More text after the block.
 
-## Step 2: Change
+## Step 2: Change {#step}
 ```raylab
 set camera.fov 50
 reset
 wait-spp 4
 ```
 
-## Questions
+## Questions {#questions}
 
 1. Why?
 2. Why not,
    on two lines?
 
-## Exercise
+## Exercise {#exercise}
 
 Do it.
 
-## Going further
+## Going further {#further}
 
 Open `notebooks/x.ipynb`.
 
-## Sources
+## Sources {#sources}
 
 - Kajiya 1986.
 )";
@@ -113,7 +114,7 @@ TEST(Lesson, ParsesEveryPart) {
 
 TEST(Lesson, WriteItYourselfNamesTheExercisesItOpens) {
     const Lesson l = parseLesson(replaced(kGood, "## Going further",
-                                          "## Write it yourself\n\nRun `raylab --exercise ray-sphere`, then\n"
+                                          "## Write it yourself {#code}\n\nRun `raylab --exercise ray-sphere`, then\n"
                                           "`raylab --exercise slab-test --exercise-dir mine` and `--exercise ray-sphere` again.\n\n"
                                           "## Going further"),
                                  "lessons/t.md", kRoot);
@@ -155,22 +156,19 @@ TEST(Lesson, StructureMistakesNameFileAndLine) {
     // A number too large for an int (a fuzzer's find: it overflowed while being read).
     EXPECT_EQ(errorOf(replaced(kGood, "## Step 2: Change", "## Step 4222222222222222: Change")),
               "lessons/t.md:22: error: step numbered above 9999, expected 2");
-    EXPECT_EQ(errorOf(replaced(kGood, "## Questions", "## Quiz")),
-              "lessons/t.md:29: error: unknown section 'Quiz'; expected 'Learning goals', 'Step N: TITLE', "
-              "'Questions', 'Exercise', 'Write it yourself', 'Going further', 'Teacher's notes' or 'Sources'");
     EXPECT_EQ(errorOf(replaced(kGood, "```raylab\nset", "```text\nset")),
               "lessons/t.md:22: error: step 2 has no ```raylab block");
     EXPECT_EQ(errorOf(replaced(kGood, "Some text.", "```raylab\nreset\n```")),
               "lessons/t.md:17: error: a second ```raylab block in step 1 (one per step)");
     EXPECT_EQ(errorOf(replaced(kGood, "An *introduction* paragraph.", "```raylab\nreset\n```")),
-              "lessons/t.md:5: error: a ```raylab block outside a '## Step N: TITLE' section");
+              "lessons/t.md:5: error: a ```raylab block outside a {#step} section");
     EXPECT_EQ(errorOf(replaced(kGood, "- Say what a `ray` is.\n- Count to two.\n", "Nothing.\n")),
-              "lessons/t.md:7: error: no learning goals (a '## Learning goals' list)");
-    EXPECT_EQ(errorOf(replaced(kGood, "Do it.", "")), "lessons/t.md:35: error: no exercise (a '## Exercise' section)");
+              "lessons/t.md:7: error: no learning goals (a {#goals} section's list)");
+    EXPECT_EQ(errorOf(replaced(kGood, "Do it.", "")), "lessons/t.md:35: error: no exercise (a {#exercise} section)");
     EXPECT_EQ(errorOf(replaced(kGood, "## Sources", "# Sources")),
               "lessons/t.md:43: error: a second '# ' title; a lesson has one, sections are '## '");
     EXPECT_EQ(errorOf("Text first.\n\n## Step 1: x\n"), "lessons/t.md:3: error: the lesson must start with a '# TITLE' heading");
-    EXPECT_EQ(errorOf(replaced(kGood, "## Questions", "Questions\n---------")),
+    EXPECT_EQ(errorOf(replaced(kGood, "## Questions {#questions}", "Questions {#questions}\n---------")),
               "lessons/t.md:29: error: write headings as '# ' and '## ', not underlined");
 }
 
@@ -228,7 +226,7 @@ TEST(Lesson, HoldCutsAStepIntoSubSteps) {
 TEST(Lesson, LevelMinutesAndOptionalSteps) {
     const std::string text = replaced(replaced(kGood, "Scene: scenes/default.json\n",
                                                "Scene: scenes/default.json\n\nLevel: first-year university\n\nMinutes: 45\n"),
-                                      "## Step 2: Change", "## Step 2: Change (optional)");
+                                      "## Step 2: Change {#step}", "## Step 2: Change {#step .optional}");
     const Lesson l = parseLesson(text, "lessons/t.md", kRoot);
     EXPECT_EQ(l.level, "first-year university");
     EXPECT_EQ(l.minutes, 45);
@@ -245,4 +243,83 @@ TEST(Lesson, LevelMinutesAndOptionalSteps) {
               "lessons/t.md:7: error: 'Minutes:' needs the class time in whole minutes");
     EXPECT_EQ(errorOf(replaced(text, "Minutes: 45\n", "Minutes: 45\nLevel: VWO 5\u20136\n")),
               "lessons/t.md:7: error: 'Minutes: ...' must be a paragraph of its own");
+}
+
+TEST(Lesson, RolesComeFromMarkersAndHeadingsStayAsWritten) {
+    std::string nl = replaced(kGood, "Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: nl\n");
+    for (const auto& [from, to] : {std::pair{"## Learning goals {#goals}", "## Leerdoelen {#goals}"},
+                                   {"## Step 1: Look {#step}", "## Stap 1: Kijk {#step}"},
+                                   {"## Step 2: Change {#step}", "## Stap 2: Verander {#step .optional}"},
+                                   {"## Questions {#questions}", "## Vragen {#questions}"},
+                                   {"## Exercise {#exercise}", "## Opdracht {#exercise}"},
+                                   {"## Going further {#further}", "## Verder {#further}"},
+                                   {"## Sources {#sources}", "## Bronnen {#sources}"}})
+        nl = replaced(nl, from, to);
+    const Lesson l = parseLesson(nl, "lessons/nl/t.md", kRoot);
+    EXPECT_EQ(l.language, "nl");
+    EXPECT_EQ(l.introduction, "An *introduction* paragraph.") << "the Language line is not part of it";
+    EXPECT_EQ(l.goals.size(), 2u);
+    ASSERT_EQ(l.steps.size(), 2u);
+    EXPECT_EQ(l.steps[0].heading, "Stap 1: Kijk");
+    EXPECT_EQ(l.steps[0].title, "Kijk");
+    EXPECT_FALSE(l.steps[0].optional);
+    EXPECT_EQ(l.steps[1].heading, "Stap 2: Verander");
+    EXPECT_TRUE(l.steps[1].optional);
+    EXPECT_EQ(l.questions.size(), 2u);
+    EXPECT_EQ(l.exercise, "Do it.");
+    EXPECT_EQ(l.sources, "- Kajiya 1986.");
+    std::string roles;
+    for (const LessonSection& s : l.sections) roles += roleMarker(s.role) + " " + std::to_string(s.line) + " " + s.heading + "; ";
+    EXPECT_EQ(roles, "{#goals} 9 Leerdoelen; {#step} 14 Stap 1: Kijk; {#step} 24 Stap 2: Verander; {#questions} 31 Vragen; "
+                     "{#exercise} 37 Opdracht; {#further} 41 Verder; {#sources} 45 Bronnen; ");
+    EXPECT_EQ(l.heading(LessonRole::Goals), "Leerdoelen");
+    EXPECT_EQ(l.heading(LessonRole::Notes), "Aantekeningen voor de docent") << "a section it lacks: the language's word";
+    const Lesson en = parseLesson(kGood, "lessons/t.md", kRoot);
+    EXPECT_EQ(en.language, "en");
+    EXPECT_EQ(en.steps[0].heading, "Step 1: Look");
+    EXPECT_EQ(en.heading(LessonRole::Questions), "Questions");
+    EXPECT_EQ(en.heading(LessonRole::Notes), "Teacher's notes");
+    EXPECT_EQ(parseLesson(replaced(kGood, "Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: en\n"), "lessons/t.md", kRoot)
+                  .language,
+              "en");
+}
+
+TEST(Lesson, MarkerMistakesNameFileAndLineAndListTheMarkers) {
+    const std::string markers = "; end a '## ' heading in one of {#goals}, {#step}, {#step .optional}, {#questions}, "
+                                "{#exercise}, {#code}, {#further}, {#notes}, {#sources}";
+    const std::string write = " (write {#ROLE}, or {#step .optional})" + markers;
+    const std::string once = " (only a step takes '.optional', once)" + markers;
+    // Each mistake: the text replaced in kGood, what replaces it, the message.
+    const std::tuple<std::string, std::string, std::string> mistakes[] = {
+        {"## Questions {#questions}", "## Questions", "29: error: the heading 'Questions' has no role marker" + markers},
+        {"## Step 2: Change {#step}", "## Step 2: Change (optional)",
+         "22: error: the heading 'Step 2: Change (optional)' has no role marker" + markers},
+        {"{#questions}", "{#quiz}", "29: error: unknown role '#quiz' in '{#quiz}'" + markers},
+        {"{#questions}", "{questions}", "29: error: malformed marker '{questions}'" + write},
+        {"{#questions}", "{#questions", "29: error: malformed marker '{#questions'" + write},
+        {"{#questions}", "{ }", "29: error: malformed marker '{ }'" + write},
+        {"{#questions}", "{#questions .optional}", "29: error: unknown class '.optional' in '{#questions .optional}'" + once},
+        {"Change {#step}", "Change {#step .hidden}", "22: error: unknown class '.hidden' in '{#step .hidden}'" + once},
+        {"## Questions {#questions}", "## {#questions}", "29: error: the marker '{#questions}' has no heading before it"},
+        {"## Step 2: Change {#step}", "## Change {#step}",
+         "22: error: a step heading is 'WORD N: TITLE' (Step 2: ..., Stap 2: ...), not 'Change'"},
+        {"## Exercise {#exercise}", "## Exercise {#questions}", "35: error: a second {#questions} section (the first is on line 29)"},
+        {"# Lesson 0: A test", "# Lesson 0: A test {#goals}", "1: error: the '# ' title takes no marker; '## ' sections do"},
+        // English words with another marker are what the marker says: here a step without its number.
+        {"## Questions {#questions}", "## Questions {#step}",
+         "29: error: a step heading is 'WORD N: TITLE' (Step 3: ..., Stap 3: ...), not 'Questions'"},
+        {"Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: fr\n", "5: error: 'Language:' is one of en, nl"},
+        {"Scene: scenes/default.json\n", "Scene: scenes/default.json\n\nLanguage: nl\n\nLanguage: nl\n",
+         "7: error: a second 'Language:' line"},
+    };
+    for (const auto& [from, to, message] : mistakes) EXPECT_EQ(errorOf(replaced(kGood, from, to)), "lessons/t.md:" + message) << to;
+    // `###` headings inside a section are free.
+    EXPECT_EQ(parseLesson(replaced(kGood, "Do it.", "### A part\n\nDo it."), "lessons/t.md", kRoot).exercise, "### A part\n\nDo it.");
+}
+
+TEST(Lesson, RootOfAnEditionIsTheFolderAboveLessons) {
+    EXPECT_EQ(lessonRoot("/r/lessons/03-x.md"), fs::path("/r"));
+    EXPECT_EQ(lessonRoot("/r/lessons/nl/03-x.md"), fs::path("/r"));
+    EXPECT_EQ(lessonRoot("/r/mine/03-x.md"), fs::path("/r")) << "a folder not named lessons: the folder above";
+    EXPECT_EQ(lessonRoot("/r/mine/nl/03-x.md"), fs::path("/r/mine"));
 }

@@ -55,3 +55,16 @@ TEST(MarkdownBlocks, APictureIsABlockOfItsOwnWithItsSourceAndAltText) {
     EXPECT_EQ(blocks[3].kind, MarkdownBlock::Paragraph);
     EXPECT_EQ(blocks[3].plainText(), " after.");
 }
+
+// A lesson's role markers are for the loader: the viewer shows a heading's words only.
+TEST(MarkdownBlocks, HeadingsLoseTheirRoleMarker) {
+    const auto blocks = parseMarkdownBlocks("## Stap 4: De renderer {#step .optional}\n\n## `fr` en *L* {#goals}\n\n"
+                                            "## Braces {stay}\n\nText {#not-a-heading}\n");
+    ASSERT_EQ(blocks.size(), 4u);
+    EXPECT_EQ(blocks[0].plainText(), "Stap 4: De renderer");
+    EXPECT_EQ(blocks[1].plainText(), "fr en L");
+    ASSERT_EQ(blocks[1].spans.size(), 3u);
+    EXPECT_EQ(blocks[1].spans[2].text, "L") << "an emptied last span goes";
+    EXPECT_EQ(blocks[2].plainText(), "Braces {stay}");
+    EXPECT_EQ(blocks[3].plainText(), "Text {#not-a-heading}");
+}

@@ -59,6 +59,15 @@ protected:
         ImGui::Render();
         return clipboard_;
     }
+    // The Lesson panel's text, in a window tall enough for a whole lesson.
+    std::string lessonPanelText() {
+        return windowText([&] {
+            ImGui::SetNextWindowSize(ImVec2(600, 20000));
+            ImGui::Begin("lesson");
+            ui::drawLessonPanel(*viewer, ui);
+            ImGui::End();
+        });
+    }
     ui::UiState ui;
 
 private:

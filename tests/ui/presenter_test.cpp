@@ -65,19 +65,11 @@ TEST(Presenter, ContentFollowsTheLessonItsStepsAndTheClock) {
 
 TEST_F(PresenterPanelTest, ClassModeKeepsTheAnswersOffTheLessonPanelAndThePresenterShowsThem) {
     ASSERT_FALSE(ui.lesson.open(kLambert).has_value());
-    const auto lessonText = [&] {
-        return windowText([&] {
-            ImGui::SetNextWindowSize(ImVec2(600, 20000));
-            ImGui::Begin("lesson");
-            drawLessonPanel(*viewer, ui);
-            ImGui::End();
-        });
-    };
-    const std::string open = lessonText();
+    const std::string open = lessonPanelText();
     EXPECT_TRUE(contains(open, "Teacher's notes")) << open;
     EXPECT_FALSE(contains(open, "on the presenter view"));
     ui.presenter.classMode = true;
-    const std::string classMode = lessonText();
+    const std::string classMode = lessonPanelText();
     EXPECT_TRUE(contains(classMode, "Teacher's notes: on the presenter view (F2)")) << classMode;
     EXPECT_TRUE(contains(classMode, "Learning goals"));   // the rest of the lesson is there
 

@@ -1,14 +1,17 @@
 #include "app/lesson_session.h"
 
+#include "lesson/lesson_edition.h"
+
 #include <algorithm>
 
 namespace raylab::ui {
 
-void LessonSession::scan(const std::filesystem::path& dir) {
+void LessonSession::scan(const std::filesystem::path& lessons) {
+    lessons_ = lessons;
     entries_.clear();
     std::error_code ec;
     std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+    for (const auto& e : std::filesystem::directory_iterator(lessonEditionFolder(lessons, language_), ec))
         if (e.path().extension() == ".md" && e.path().filename() != "README.md") files.push_back(e.path());
     std::sort(files.begin(), files.end());
     for (const auto& f : files) {
@@ -31,6 +34,31 @@ std::optional<std::string> LessonSession::open(const std::filesystem::path& file
     current_ = -1;
     part_ = 0;
     pending_.reset();
+    if (lesson_->language != language_) {
+        language_ = lesson_->language;
+        if (!lessons_.empty()) scan(lessons_);
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> LessonSession::setLanguage(const std::string& language) {
+    if (!isLessonLanguage(language)) return "unknown lesson language '" + language + "' (" + lessonLanguageList() + ")";
+    if (isOpen() && lesson_->language != language) {
+        const auto twin = lessonInLanguage(lesson_->file, language);
+        if (!twin)
+            return lesson_->file.string() + ": error: the lesson is in no lessons folder, so it has no '" + language + "' edition";
+        try {
+            Lesson translated = loadLesson(*twin);
+            if (current_ >= int(translated.steps.size()) ||
+                (current_ >= 0 && part_ >= translated.steps[std::size_t(current_)].partCount()))
+                return twin->string() + ": error: its steps differ from " + lesson_->file.string() + "'s";
+            lesson_ = std::move(translated);
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+    }
+    language_ = language;
+    if (!lessons_.empty()) scan(lessons_);
     return std::nullopt;
 }
 

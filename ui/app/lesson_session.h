@@ -2,6 +2,7 @@
 // The Lesson panel's model: the lessons found in a folder, the open lesson, the step shown, and
 // the script a step button (or a presenter key) asks the window loop to run. No ImGui, no GL.
 #include "lesson/lesson.h"
+#include "lesson/lesson_words.h"
 #include "script/script.h"
 
 #include <filesystem>
@@ -20,9 +21,17 @@ struct LessonEntry {
 
 class LessonSession {
 public:
-    // Lists the *.md lessons of `dir` (README.md excluded) in file-name order.
-    void scan(const std::filesystem::path& dir);
+    // Lists the *.md lessons (README.md excluded) of the language's edition of the lessons folder
+    // `lessons` (lessons/, lessons/nl/; lesson/lesson_edition.h) in file-name order.
+    void scan(const std::filesystem::path& lessons);
     const std::vector<LessonEntry>& entries() const { return entries_; }
+
+    // The edition shown: "en" or "nl" (lesson/lesson_words.h); an opened lesson's own language.
+    const std::string& language() const { return language_; }
+    // Switches the edition: the list is rescanned, and an open lesson reopens in that language at
+    // the same step and sub-step, queuing no script (the editions' steps are the same). On failure
+    // (an unknown language, a lesson without that translation) nothing changes and the error returns.
+    std::optional<std::string> setLanguage(const std::string& language);
 
     // Opens a lesson; on failure keeps the previous one and returns the error (FILE:LINE).
     std::optional<std::string> open(const std::filesystem::path& file);
@@ -49,6 +58,8 @@ public:
     bool hasPending() const { return pending_.has_value(); }
 
 private:
+    std::filesystem::path lessons_;   // the folder scanned last ("" before a scan)
+    std::string language_ = kDefaultLessonLanguage;
     std::vector<LessonEntry> entries_;
     std::optional<Lesson> lesson_;
     int current_ = -1;

@@ -6,37 +6,48 @@
 namespace raylab::ui {
 namespace {
 
-std::string stepTitle(const LessonStep& s) { return s.title + (s.optional ? " (optional)" : " (core)"); }
+std::string stepTitle(const LessonStep& s, const LessonWords& w) {
+    return s.title + " (" + (s.optional ? w.optional : w.core) + ")";
+}
+
+// "part 2 of 3"
+std::string partOf(int part, int parts, const LessonWords& w) {
+    return std::string(w.part) + " " + std::to_string(part) + " " + w.of + " " + std::to_string(parts);
+}
 
 } // namespace
 
 PresenterContent presenterContent(const LessonSession& session, double minutesElapsed) {
     PresenterContent c;
     if (!session.isOpen()) {
-        c.title = "No lesson open";
+        c.title = lessonWords(session.language()).noLessonOpen;
         return c;
     }
     const Lesson& l = session.lesson();
+    const LessonWords& w = lessonWords(l.language);
     c.title = l.title;
     c.level = l.level;
-    if (l.minutes > 0) c.level += (c.level.empty() ? "" : ", ") + std::to_string(l.minutes) + " minutes";
+    if (l.minutes > 0) c.level += (c.level.empty() ? "" : ", ") + std::to_string(l.minutes) + " " + w.minutes;
     const int n = session.stepCount(), cur = session.current();
+    const std::string next = std::string(w.next) + ": ";
     if (cur < 0) {
-        c.step = "Not started";
-        c.next = n > 0 ? "Next: step 1, " + stepTitle(l.steps.front()) : "Last step";
+        c.step = w.notStarted;
+        c.next = n > 0 ? next + w.stepInText + " 1, " + stepTitle(l.steps.front(), w) : w.lastStep;
     } else {
         const LessonStep& s = l.steps[std::size_t(cur)];
         const int parts = session.partCount(cur), part = session.currentPart();
-        c.step = "Step " + std::to_string(cur + 1) + " of " + std::to_string(n) + ": " + stepTitle(s);
-        if (parts > 1) c.step += ", part " + std::to_string(part + 1) + " of " + std::to_string(parts);
-        if (part + 1 < parts) c.next = "Next: part " + std::to_string(part + 2) + " of " + std::to_string(parts);
-        else if (cur + 1 < n) c.next = "Next: step " + std::to_string(cur + 2) + ", " + stepTitle(l.steps[std::size_t(cur + 1)]);
-        else c.next = "Last step";
+        c.step = std::string(w.step) + " " + std::to_string(cur + 1) + " " + w.of + " " + std::to_string(n) + ": " + stepTitle(s, w);
+        if (parts > 1) c.step += ", " + partOf(part + 1, parts, w);
+        if (part + 1 < parts) c.next = next + partOf(part + 2, parts, w);
+        else if (cur + 1 < n) c.next = next + w.stepInText + " " + std::to_string(cur + 2) + ", " + stepTitle(l.steps[std::size_t(cur + 1)], w);
+        else c.next = w.lastStep;
     }
     const long minutes = std::lround(std::max(0.0, minutesElapsed));
-    c.clock = std::to_string(minutes) + " min since the lesson opened" + (l.minutes > 0 ? ", " + std::to_string(l.minutes) + " planned" : "");
+    c.clock = std::to_string(minutes) + " " + w.minutesSinceOpened + (l.minutes > 0 ? ", " + std::to_string(l.minutes) + " " + w.planned : "");
     c.questions = l.questions;
-    c.notes = l.teacherNotes.empty() ? "This lesson has no teacher's notes." : l.teacherNotes;
+    c.questionsHeading = l.heading(LessonRole::Questions);
+    c.notesHeading = w.notesAndAnswers;
+    c.notes = l.teacherNotes.empty() ? w.noNotes : l.teacherNotes;
     return c;
 }
 

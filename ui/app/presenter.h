@@ -12,13 +12,16 @@
 
 namespace raylab::ui {
 
+// The words around the lesson's own are the lesson's language's (lesson/lesson_words.h).
 struct PresenterContent {
     std::string title;          // the lesson's title, or "No lesson open"
     std::string level;          // "VWO 5–6, 45 minutes" ("" when the lesson gives neither)
     std::string step;           // "Step 2 of 6: Lambert's cosine law (core), part 1 of 2", or "Not started"
     std::string next;           // "Next: step 3, Cosine-weighted sampling", "Next: part 2 of 2", or "Last step"
     std::string clock;          // "12 min since the lesson opened, 45 planned"
+    std::string questionsHeading;         // the lesson's own heading of its questions
     std::vector<std::string> questions;   // the lesson's questions (Markdown)
+    std::string notesHeading;   // "Teacher's notes and answers", in the lesson's language
     std::string notes;          // the teacher's notes (Markdown): the answers, timings, pitfalls
 };
 

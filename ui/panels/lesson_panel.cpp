@@ -1,5 +1,5 @@
-// The Lesson tab of the Teach window: a picker over lessons/, the open lesson's Markdown, a button
-// per step that runs its script (the window loop runs it, app/lesson_session.h), the current step
+// The Lesson tab of the Teach window: the edition's language (English, Nederlands), a picker over
+// its lessons (lessons/, lessons/nl/), the open lesson's Markdown, a button per step that runs its script (the window loop runs it, app/lesson_session.h), the current step
 // highlighted, and the presenter keys of this window (arrows and Space while it has the keyboard;
 // PageDown/PageUp are key actions, script/key_actions.h).
 #include "panels/markdown_view.h"
@@ -16,9 +16,9 @@
 namespace raylab::ui {
 namespace {
 
-void heading(const char* text) {
+void heading(const std::string& text) {
     ImGui::Spacing();
-    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", text);
+    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", text.c_str());
     ImGui::Separator();
 }
 
@@ -31,17 +31,31 @@ void listItems(const std::vector<std::string>& items, bool numbered, const Lesso
     }
 }
 
+// The edition's language; switching keeps the open lesson's step (app/lesson_session.h).
+void languageChoice(Viewer& viewer, UiState& ui) {
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("Nederlands").x + ImGui::GetFrameHeight() * 2.0f);
+    if (!ImGui::BeginCombo("##language", lessonWords(ui.lesson.language()).languageName)) return;
+    for (const char* language : kLessonLanguages) {
+        if (!ImGui::Selectable(lessonWords(language).languageName, ui.lesson.language() == language)) continue;
+        if (const auto error = ui.lesson.setLanguage(language)) viewer.log().error(*error);
+    }
+    ImGui::EndCombo();
+}
+
 void picker(Viewer& viewer, UiState& ui) {
     static bool scanned = false;
     if (!scanned) {
         ui.lesson.scan(defaultLessonDirectory(shaderDirectory()));
         scanned = true;
     }
-    const std::string current = ui.lesson.isOpen() ? ui.lesson.lesson().title : "Choose a lesson";
+    const LessonWords& w = lessonWords(ui.lesson.language());
+    languageChoice(viewer, ui);
+    ImGui::SameLine();
+    const std::string current = ui.lesson.isOpen() ? ui.lesson.lesson().title : w.chooseLesson;
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::BeginCombo("##lesson", current.c_str())) {
         for (const LessonEntry& e : ui.lesson.entries()) {
-            const std::string label = e.error.empty() ? e.title : e.file.filename().string() + " (does not load)";
+            const std::string label = e.error.empty() ? e.title : e.file.filename().string() + " (" + w.doesNotLoad + ")";
             const bool selected = ui.lesson.isOpen() && ui.lesson.lesson().file == e.file;
             if (ImGui::Selectable(label.c_str(), selected)) {
                 if (const auto error = ui.lesson.open(e.file)) viewer.log().error(*error);
@@ -68,20 +82,21 @@ void presenterKeys(UiState& ui) {
 void drawLessonPanel(Viewer& viewer, UiState& ui) {
     picker(viewer, ui);
     if (!ui.lesson.isOpen()) {
-        ImGui::TextWrapped("Lessons are Markdown files in lessons/ (raylab --lesson FILE opens one). Each step has a "
-                           "button that sets the viewer's state; PageDown / PageUp move through the steps.");
+        ImGui::TextWrapped("%s", lessonWords(ui.lesson.language()).panelHelp);
         return;
     }
     const Lesson& l = ui.lesson.lesson();
+    const LessonWords& w = lessonWords(l.language);
     const int n = ui.lesson.stepCount(), cur = ui.lesson.current();
-    if (ImGui::Button(("< " + buttonLabel("Previous", KeyAction::PreviousStep)).c_str())) runAction(KeyAction::PreviousStep, viewer, ui);
+    if (ImGui::Button(("< " + buttonLabel(w.previous, KeyAction::PreviousStep) + "###previous").c_str()))
+        runAction(KeyAction::PreviousStep, viewer, ui);
     ImGui::SameLine();
-    if (ImGui::Button((buttonLabel("Next", KeyAction::NextStep) + " >").c_str())) runAction(KeyAction::NextStep, viewer, ui);
+    if (ImGui::Button((buttonLabel(w.next, KeyAction::NextStep) + " >###next").c_str())) runAction(KeyAction::NextStep, viewer, ui);
     ImGui::SameLine();
-    ImGui::Text("step %d of %d", cur + 1, n);
+    ImGui::Text("%s %d %s %d", w.stepInText, cur + 1, w.of, n);
     if (cur >= 0 && ui.lesson.partCount(cur) > 1) {
         ImGui::SameLine();
-        ImGui::Text("(part %d of %d: Next holds the next state)", ui.lesson.currentPart() + 1, ui.lesson.partCount(cur));
+        ImGui::Text("(%s %d %s %d: %s)", w.part, ui.lesson.currentPart() + 1, w.of, ui.lesson.partCount(cur), w.nextHolds);
     }
     ImGui::Separator();
     ImGui::BeginChild("##lesson-text");
@@ -90,13 +105,13 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", l.title.c_str());
     ImGui::PopTextWrapPos();
-    ImGui::TextDisabled("Scene: %s", l.scene.c_str());
+    ImGui::TextDisabled("%s: %s", w.scene, l.scene.c_str());
     if (!l.level.empty() || l.minutes > 0)
-        ImGui::TextDisabled("Level: %s, %d minutes", l.level.empty() ? "-" : l.level.c_str(), l.minutes);
+        ImGui::TextDisabled("%s: %s, %d %s", w.level, l.level.empty() ? "-" : l.level.c_str(), l.minutes, w.minutes);
     ImGui::PushID("intro");
     drawMarkdown(l.introduction, &l);
     ImGui::PopID();
-    heading("Learning goals");
+    heading(l.heading(LessonRole::Goals));
     ImGui::PushID("goals");
     listItems(l.goals, false, l);
     ImGui::PopID();
@@ -110,13 +125,13 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
             ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.85f, 0.55f, 0.1f, 1.0f));
             ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ImVec4(0.95f, 0.65f, 0.2f, 1.0f));
         }
-        const std::string label = "Step " + std::to_string(i + 1) + ": " + step.title + (step.optional ? " (optional)" : "");
+        const std::string label = step.heading + (step.optional ? " (" + std::string(w.optional) + ")" : "") + "###step";
         if (ImGui::Button(label.c_str())) ui.lesson.apply(i);
         if (active) ImGui::PopStyleColor(2);
         if (ImGui::IsItemHovered()) {
             std::string script;
             for (const ScriptCommand& c : step.commands) script += c.text().substr(c.text().find(": ") + 2) + "\n";
-            ImGui::SetTooltip("Sets the viewer's state:\n%s", script.c_str());
+            ImGui::SetTooltip("%s\n%s", w.setsState, script.c_str());
         }
         if (active && scrolledTo != cur) {
             ImGui::SetScrollHereY(0.1f);
@@ -130,21 +145,21 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
         }
         ImGui::PopID();
     }
-    heading("Questions");
+    heading(l.heading(LessonRole::Questions));
     ImGui::PushID("questions");
     listItems(l.questions, true, l);
     ImGui::PopID();
-    heading("Exercise");
+    heading(l.heading(LessonRole::Exercise));
     ImGui::PushID("exercise");
     drawMarkdown(l.exercise, &l);
     ImGui::PopID();
     if (!l.writeItYourself.empty()) {
-        heading("Write it yourself");
+        heading(l.heading(LessonRole::Code));
         ImGui::PushID("code");
         drawMarkdown(l.writeItYourself, &l);
         // Each exercise the section names opens in the Exercise tab, the tracer running the pupil's file.
         for (const std::string& name : l.codeExercises) {
-            if (!ImGui::Button(("Open exercise " + name).c_str())) continue;
+            if (!ImGui::Button((w.openExercise + (" " + name)).c_str())) continue;
             try {
                 if (ui.exercise.exercises().empty()) ui.exercise.load(exerciseDirectory());
                 const auto& all = ui.exercise.exercises();
@@ -158,7 +173,7 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
         ImGui::PopID();
     }
     if (!l.goingFurther.empty()) {
-        heading("Going further");
+        heading(l.heading(LessonRole::Further));
         ImGui::PushID("further");
         drawMarkdown(l.goingFurther, &l);
         ImGui::PopID();
@@ -166,13 +181,13 @@ void drawLessonPanel(Viewer& viewer, UiState& ui) {
     // Class mode: the answers stay off the projector, on the presenter view.
     if (!l.teacherNotes.empty() && ui.presenter.classMode) {
         ImGui::Spacing();
-        ImGui::TextDisabled("Teacher's notes: on the presenter view (%s)", std::string(keyBinding(KeyAction::TogglePresenter).keyLabel).c_str());
-    } else if (!l.teacherNotes.empty() && ImGui::CollapsingHeader("Teacher's notes")) {
+        ImGui::TextDisabled("%s (%s)", w.notesOnPresenter, std::string(keyBinding(KeyAction::TogglePresenter).keyLabel).c_str());
+    } else if (!l.teacherNotes.empty() && ImGui::CollapsingHeader((l.heading(LessonRole::Notes) + "###notes").c_str())) {
         ImGui::PushID("notes");
         drawMarkdown(l.teacherNotes, &l);
         ImGui::PopID();
     }
-    if (!l.sources.empty() && ImGui::CollapsingHeader("Sources")) {
+    if (!l.sources.empty() && ImGui::CollapsingHeader((l.heading(LessonRole::Sources) + "###sources").c_str())) {
         ImGui::PushID("sources");
         drawMarkdown(l.sources, &l);
         ImGui::PopID();

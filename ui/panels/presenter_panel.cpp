@@ -20,14 +20,14 @@ void drawPresenterPanel(UiState& ui) {
     ImGui::PopTextWrapPos();
     if (ui.lesson.isOpen()) {
         ImGui::Separator();
-        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "Questions");
+        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", c.questionsHeading.c_str());
         for (std::size_t i = 0; i < c.questions.size(); ++i) {
             ImGui::PushID(int(i));
             drawMarkdown(std::to_string(i + 1) + ". " + c.questions[i]);
             ImGui::PopID();
         }
         ImGui::Separator();
-        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "Teacher's notes and answers");
+        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", c.notesHeading.c_str());
         ImGui::PushID("notes");
         drawMarkdown(c.notes);
         ImGui::PopID();
