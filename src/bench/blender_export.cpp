@@ -49,8 +49,9 @@ double radians(float degrees) { return double(degrees) * 3.14159265358979 / 180.
 
 // A light as Blender's: POINT of power 4πI, SPOT the same power with spot_size = 2·outer and
 // Cycles' blend, whose smoothstep in cosθ runs over (1 − cos outer)·blend above cos outer, so
-// blend = (cos inner − cos outer)/(1 − cos outer) gives pbrt-v4's falloff; SUN of strength E (W/m²)
-// and angle 2·radius. Colour is the unit-peak colour, the energy carries the magnitude.
+// blend = (cos inner − cos outer)/(1 − cos outer) gives pbrt-v4's falloff (the script's light()
+// divides out Cycles' extra cos θ); SUN of angle 2·radius whose strength gives irradiance E (W/m²).
+// Colour is the unit-peak colour, the energy carries the magnitude.
 std::string lightCall(const Light& l, size_t index) {
     const glm::vec3 c = l.type == Light::Type::Distant ? l.irradiance : lightIntensity(l);
     const float peak = std::max({c.r, c.g, c.b});
@@ -71,10 +72,15 @@ std::string lightCall(const Light& l, size_t index) {
            << ", spot_blend=" << num(blend) << ")\n";
         break;
     }
-    case Light::Type::Distant:
-        py << "light(" << name << ", \"SUN\", (0, 0, 0), " << dir << ", " << colour(tint) << ", " << num(peak)
+    case Light::Type::Distant: {
+        // Cycles draws a sun's directions uniformly on a tangent disc of radius tan r, each
+        // weighted by the strength S (kernel/light/light.h): a surface facing it receives
+        // S·2/(1 + 1/cos r), raylab's disc gives it E.
+        const double strength = peak * (1.0 + 1.0 / std::cos(radians(l.angularRadius))) / 2.0;
+        py << "light(" << name << ", \"SUN\", (0, 0, 0), " << dir << ", " << colour(tint) << ", " << num(strength)
            << ", angle=" << num(2.0 * radians(l.angularRadius)) << ")\n";
         break;
+    }
     }
     return py.str();
 }
@@ -407,6 +413,16 @@ def light(name, kind, location, direction, color, energy, spot_size=None, spot_b
     if spot_size is not None:
         data.spot_size = spot_size
         data.spot_blend = spot_blend
+        # Cycles 3.4 scales a spot by cos θ from its axis (spot_light_attenuation), pbrt-v4 and
+        # raylab do not: the emission divides it out. A light shader's Normal points from the
+        # light to the shaded point.
+        data.use_nodes = True
+        tree = data.node_tree
+        cos = tree.nodes.new("ShaderNodeVectorMath")
+        cos.operation = "DOT_PRODUCT"
+        feed(tree, cos.inputs[0], tree.nodes.new("ShaderNodeNewGeometry").outputs["Normal"])
+        feed(tree, cos.inputs[1], Vector(direction).normalized())
+        feed(tree, tree.nodes["Emission"].inputs["Strength"], smath(tree, "DIVIDE", 1.0, cos.outputs["Value"]))
     if angle is not None:
         data.angle = angle
     obj = bpy.data.objects.new(name, data)
@@ -458,6 +474,8 @@ def settings(width, height, max_bounces, seed):
     s.cycles.transparent_max_bounces = max_bounces
     s.cycles.caustics_reflective = True
     s.cycles.caustics_refractive = True
+    # Filter Glossy (default 1) roughens glossy lobes after a rough bounce: biased, raylab is not.
+    s.cycles.blur_glossy = 0.0
     s.cycles.seed = seed
     s.view_settings.view_transform = "Standard"
     s.render.image_settings.file_format = "OPEN_EXR"
@@ -530,7 +548,9 @@ std::string blenderScript(const Scene& scene, const fs::path& embeddedDir) {
     py << kPrelude;
     py << "clear_scene()\n";
     const RenderSettings& r = scene.render;
-    py << "settings(" << r.width << ", " << r.height << ", " << r.maxBounces << ", " << r.seed << ")\n";
+    // raylab's max_bounces counts the vertices that gather light (1: direct light alone), Cycles'
+    // the bounces after the first (0: direct light alone); raylab's 0 (emitters alone) has no match.
+    py << "settings(" << r.width << ", " << r.height << ", " << std::max(r.maxBounces - 1, 0) << ", " << r.seed << ")\n";
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];
         py << "mat" << i << " = material(" << pyString(m.name) << ", ";
