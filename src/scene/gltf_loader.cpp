@@ -226,6 +226,38 @@ struct Reader {
     }
 };
 
+// The texel of level 0 nearest to uv in [0, 1]^2.
+glm::vec4 nearestTexel(const Texture& t, glm::vec2 uv) {
+    const MipLevel& l = t.levels.at(0);
+    const int x = std::clamp(int(uv.x * float(l.width)), 0, l.width - 1);
+    const int y = std::clamp(int(uv.y * float(l.height)), 0, l.height - 1);
+    return l.texels[std::size_t(y) * std::size_t(l.width) + std::size_t(x)];
+}
+
+// KHR_materials_specular's f0 per texel: min(dielectric x colour.rgb, 1) x factor x strength.a, at
+// the size of the larger of the two textures (the other read at the nearest texel), with its wraps.
+Texture bakedSpecular(const Texture* colour, const Texture* strength, glm::vec3 dielectric, float factor) {
+    const Texture* grid = colour;
+    if (!grid || (strength && strength->levels[0].texels.size() > grid->levels[0].texels.size())) grid = strength;
+    MipLevel base;
+    base.width = grid->levels[0].width;
+    base.height = grid->levels[0].height;
+    base.texels.resize(grid->levels[0].texels.size());
+    for (int y = 0; y < base.height; ++y)
+        for (int x = 0; x < base.width; ++x) {
+            const glm::vec2 uv((float(x) + 0.5f) / float(base.width), (float(y) + 0.5f) / float(base.height));
+            const glm::vec3 c = colour ? glm::vec3(nearestTexel(*colour, uv)) : glm::vec3(1.0f);
+            const float a = strength ? nearestTexel(*strength, uv).a : 1.0f;
+            base.texels[std::size_t(y) * std::size_t(base.width) + std::size_t(x)] =
+                glm::vec4(glm::min(dielectric * c, glm::vec3(1.0f)) * factor * a, 1.0f);
+        }
+    Texture t;
+    t.levels = buildMipPyramid(std::move(base));
+    t.wrapU = grid->wrapU;
+    t.wrapV = grid->wrapV;
+    return t;
+}
+
 TextureWrap wrapMode(int gl) {
     switch (gl) {
     case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
@@ -254,6 +286,14 @@ struct MaterialReader {
         const std::string key = (linearData ? "linear:" : "srgb:") + name + "#textures[" + std::to_string(index) + "]";
         for (std::size_t i = 0; i < asset.textures.size(); ++i)
             if (asset.textures[i].file == key) return int(i);
+        Texture tex = decoded(index, linearData, where);
+        tex.file = key;
+        asset.textures.push_back(std::move(tex));
+        return int(asset.textures.size() - 1);
+    }
+
+    // Texture `index` decoded, with its sampler's wrap modes, not yet among the asset's textures.
+    Texture decoded(int index, bool linearData, const std::string& where) const {
         const tinygltf::Texture& t = model.textures[std::size_t(index)];
         const std::string tp = "textures[" + std::to_string(index) + "]";
         if (t.source < 0 || std::size_t(t.source) >= model.images.size()) fail(where, tp + ": no image (source)");
@@ -271,18 +311,80 @@ struct MaterialReader {
         } catch (const TextureError& e) {
             fail(where, ip + ": " + e.what());
         }
-        tex.file = key;
         if (t.sampler >= 0) {
             if (std::size_t(t.sampler) >= model.samplers.size()) fail(where, tp + ": bad sampler index");
             const tinygltf::Sampler& s = model.samplers[std::size_t(t.sampler)];
             tex.wrapU = wrapMode(s.wrapS);
             tex.wrapV = wrapMode(s.wrapT);
         }
-        asset.textures.push_back(std::move(tex));
-        return int(asset.textures.size() - 1);
+        return tex;
     }
 
     static float clamp01(double v) { return float(std::min(1.0, std::max(0.0, v))); }
+
+    // A textureInfo inside an extension, which tinygltf leaves as a Value: {"index": k, "texCoord": n}.
+    std::optional<Texture> extensionTexture(const tinygltf::Value& ext, const char* key, bool linearData,
+                                            const std::string& where) {
+        if (!ext.Has(key)) return std::nullopt;
+        const tinygltf::Value& v = ext.Get(key);
+        const std::string tp = where + "." + key;
+        if (!v.IsObject() || !v.Has("index") || !v.Get("index").IsInt())
+            fail(tp, "expected a texture reference {\"index\": k}");
+        const int index = v.Get("index").GetNumberAsInt();
+        if (auto bad = badIndex(index, model.textures.size(), "a texture")) fail(tp + ".index", *bad);
+        if (v.Has("texCoord") && (!v.Get("texCoord").IsInt() || v.Get("texCoord").GetNumberAsInt() != 0))
+            asset.warnings.push_back(name + ": " + tp + ".texCoord: only TEXCOORD_0 is supported; it is used");
+        return decoded(index, linearData, tp);
+    }
+
+    // KHR_materials_specular (with KHR_materials_ior's ior, default 1.5): the dielectric f0 =
+    // min(F0(ior) x specularColorFactor x specularColorTexture.rgb, 1) x specularFactor x
+    // specularTexture.a, as one f0 or, with a texture, baked per texel into a specular_texture under f0 1.
+    void specular(const tinygltf::Material& g, const std::string& mp, Material& m) {
+        const auto iorExt = g.extensions.find("KHR_materials_ior");
+        double ior = 1.5;
+        if (iorExt != g.extensions.end() && iorExt->second.Has("ior")) {
+            const tinygltf::Value& v = iorExt->second.Get("ior");
+            if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()) || v.GetNumberAsDouble() < 1.0)
+                fail(mp + ".extensions.KHR_materials_ior.ior", "must be a number >= 1");
+            ior = v.GetNumberAsDouble();
+        }
+        const double r = (ior - 1.0) / (ior + 1.0);
+        m.f0 = glm::vec3(float(r * r));
+        const auto found = g.extensions.find("KHR_materials_specular");
+        if (found == g.extensions.end()) return;
+        const tinygltf::Value& ext = found->second;
+        const std::string ep = mp + ".extensions.KHR_materials_specular";
+        double factor = 1.0;
+        if (ext.Has("specularFactor")) {
+            const tinygltf::Value& v = ext.Get("specularFactor");
+            if (!v.IsNumber() || !(v.GetNumberAsDouble() >= 0.0 && v.GetNumberAsDouble() <= 1.0))
+                fail(ep + ".specularFactor", "must be a number in [0, 1]");
+            factor = v.GetNumberAsDouble();
+        }
+        glm::vec3 colour(1.0f);
+        if (ext.Has("specularColorFactor")) {
+            const tinygltf::Value& v = ext.Get("specularColorFactor");
+            const auto component = [&v](int k) { return v.Get(k).IsNumber() ? v.Get(k).GetNumberAsDouble() : -1.0; };
+            if (!v.IsArray() || v.ArrayLen() != 3 || !(std::isfinite(component(0)) && component(0) >= 0.0) ||
+                !(std::isfinite(component(1)) && component(1) >= 0.0) || !(std::isfinite(component(2)) && component(2) >= 0.0))
+                fail(ep + ".specularColorFactor", "must be three numbers >= 0");
+            colour = glm::vec3(float(component(0)), float(component(1)), float(component(2)));
+        }
+        const glm::vec3 dielectric = m.f0 * colour;
+        const std::optional<Texture> colourTexture = extensionTexture(ext, "specularColorTexture", false, ep);
+        const std::optional<Texture> strengthTexture = extensionTexture(ext, "specularTexture", true, ep);
+        if (!colourTexture && !strengthTexture) {
+            m.f0 = glm::min(dielectric, glm::vec3(1.0f)) * float(factor);
+            return;
+        }
+        Texture baked = bakedSpecular(colourTexture ? &*colourTexture : nullptr,
+                                      strengthTexture ? &*strengthTexture : nullptr, dielectric, float(factor));
+        baked.file = "linear:" + name + "#" + ep;
+        asset.textures.push_back(std::move(baked));
+        m.f0 = glm::vec3(1.0f);
+        m.specularTextureIndex = int(asset.textures.size() - 1);
+    }
 
     Material material(std::size_t k) {
         const tinygltf::Material& g = model.materials[k];
@@ -294,8 +396,9 @@ struct MaterialReader {
         if (pbr.baseColorFactor.size() >= 3)
             m.albedo = glm::vec3(clamp01(pbr.baseColorFactor[0]), clamp01(pbr.baseColorFactor[1]),
                                  clamp01(pbr.baseColorFactor[2]));
-        // glTF's dielectrics reflect 4% at normal incidence; metals take the base colour as f0.
-        m.f0 = glm::vec3(0.04f);
+        // glTF's dielectrics reflect 4% at normal incidence (ior 1.5) unless an extension says
+        // otherwise; metals take the base colour as f0.
+        specular(g, mp, m);
         m.metallic = clamp01(pbr.metallicFactor);
         m.roughness = clamp01(pbr.roughnessFactor);
         if (pbr.baseColorTexture.index >= 0)
@@ -460,7 +563,7 @@ GltfAsset loadGltfAsset(const std::filesystem::path& file) {
     }
     if (!reader.anyMaterial) mesh.triangleMaterials.clear();
     for (const std::string& e : model.extensionsRequired)
-        if (e != "KHR_materials_emissive_strength")
+        if (e != "KHR_materials_emissive_strength" && e != "KHR_materials_specular" && e != "KHR_materials_ior")
             asset.warnings.push_back(name + ": extensionsRequired: " + e + " is not supported; the file may look different");
     warn = withoutTrailingNewlines(warn);
     if (!warn.empty()) asset.warnings.push_back(name + ": " + warn);

@@ -152,6 +152,39 @@ void readTextureSlot(const TextureSlot& slot, const Json& v, const JsonPath& p, 
     material.*slot.index = int(textures.size() - 1);
 }
 
+void redisplaceMesh(Mesh& mesh, MeshDisplacement d, const JsonPath& p, const std::filesystem::path& sceneDir) {
+    // The shape as given: each of its triangles became a run of 4^levels consecutive ones (mesh/subdivision.cpp).
+    Mesh next = mesh;
+    if (const std::shared_ptr<const Mesh> given = mesh.displacement.source) {
+        const std::size_t children = given->triangles.empty() ? 1 : mesh.triangles.size() / given->triangles.size();
+        next.positions = given->positions;
+        next.normals = given->normals;
+        next.uvs = given->uvs;
+        next.triangles = given->triangles;
+        next.triangleMaterials.clear();
+        if (!mesh.triangleMaterials.empty())
+            for (std::size_t t = 0; t < given->triangles.size(); ++t)
+                next.triangleMaterials.push_back(mesh.triangleMaterials[t * children]);
+    }
+    d.source = nullptr;
+    d.trianglesBefore = 0;
+    d.milliseconds = 0.0;
+    next.displacement = d;
+    if (!d.texture.empty()) {
+        const JsonPath tp = p.key("displacement_texture");
+        const Texture texture = readImage(resolvedPath(d.texture, sceneDir), true, tp);
+        if (next.uvs.empty()) fail(tp, "the mesh has no uvs to read the displacement texture at");
+        const std::size_t factor = std::size_t(1) << (2 * d.subdivision);
+        if (next.triangles.size() > kMaxDisplacedTriangles / factor)
+            fail(p.key("displacement_subdivision"),
+                 std::to_string(next.triangles.size()) + " triangles x 4^" + std::to_string(d.subdivision) +
+                     " exceed the limit of " + std::to_string(kMaxDisplacedTriangles) + " displaced triangles");
+        next.displacement.source = std::make_shared<const Mesh>(next);
+        displaceMesh(next, texture);
+    }
+    mesh = std::move(next);
+}
+
 namespace {
 
 // Appends the items that `into` does not hold yet (by `same`); returns where each item now is.
@@ -243,21 +276,12 @@ EmissionSides readEmissionSides(const Json& o, const JsonPath& p, bool fromGltfF
 // "displacement_texture" with its scale and subdivision level: the mesh is tessellated and displaced
 // here, once (mesh/displacement.h). The image is data (linear), used on loading only.
 void readDisplacement(const Json& o, const JsonPath& p, const std::filesystem::path& sceneDir, Mesh& mesh) {
-    MeshDisplacement& d = mesh.displacement;
+    MeshDisplacement d;
     for (const DisplacementParamSpec& spec : displacementParameters())
         if (o.contains(spec.key)) spec.set(d, readValue(spec, o[std::string(spec.key)], p.key(spec.key)));
-    if (!o.contains("displacement_texture")) return;
-    const JsonPath tp = p.key("displacement_texture");
-    d.texture = imageKey(o["displacement_texture"], tp);
-    const Texture texture = readImage(resolvedPath(d.texture, sceneDir), true, tp);
-    if (mesh.uvs.empty()) fail(tp, "the mesh has no uvs to read the displacement texture at");
-    const std::size_t factor = std::size_t(1) << (2 * d.subdivision);
-    if (mesh.triangles.size() > kMaxDisplacedTriangles / factor)
-        fail(p.key("displacement_subdivision"),
-             std::to_string(mesh.triangles.size()) + " triangles x 4^" + std::to_string(d.subdivision) +
-                 " exceed the limit of " + std::to_string(kMaxDisplacedTriangles) + " displaced triangles");
-    if (mesh.file.empty()) d.source = std::make_shared<const Mesh>(mesh);
-    displaceMesh(mesh, texture);
+    if (o.contains("displacement_texture"))
+        d.texture = imageKey(o["displacement_texture"], p.key("displacement_texture"));
+    redisplaceMesh(mesh, std::move(d), p, sceneDir);
 }
 
 // A mesh object: inline arrays, or "file" (OBJ, relative to the scene file's directory).

@@ -7,6 +7,7 @@
 #include "scene/scene.h"
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace raylab::scenefmt {
@@ -18,6 +19,14 @@ void buildScene(const Json& root, Scene& scene);
 // into `textures`; sets the slot's file and index in `material`.
 void readTextureSlot(const TextureSlot& slot, const Json& v, const JsonPath& p, const std::filesystem::path& sceneDir,
                      std::vector<Texture>& textures, Material& material);
+
+// A key naming an image file: a non-empty string (fails at `p` otherwise).
+std::string imageKey(const Json& v, const JsonPath& p);
+
+// Tessellates and displaces `mesh` by `d` (mesh/displacement.h) from its shape as given (its
+// displacement's source when it was displaced); without a texture the mesh stays as given. `p` is
+// the object's path for errors; the mesh is unchanged when it throws.
+void redisplaceMesh(Mesh& mesh, MeshDisplacement d, const JsonPath& p, const std::filesystem::path& sceneDir);
 
 // camera.look_at must differ from camera.position, and camera.up must be a direction across the view.
 void checkCamera(const Camera& camera);

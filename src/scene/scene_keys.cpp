@@ -170,6 +170,37 @@ SceneParam objectMaterialKey(std::string_view key, bool mesh, std::size_t i, con
     return k;
 }
 
+// A mesh's displacement key (objects.N.displacement_*): the mesh is tessellated and displaced again
+// from its shape as given, with the loader's checks.
+std::optional<SceneParam> displacementKey(std::string_view key, std::size_t i, std::size_t object, std::string_view field) {
+    const JsonPath at = JsonPath{}.key("objects").index(object);
+    auto redisplace = [i, at](Scene& sc, MeshDisplacement d) {
+        asLoaderChecks([&] { scenefmt::redisplaceMesh(sc.meshes.at(i), std::move(d), at, sc.sourcePath.parent_path()); });
+    };
+    if (field == "displacement_texture") {
+        SceneParam k;
+        k.key = std::string(key);
+        k.setText = [redisplace, i, at, key = k.key](Scene& sc, std::string_view text) {
+            MeshDisplacement d = sc.meshes.at(i).displacement;
+            const Json v = textValue(text, key);
+            asLoaderChecks([&] { d.texture = scenefmt::imageKey(v, at.key("displacement_texture")); });
+            redisplace(sc, std::move(d));
+        };
+        return k;
+    }
+    for (const DisplacementParamSpec& s : displacementParameters()) {
+        if (s.key != field) continue;
+        return SceneParam{std::string(key), &s, [&s, i](const Scene& sc) { return s.get(sc.meshes.at(i).displacement); },
+                          [&s, i, redisplace](Scene& sc, const ParamValue& v) {
+                              MeshDisplacement d = sc.meshes.at(i).displacement;
+                              s.set(d, v);
+                              redisplace(sc, std::move(d));
+                          },
+                          nullptr, s.trigger};
+    }
+    return std::nullopt;
+}
+
 SceneParam objectKey(const Scene& scene, std::string_view key, std::string_view item, std::string_view field) {
     const std::optional<std::size_t> index = parseIndex(item);
     const std::size_t count = scene.spheres.size() + scene.meshes.size();
@@ -198,9 +229,12 @@ SceneParam objectKey(const Scene& scene, std::string_view key, std::string_view 
     }
     if (field == "material")
         return objectMaterialKey(key, mesh, i, JsonPath{}.key("objects").index(*index).key("material"));
+    if (mesh)
+        if (auto k = displacementKey(key, i, *index, field)) return *k;
     std::string keys = mesh ? "" : keysOf(sphereParameters()) + ", ";
     throw EditError(std::string(key) + ": " + (mesh ? "meshes" : "spheres") + " have no key '" + std::string(field) +
-                   "' (keys: " + keys + keysOf(transformParameters()) + ", material)");
+                   "' (keys: " + keys + keysOf(transformParameters()) + ", material" +
+                   (mesh ? ", displacement_texture, " + keysOf(displacementParameters()) : "") + ")");
 }
 
 // A light's key (lights.N.FIELD) among its type's keys, checked as the loader checks the light.
@@ -281,6 +315,10 @@ std::vector<std::string> sceneKeys(const Scene& scene) {
             for (const SphereParamSpec& p : sphereParameters()) keys.push_back(prefix + std::string(p.key));
         for (const TransformParamSpec& p : transformParameters()) keys.push_back(prefix + std::string(p.key));
         keys.push_back(prefix + "material");
+        if (i >= scene.spheres.size()) {
+            keys.push_back(prefix + "displacement_texture");
+            for (const DisplacementParamSpec& p : displacementParameters()) keys.push_back(prefix + std::string(p.key));
+        }
     }
     for (std::size_t i = 0; i < scene.lights.size(); ++i)
         for (std::string_view k : lightKeysOf(scene.lights[i].type)) keys.push_back("lights." + std::to_string(i) + "." + std::string(k));
@@ -350,7 +388,14 @@ Trigger setParam(Scene& scene, std::string_view key, std::string_view valueText)
         param.setText(scene, valueText);
         return param.trigger;
     }
-    return setParam(scene, param, parseParamValue(*param.spec, valueText));
+    try {
+        return setParam(scene, param, parseParamValue(*param.spec, valueText));
+    } catch (const EditError& e) {
+        // A per-item table's complaint names its field ("displacement_scale: ..."): name the whole key.
+        const std::string what = e.what(), field = std::string(param.spec->key) + ": ";
+        if (param.key == param.spec->key || what.rfind(field, 0) != 0) throw;
+        throw EditError(param.key + ": " + what.substr(field.size()));
+    }
 }
 
 } // namespace raylab

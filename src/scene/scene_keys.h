@@ -1,8 +1,8 @@
 #pragma once
 // The scene file's keys as addresses into a loaded Scene: "camera.fov", "sky.map",
 // "materials.red.albedo" (a material by name or index), "materials.red.albedo_texture",
-// "objects.2.radius", "objects.2.transform.scale", "objects.2.material", "lights.0.intensity" (a
-// light's own type's keys). Objects are numbered as sceneToJson writes them: spheres first, then meshes. Every key is resolved through the parameter
+// "objects.2.radius", "objects.2.transform.scale", "objects.2.material", "objects.3.displacement_scale"
+// (the mesh displaced again), "lights.0.intensity" (a light's own type's keys). Objects are numbered as sceneToJson writes them: spheres first, then meshes. Every key is resolved through the parameter
 // table (scene/parameters.h) and checked as the loader checks it, so the viewer's panels, its
 // script's `set` and the renderer's --set accept the same keys.
 #include "scene/parameters.h"

@@ -1,10 +1,12 @@
 // Displacement on loading (mesh/displacement.h, mesh/subdivision.h): subdivision counts and
 // closedness, heights from the texture at known points, recomputed normals of known shapes, the
-// BVH's view of the displaced surface, the scene writer and the statistics.
+// BVH's view of the displaced surface, the scene writer, the statistics, and the live keys that
+// displace a loaded mesh again (objects.N.displacement_*).
 #include "accel/cpu_traversal.h"
 #include "mesh/displacement.h"
 #include "mesh/subdivision.h"
 #include "render/scene_stats.h"
+#include "scene/scene_keys.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
 #include "support/gltf_writer.h"
@@ -12,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -210,5 +213,72 @@ TEST(MeshDisplacement, SceneStatsReportTheTrianglesBeforeAndAfter) {
     const Scene plain = load(dir, quadScene(R"("normals": [0,0,1, 0,0,1, 0,0,1, 0,0,1])"));
     EXPECT_EQ(describeSceneStats(sceneStats(plain, buildSceneGeometry(plain))).find("displacement"), std::string::npos)
         << "no displacement line without displacement";
+    fs::remove_all(dir);
+}
+
+TEST(MeshDisplacement, LiveKeysDisplaceAgainFromTheShapeAsGivenAsLoadingWould) {
+    const fs::path dir = scratch("live");
+    writeRow(dir / "ramp.png", [](int i) { return 32 * i; });
+    writeRow(dir / "grey.png", [](int) { return 128; });
+    Scene s = load(dir, quadScene(R"("displacement_texture": "ramp.png", "displacement_scale": 0.25,
+                                     "displacement_subdivision": 2)"));
+    EXPECT_EQ(setParam(s, "objects.0.displacement_subdivision", "3"), Trigger::ReloadScene);
+    setParam(s, "objects.0.displacement_scale", "-0.5");
+    setParam(s, "objects.0.displacement_texture", "grey.png");
+    const Scene loaded = load(dir, quadScene(R"("displacement_texture": "grey.png", "displacement_scale": -0.5,
+                                                "displacement_subdivision": 3)"));
+    const Mesh& m = s.meshes.at(0);
+    EXPECT_EQ(m.triangles.size(), 128u);
+    EXPECT_EQ(m.displacement.trianglesBefore, 2u) << "from the two triangles as given, not the 32 displaced ones";
+    EXPECT_EQ(m.positions, loaded.meshes.at(0).positions);
+    EXPECT_EQ(m.normals, loaded.meshes.at(0).normals);
+    EXPECT_EQ(sceneToJson(s), sceneToJson(loaded));
+    fs::remove_all(dir);
+}
+
+TEST(MeshDisplacement, LiveKeysKeepEachTrianglesMaterial) {
+    const fs::path dir = scratch("live_materials");
+    writeRow(dir / "grey.png", [](int) { return 128; });
+    Scene s = load(dir, quadScene(R"("displacement_texture": "grey.png", "displacement_subdivision": 1)"));
+    // As a glTF file's per-triangle materials: the first given triangle's 4 children use 7, the second's 9.
+    s.meshes.at(0).triangleMaterials = {7, 7, 7, 7, 9, 9, 9, 9};
+    setParam(s, "objects.0.displacement_subdivision", "2");
+    std::vector<int> expected(32, 7);   // 2 x 4^2 triangles, 16 from each given one
+    std::fill(expected.begin() + 16, expected.end(), 9);
+    EXPECT_EQ(s.meshes.at(0).triangleMaterials, expected);
+    fs::remove_all(dir);
+}
+
+TEST(MeshDisplacement, BadLiveValuesAreLocatedErrorsAndLeaveTheMesh) {
+    const fs::path dir = scratch("live_errors");
+    writeRow(dir / "grey.png", [](int) { return 128; });
+    Scene s = load(dir, quadScene(R"("displacement_texture": "grey.png", "displacement_subdivision": 1)"));
+    const nlohmann::json before = sceneToJson(s);
+    const std::vector<glm::vec3> positions = s.meshes.at(0).positions;
+    auto error = [&](const std::string& key, const std::string& value) {
+        try {
+            setParam(s, key, value);
+        } catch (const EditError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(error("objects.0.displacement_subdivision", "9"), "objects.0.displacement_subdivision: must be in [0, 8], got 9");
+    EXPECT_EQ(error("objects.0.displacement_scale", "\"high\""), "objects.0.displacement_scale: expected a number, got \"high\"");
+    EXPECT_EQ(error("objects.0.displacement_texture", "missing.png"),
+              "objects[0].displacement_texture: " + (dir / "missing.png").string() + ": cannot read: no such file");
+    EXPECT_EQ(error("objects.0.displacement_texture", "\"\""),
+              "objects[0].displacement_texture: expected the path of an image file (a string), got empty string");
+    EXPECT_EQ(sceneToJson(s), before);
+    EXPECT_EQ(s.meshes.at(0).positions, positions);
+    // A mesh without uvs cannot take a texture, as on loading.
+    Scene flat = parseScene(R"({ "objects": [ { "type": "mesh", "positions": [0,0,0, 1,0,0, 0,1,0], "indices": [0,1,2] } ] })",
+                            (dir / "flat.json").string());
+    std::swap(s, flat);
+    EXPECT_EQ(error("objects.0.displacement_texture", "grey.png"),
+              "objects[0].displacement_texture: the mesh has no uvs to read the displacement texture at");
+    EXPECT_EQ(error("objects.0.radius", "2"),
+              "objects.0.radius: meshes have no key 'radius' (keys: transform.translation, transform.rotation, "
+              "transform.scale, material, displacement_texture, displacement_scale, displacement_subdivision)");
     fs::remove_all(dir);
 }

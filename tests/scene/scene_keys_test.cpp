@@ -131,12 +131,14 @@ TEST(SceneKeys, EveryTableKeyResolves) {
         EXPECT_EQ(resolveParam(s, "objects.1." + std::string(p.key)).spec, &p);
 }
 
-// A scene in scenes/, so that relative texture and sky files resolve: two spheres and an inline mesh.
+// A scene in scenes/, so that relative texture and sky files resolve: two spheres and an inline
+// mesh, displaced so that its displacement keys are written.
 const std::string kSceneFile = (std::filesystem::path(RAYLAB_SOURCE_DIR) / "scenes" / "keys_test.json").string();
 const char* kSceneText = R"({"materials": {"red": {"albedo": [0.8, 0.1, 0.1]}, "lamp": {"emission": 1, "strength": 4}},
     "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "red"},
                 {"type": "sphere", "center": [3, 0, 0], "radius": 0.5, "material": "lamp"},
-                {"type": "mesh", "positions": [0, 0, 0, 1, 0, 0, 0, 1, 0], "indices": [0, 1, 2], "material": "red"}]})";
+                {"type": "mesh", "positions": [0, 0, 0, 1, 0, 0, 0, 1, 0], "indices": [0, 1, 2], "material": "red",
+                 "uvs": [0, 0, 1, 0, 0, 1], "displacement_texture": "textures/glow.png", "displacement_scale": 0.1}]})";
 
 // A valid value for `key` that differs from the one `scene` holds, as --set and the script write it.
 std::string otherValue(const Scene& scene, const std::string& key) {
@@ -173,9 +175,10 @@ std::string otherValue(const Scene& scene, const std::string& key) {
 TEST(SceneKeys, EveryKeyTheFileHasIsSetLiveAsSetSetsIt) {
     const Scene scene = parseScene(kSceneText, kSceneFile);
     const std::vector<std::string> keys = sceneKeys(scene);
-    // The whole parameter table, every material and texture key, every object key.
+    // The whole parameter table, every material and texture key, every object key (a mesh's displacement too).
     EXPECT_EQ(keys.size(), sceneParameters().size() + 1 + 2 * (materialParameters().size() + materialFileKeys().size()) +
-                               2 * sphereParameters().size() + 3 * (transformParameters().size() + 1));
+                               2 * sphereParameters().size() + 3 * (transformParameters().size() + 1) +
+                               displacementParameters().size() + 1);
     for (const std::string& key : keys) {
         const std::string value = otherValue(scene, key);
         SCOPED_TRACE(key + "=" + value);

@@ -188,7 +188,8 @@ Scene keyBaseScene() {
         "materials": { "m": {}, "n": { "albedo": 0.5 } },
         "objects": [
             { "type": "sphere", "material": "m" },
-            { "type": "mesh", "material": "m", "positions": [0, 0, 0, 1, 0, 0, 0, 1, 0], "indices": [0, 1, 2] }
+            { "type": "mesh", "material": "m", "positions": [0, 0, 0, 1, 0, 0, 0, 1, 0], "indices": [0, 1, 2],
+              "uvs": [0, 0, 1, 0, 0, 1], "displacement_texture": "textures/bricks_height.ppm", "displacement_scale": 0.1 }
         ] })",
                       (kScenes / "keys_base.json").string());
 }
@@ -199,6 +200,7 @@ std::string otherText(const std::string& key, const fs::path& otherSky) {
     for (const PathKey& p : pathKeys())
         if (p.scope == PathScope::Material && key.ends_with("." + std::string(p.key))) return "textures/bricks.ppm";
     if (key.ends_with(".material")) return "n";
+    if (key.ends_with(".displacement_texture")) return "textures/bricks.ppm";
     return "";
 }
 

@@ -6,9 +6,31 @@
 #include "scene/scene_loader.h"
 #include "scene/scene_save.h"
 
+#include <cstdio>
 #include <fstream>
 
 namespace raylab::ui {
+namespace {
+
+// Logs what an edit cost where it is not obvious (a displacement key: the mesh's triangles and
+// time); true.
+bool reportEdit(Log& log, const Scene& scene, const std::string& key) {
+    const std::vector<std::string> parts = splitKey(key);
+    if (parts.size() != 3 || parts[0] != "objects" || parts[2].rfind("displacement_", 0) != 0) return true;
+    const auto r = objectRef(scene, std::stoi(parts[1]));
+    if (!r || !r->mesh) return true;
+    const Mesh& m = scene.meshes[std::size_t(r->index)];
+    char text[160];
+    if (m.displacement.texture.empty())
+        std::snprintf(text, sizeof text, "not displaced (no displacement_texture): %zu triangles", m.triangles.size());
+    else
+        std::snprintf(text, sizeof text, "displaced again: %zu -> %zu triangles in %.1f ms", m.displacement.trianglesBefore,
+                      m.triangles.size(), m.displacement.milliseconds);
+    log.info(key + ": " + text);
+    return true;
+}
+
+} // namespace
 
 bool SceneDocument::open(const std::filesystem::path& file) {
     Scene next;
@@ -58,7 +80,7 @@ bool SceneDocument::set(const std::string& key, const std::string& valueText) {
     Scene next = scene_;
     try {
         const Trigger t = setParam(next, key, valueText);
-        return apply(std::move(next), t);
+        return apply(std::move(next), t) && reportEdit(log_, scene_, key);
     } catch (const std::exception& e) {
         lastError_ = std::string("set ") + e.what();
         log_.error(lastError_);
@@ -70,7 +92,7 @@ bool SceneDocument::set(const SceneParam& param, const ParamValue& value) {
     Scene next = scene_;
     try {
         const Trigger t = setParam(next, param, value);
-        return apply(std::move(next), t);
+        return apply(std::move(next), t) && reportEdit(log_, scene_, param.key);
     } catch (const std::exception& e) {
         lastError_ = e.what();
         log_.error(lastError_);

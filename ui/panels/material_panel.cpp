@@ -1,5 +1,5 @@
 // Material panel: the outliner (every object: spheres, then mesh instances, then the lights; click
-// to select), the selected object's keys (a sphere's centre and radius, a mesh's transform) and the
+// to select), the selected object's keys (a sphere's centre and radius, a mesh's transform and displacement) and the
 // keys of the material it edits, or the selected light's keys (light_panel.cpp), all built from
 // the parameter tables so new keys show up without UI changes. A mesh with glTF per-triangle
 // materials lists them; the one under the last click is edited.
@@ -12,6 +12,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace raylab::ui {
@@ -23,6 +24,21 @@ float positionSpeed(const Viewer& viewer) {
     if (!g || g->topNodes.empty()) return 0.01f;
     const glm::vec3 extent = glm::vec3(g->topNodes[0].boundsMax) - glm::vec3(g->topNodes[0].boundsMin);
     return std::max(0.002f * std::max({extent.x, extent.y, extent.z}), 1e-4f);
+}
+
+// A mesh's displacement: each change tessellates and displaces it again (trigger "reload scene");
+// the texture path applies on Enter. An edit replaces the scene, so `m` is read before any widget.
+void displacementKeys(Viewer& viewer, const std::string& prefix, const Mesh& m) {
+    if (!m.displacement.texture.empty())
+        ImGui::TextDisabled("displaced: %zu -> %zu triangles in %.1f ms", m.displacement.trianglesBefore,
+                            m.triangles.size(), m.displacement.milliseconds);
+    char path[1024];
+    std::snprintf(path, sizeof path, "%s", m.displacement.texture.c_str());
+    if (ImGui::InputText("displacement_texture", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue))
+        viewer.document().set(prefix + "displacement_texture", path);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("displacement_texture: an image file, relative to the scene file (Enter applies)");
+    for (const DisplacementParamSpec& p : displacementParameters())
+        paramWidget(viewer, resolveParam(viewer.scene(), prefix + std::string(p.key)));
 }
 
 void objectKeys(Viewer& viewer, int sel, const ObjectRef& r) {
@@ -37,6 +53,7 @@ void objectKeys(Viewer& viewer, int sel, const ObjectRef& r) {
         for (const TransformParamSpec& p : transformParameters())
             paramWidget(viewer, resolveParam(scene, prefix + std::string(p.key)),
                         p.key == "transform.translation" ? speed : 0.01f);
+        displacementKeys(viewer, prefix, viewer.scene().meshes[std::size_t(r.index)]);   // `m` is stale after an edit
     } else {
         ImGui::Text("object %d: sphere %d", sel, r.index);
         for (const SphereParamSpec& p : sphereParameters())
