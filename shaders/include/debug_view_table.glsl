@@ -48,6 +48,8 @@
     X(12, UV, Uv, "uv", 1, 0, 0, DEBUG_DISPLAY_RAW, \
       "(u, v) fractional part as red, green; spheres have uv only in textured scenes") \
     X(14, AO, Ao, "ao", 1, 0, 0, DEBUG_DISPLAY_RAW, \
-      "ambient occlusion: the fraction of cosine-weighted rays from the first hit that escape within one world unit")
+      "ambient occlusion: the fraction of cosine-weighted rays from the first hit that travel ao.distance unblocked") \
+    X(15, BAKED_AO, BakedAo, "baked-ao", 1, 0, 0, DEBUG_DISPLAY_RAW, \
+      "the material's baked occlusion map (occlusion_texture) at the first hit; white without one")
 
 #endif

@@ -12,6 +12,11 @@
 #include "sampling.glsl"
 #include "scene_data.glsl"
 #include "scene_intersect.glsl"
+#include "bsdf.glsl"
+// Under the condition the integrator includes it with: a file is inlined once, where first named.
+#if RAYLAB_FEATURE_TEXTURES
+#include "material_textures.glsl"
+#endif
 
 #define RAYLAB_DEBUG_VIEW_ID(id, NAME, Name, name, traced, moments, counts, display, legend) const int DEBUG_##NAME = id;
 RAYLAB_DEBUG_VIEW_TABLE(RAYLAB_DEBUG_VIEW_ID)
@@ -45,22 +50,35 @@ vec3 debugIdColor(uint id) {
 layout(std430, binding = BINDING_DEBUG_HEAT_MAX) buffer DebugHeatMaxBuffer { uint debugHeatMax[2]; };
 #endif
 
-// Ambient occlusion: the fraction of cosine-weighted rays from the first hit, on the side the
-// camera sees, that travel DEBUG_AO_DISTANCE without hitting anything.
-const float DEBUG_AO_DISTANCE = 1.0f;   // world units
-const int DEBUG_AO_RAYS = 4;            // per camera sample
-
+// Ambient occlusion: the fraction of params.aoRays cosine-weighted rays from the first hit, on the
+// side the camera sees, that travel params.aoDistance without hitting anything. Above a plane
+// parallel at height h < d its expectation is 1 − P(cosθ > h/d) = (h/d)² (cos²θ is uniform).
 float debugAmbientOcclusion(Ray ray, Hit hit, inout Rng rng, inout uint rays) {
     vec3 n = dot(ray.dir, hit.normal) < 0.0f ? hit.normal : -hit.normal;
     Frame frame = frameFromNormal(n);
     vec3 origin = offsetRayOrigin(hit.position, n, hit.error);
     int open = 0;
-    for (int i = 0; i < DEBUG_AO_RAYS; ++i) {
+    for (int i = 0; i < params.aoRays; ++i) {
         vec3 dir = frameToWorld(frame, sampleCosineHemisphere(rngNext2(rng)));
         ++rays;
-        if (!occluded(Ray(origin, dir), DEBUG_AO_DISTANCE)) ++open;
+        if (!occluded(Ray(origin, dir), params.aoDistance)) ++open;
     }
-    return float(open) / float(DEBUG_AO_RAYS);
+    return float(open) / float(params.aoRays);
+}
+
+// The material's baked occlusion at the first hit, as glTF 2.0 §3.9.3 defines it: 1 + strength ×
+// (red − 1); 1 where the material has no map. Only this view reads the map: the path tracer finds
+// occlusion by tracing, and multiplying the map in would count it twice.
+float debugBakedOcclusion(Ray ray, Hit hit) {
+#if RAYLAB_FEATURE_TEXTURES
+    uint k1 = materials[hit.material].occlusionTexture;
+    if (k1 > 0u) {
+        float coneWidth = params.camPixelSpread * hit.t * length(ray.dir);   // the camera ray's cone (ray_cone.glsl)
+        float texel = sampleHitTexture(k1, hit, ray.dir, coneWidth).r;
+        return 1.0f + materials[hit.material].occlusionStrength * (texel - 1.0f);
+    }
+#endif
+    return 1.0f;
 }
 
 // One sample of the selected view for a camera ray. Depth is the distance along the ray (0 for a
@@ -96,6 +114,7 @@ vec3 debugSample(Ray ray, inout Sampler smp, inout uint rays) {
     if (uDebugView == DEBUG_DEPTH) return vec3(hit.t);
     if (uDebugView == DEBUG_OBJECT_ID) return debugIdColor(instanceObjectId(instances[hit.instance]));
     if (uDebugView == DEBUG_AO) return vec3(debugAmbientOcclusion(ray, hit, smp.rng, rays));
+    if (uDebugView == DEBUG_BAKED_AO) return vec3(debugBakedOcclusion(ray, hit));
     return debugIdColor(hit.material);
 }
 

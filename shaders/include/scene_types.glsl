@@ -24,6 +24,10 @@ struct GpuMaterial {
     float metallic;            // mixed per hit (render/gpu_scene.h metallicOnGpu), else 0: baked in
     float normalScale;         // normal map x and y scale (glTF normalTexture.scale)
     uint specularTexture;      // f0 × the texture's colour
+    uint occlusionTexture;     // baked ambient occlusion in red, read by the baked-ao debug view only
+    float occlusionStrength;   // occlusion = 1 + strength × (texel − 1)
+    uint unused0;
+    uint unused1;
 };
 
 // An emissive sphere, for next-event estimation.

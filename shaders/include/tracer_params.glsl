@@ -48,6 +48,9 @@ layout(std140, binding = BINDING_TRACER_PARAMS_UBO) uniform TracerParams {
     RL_BLOCK_BOOL mis;         // with nee: power-heuristic MIS of light and BSDF samples
     RL_BLOCK_BOOL skyIsLight;  // with nee: the sky is sampled too (its radiance is not zero)
     uint sampleCount;          // render.spp: samples per pixel of the whole render (stratified strata)
+    float aoDistance;          // ao.distance: the ambient-occlusion view's reach, world units
+    int aoRays;                // ao.rays: its rays per camera sample
+    ivec2 padding;             // std140: the block is whole vec4s
 #ifdef __cplusplus
 };
 

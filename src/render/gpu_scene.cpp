@@ -20,9 +20,10 @@ namespace raylab {
 namespace {
 
 // std430 offsets of GpuMaterial (shaders/include/scene_types.glsl): vec4s, then scalars.
-static_assert(sizeof(glsl::GpuMaterial) == 80);
+static_assert(sizeof(glsl::GpuMaterial) == 96);
 static_assert(offsetof(glsl::GpuMaterial, f0Ior) == 32 && offsetof(glsl::GpuMaterial, albedoTexture) == 48);
 static_assert(offsetof(glsl::GpuMaterial, emissionTexture) == 64 && offsetof(glsl::GpuMaterial, normalScale) == 72);
+static_assert(offsetof(glsl::GpuMaterial, occlusionTexture) == 80);
 // The geometry records are vec4s only, so their std430 layout is their C++ layout.
 static_assert(sizeof(glsl::GpuBvhNode) == 32 && sizeof(glsl::GpuInstance) == 144 && sizeof(glsl::GpuTriangle) == 64);
 // std140 offsets of AnalyticLightBlock: vec4s only.
@@ -109,7 +110,8 @@ void GpuScene::uploadMaterials(const Scene& scene) {
                              unsigned(m.normalTextureIndex + 1), unsigned(m.roughnessTextureIndex + 1),
                              unsigned(m.metallicTextureIndex + 1), unsigned(m.emissionTextureIndex + 1),
                              metallicOnGpu(m) ? m.metallic : 0.0f, m.normalScale,
-                             unsigned(m.specularTextureIndex + 1)});
+                             unsigned(m.specularTextureIndex + 1), unsigned(m.occlusionTextureIndex + 1),
+                             m.occlusionStrength, 0u, 0u});
     }
     materialRadiance_.clear();
     // Emission varying over a texture is not a light for next-event estimation (the light list

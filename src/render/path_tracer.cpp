@@ -144,6 +144,9 @@ void PathTracer::updateSettings(const Scene& scene) {
         .mis = r.mis,
         .skyIsLight = r.nee && skyIsLight,
         .sampleCount = std::uint32_t(std::max(r.spp, 1)),
+        .aoDistance = scene.ao.distance,
+        .aoRays = scene.ao.rays,
+        .padding = glm::ivec2(0),
     };
     glNamedBufferSubData(paramsBuffer_, 0, sizeof(params_), &params_);
     reset();

@@ -435,8 +435,11 @@ struct MaterialReader {
         if (g.alphaMode != "OPAQUE" && !g.alphaMode.empty())
             asset.warnings.push_back(name + ": " + mp + ".alphaMode: " + g.alphaMode +
                                      " is ignored; the material is opaque");
-        if (g.occlusionTexture.index >= 0)
-            asset.warnings.push_back(name + ": " + mp + ".occlusionTexture is ignored (a path tracer finds occlusion itself)");
+        if (g.occlusionTexture.index >= 0) {   // for the baked-ao debug view only: tracing finds occlusion itself
+            m.occlusionTextureIndex = texture(g.occlusionTexture.index, g.occlusionTexture.texCoord, true,
+                                              mp + ".occlusionTexture");
+            m.occlusionStrength = clamp01(g.occlusionTexture.strength);
+        }
         return m;
     }
 };

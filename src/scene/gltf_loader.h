@@ -6,7 +6,7 @@
 // textures, KHR_materials_emissive_strength, doubleSided) mapped onto raylab's material with their images
 // (external files, data URIs, GLB buffer views) — the mapping is tabled in scenes/FORMAT.md.
 // Not read: animations, skins, morph targets, sparse accessors, alpha (ignored with a warning),
-// occlusion textures, texture coordinate sets other than 0.
+// texture coordinate sets other than 0. The occlusion map is kept for the baked-ao debug view alone.
 #include "scene/scene.h"
 
 #include <filesystem>

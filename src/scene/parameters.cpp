@@ -226,6 +226,16 @@ std::vector<ParamSpec> buildSceneTable() {
     add(spec("sky.strength", T::Float, atLeast(0), kAny, "factor", "Multiplies the sky radiance.",
              G::ResetAccumulation),
         [](auto& s) -> auto& { return s.sky.strength; });
+
+    // --- ao ---
+    add(spec("ao.distance", T::Float, above(0), kAny, "world units",
+             "Ambient-occlusion view: a ray from the first hit that travels this far without hitting anything is open.",
+             G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.ao.distance; });
+    add(spec("ao.rays", T::Int, atLeast(1), atMost(64), "rays",
+             "Ambient-occlusion view: cosine-weighted rays per camera sample (k rays: 1/k of one ray's variance).",
+             G::ResetAccumulation),
+        [](auto& s) -> auto& { return s.ao.rays; });
     return t;
 }
 
@@ -264,6 +274,10 @@ std::vector<MaterialParamSpec> buildMaterialTable() {
     add(spec("normal_scale", T::Float, atLeast(0), kAny, "factor",
              "Scales the normal map's x and y (0 = flat, 1 = as stored).", Trigger::UpdateMaterials),
         [](auto& m) -> auto& { return m.normalScale; });
+    add(spec("occlusion_strength", T::Float, atLeast(0), atMost(1), "factor",
+             "With occlusion_texture: occlusion = 1 + strength x (texel - 1), as glTF's occlusionTexture.strength.",
+             Trigger::UpdateMaterials),
+        [](auto& m) -> auto& { return m.occlusionStrength; });
     return t;
 }
 
@@ -443,6 +457,7 @@ const std::vector<TextureSlot>& textureSlots() {
         {"metallic_texture", &Material::metallicTexture, &Material::metallicTextureIndex, true},
         {"emission_texture", &Material::emissionTexture, &Material::emissionTextureIndex, false},
         {"specular_texture", &Material::specularTexture, &Material::specularTextureIndex, false},
+        {"occlusion_texture", &Material::occlusionTexture, &Material::occlusionTextureIndex, true},
     };
     return slots;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// The parameter table: one entry per scalar/vector key of the scene file's "camera", "render" and
-// "sky" sections (plus small tables for the per-material and per-sphere keys). Each entry knows its
+// The parameter table: one entry per scalar/vector key of the scene file's "camera", "render",
+// "sky" and "ao" sections (plus small tables for the per-material and per-sphere keys). Each entry knows its
 // type, range, unit, one-line help and what a change implies for a running render, and reads and
 // writes the matching Scene field. The loader validates through it; a UI can build widgets from it
 // and scenes/FORMAT.md documents it (a test checks that every key appears there).
@@ -84,7 +84,7 @@ using TransformParamSpec = FieldSpec<Transform>;
 using LightParamSpec = FieldSpec<Light>;
 using DisplacementParamSpec = FieldSpec<MeshDisplacement>;
 
-// camera.*, render.*, sky.* in file-format order.
+// camera.*, render.*, sky.*, ao.* in file-format order.
 const std::vector<ParamSpec>& sceneParameters();
 // Lookup by dotted key ("render.spp"); nullptr when there is no such parameter.
 const ParamSpec* findParameter(std::string_view dottedKey);

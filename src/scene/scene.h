@@ -98,6 +98,9 @@ struct Material {
     int emissionTextureIndex = -1;
     std::string specularTexture;     // multiplies f0 by its colour (sRGB-decoded like albedo_texture)
     int specularTextureIndex = -1;
+    std::string occlusionTexture;    // baked ambient occlusion in red (linear data), shown by a debug view only
+    int occlusionTextureIndex = -1;
+    float occlusionStrength = 1.0f;  // [0, 1]: occlusion = 1 + strength × (texel − 1) (glTF occlusionTexture.strength)
     bool fromGltf = false;           // read from a mesh's glTF file, not the scene's "materials"
     bool doubleSided = true;         // glTF doubleSided: false emits from the front alone under emission_sides gltf
     glm::vec3 radiance() const { return emission * emissionStrength; }
@@ -180,11 +183,18 @@ struct Sky {
     float strength = 1.0f;                   // multiplies the above
 };
 
+// The ambient-occlusion debug view (shaders/include/debug_views.glsl): what it traces.
+struct AmbientOcclusion {
+    float distance = 1.0f;   // world units, > 0: a ray that travels this far unblocked is open
+    int rays = 4;            // cosine-weighted rays per camera sample, [1, 64]
+};
+
 struct Scene {
     std::filesystem::path sourcePath;   // the file it came from (for messages and metadata)
     Camera camera;
     RenderSettings render;
     Sky sky;
+    AmbientOcclusion ao;
     std::vector<Material> materials;
     std::vector<Sphere> spheres;
     std::vector<Mesh> meshes;

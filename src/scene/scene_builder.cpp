@@ -22,7 +22,7 @@ namespace raylab::scenefmt {
 namespace {
 
 constexpr std::string_view kDefaultMaterial = "default";
-constexpr std::string_view kSectionKeys[] = {"camera", "render", "sky", "materials", "objects", "lights"};
+constexpr std::string_view kSectionKeys[] = {"camera", "render", "sky", "ao", "materials", "objects", "lights"};
 constexpr int kMaxLights = glsl::MAX_ANALYTIC_LIGHTS;
 constexpr std::string_view kObjectTypes[] = {"sphere", "mesh"};
 
@@ -219,6 +219,7 @@ void addGltfMaterials(GltfAsset gltf, bool objectNamesMaterial, PendingMesh& pen
         remap(m.metallicTextureIndex);
         remap(m.emissionTextureIndex);
         remap(m.specularTextureIndex);
+        remap(m.occlusionTextureIndex);
         m.fromGltf = true;
     }
     pending.gltfMaterials = std::move(gltf.materials);
@@ -446,7 +447,7 @@ void buildScene(const Json& root, Scene& scene) {
                  true);
     }
 
-    for (std::string_view section : {"camera", "render", "sky"}) {
+    for (std::string_view section : {"camera", "render", "sky", "ao"}) {
         const std::string name(section);
         if (!root.contains(name)) continue;
         if (section == "sky") readMembers(root[name], top.key(name), sceneParameters(), section, scene, {"map"});

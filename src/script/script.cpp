@@ -133,6 +133,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
                 if (!isNumber(a)) fail(c.name + ": '" + a + "' is not a number");
         if (c.name == "debug-view" && !parseDebugView(c.args[0]))
             fail("unknown debug view '" + c.args[0] + "' (" + debugViewList() + ")");
+        if ((c.name == "split-a" || c.name == "split-b") && c.args[0] == "debug-view" && !parseDebugView(c.args[1]))
+            fail("unknown debug view '" + c.args[1] + "' (" + debugViewList() + ")");
         const auto onOff = [](const std::string& w) { return w == "on" || w == "off"; };
         if (c.name == "overlay" && ((c.args[0] != "boxes" && c.args[0] != "selected" && c.args[0] != "paths" &&
                                      c.args[0] != "bvh" && c.args[0] != "mesh-bvh" && c.args[0] != "lights") ||

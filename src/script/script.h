@@ -47,7 +47,8 @@
 //   bounce-step K|next|off trace with at most K bounces (bounce views 0..K); next: K + 1; off
 //   stage NAME             = set render.stage NAME (primary, emission, lambert, ggx, textures, full)
 //   split samples|time|off A/B split screen at equal samples or equal time; off clears it
-//   split-a KEY VALUE      an override of side A (left); split-b KEY VALUE: of side B (right)
+//   split-a KEY VALUE      an override of side A (left); split-b KEY VALUE: of side B (right);
+//                          KEY debug-view: the side traces that view (split-a debug-view ao)
 //   split-divider X        where the sides meet, 0 to 1 of the image width
 //   ui-scale S             UI scale for projectors (0.5 to 4)
 //   key NAME [FRAMES]      press a key in the window, through the window's own key handling, and

@@ -423,7 +423,7 @@ MESH = {"type": "mesh", "positions": [0, 0, 0, 1, 0, 0, 0, 1, 0], "indices": [0,
 
 def place(section, key):
     """A scene whose value of `key` is the sentinel, and the key's path in messages."""
-    if section in ("camera", "render", "sky"):
+    if section in ("camera", "render", "sky", "ao"):
         sect, name = key.split(".")
         doc = {sect: {name: SENTINEL}}
         if key == "sky.map":
@@ -619,6 +619,12 @@ bad_value("displacement_too_many_triangles",
           {"objects": [dict(MESH, indices=[0, 1, 2] * 62, uvs=[0, 0, 1, 0, 0, 1], displacement_texture=IMAGE,
                             displacement_subdivision=SENTINEL)]},
           "objects[0].displacement_subdivision", "8", "62 triangles x 4^8 exceed the limit of 4000000 displaced triangles")
+
+# The ambient-occlusion view's keys below their ranges (the table's cases take the other side).
+bad_value("ao_rays_zero", {"ao": {"rays": SENTINEL}}, "ao.rays", "0", "must be in [1, 64], got 0")
+bad_value("ao_distance_negative", {"ao": {"distance": SENTINEL}}, "ao.distance", "-1", "must be > 0, got -1")
+bad_value("occlusion_strength_negative", {"materials": {"m": {"occlusion_strength": SENTINEL}}, "objects": [{"material": "m"}]},
+          "materials.m.occlusion_strength", "-0.5", "must be in [0, 1], got -0.5")
 
 # Values inside a range as doubles that single precision rounds out of it.
 bad_value("float_underflow_radius", {"objects": [{"radius": SENTINEL}]}, "objects[0].radius", "1e-50",

@@ -1,18 +1,22 @@
 // The ambient-occlusion view (debug_views.glsl debugAmbientOcclusion): 1 where nothing lies within
-// its distance of the first hit, about 1/2 at the foot of a wall (half the cosine-weighted
-// hemisphere faces the wall).
-#include "render/debug_buffers.h"
-#include "render/progressive_render.h"
-#include "render/tracer_variants.h"
+// ao.distance of the first hit, about 1/2 at the foot of a wall (half the cosine-weighted
+// hemisphere faces the wall), (h/d)² between two parallel planes h apart, and ao.rays = k rays
+// per sample leave the mean and divide one sample's variance by k.
 #include "scene/scene_loader.h"
+#include "support/debug_view_render.h"
 #include "support/gl_test.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace raylab {
 namespace {
+
+// Every check below holds within z standard errors: two-sided α = 4.7e-4 each, 0.001 for each
+// test's family of two (Šidák).
+constexpr double kZ = 3.5;
 
 class AmbientOcclusionTest : public test::GlTest {
 protected:
@@ -31,18 +35,40 @@ protected:
                           "ao.json");
     }
 
-    static Image ambientOcclusion(const Scene& s) {
-        PathTracer tracer(variantOptions(TracerVariant::Views, TracerEntry::Fragment));
-        tracer.setScene(s);
-        setTracedView(tracer.program(), DebugView::Ao, 0);
-        renderProgressively(tracer, s.render);
-        return tracer.readImage();
+    // Two planes 100 units wide, y = 0 and y = 1 (h = 1), the camera between them looking down at
+    // a patch of the lower one so small that every pixel sees the same (h/d)².
+    static Scene planes(double distance, int rays, int spp, int size, int seed = 7) {
+        const std::string quad = R"(, "indices": [0, 1, 2,  0, 2, 3] })";
+        return parseScene(R"({ "camera": { "position": [0, 0.5, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 10 },
+                               "render": { "width": )" + std::to_string(size) + R"(, "height": )" + std::to_string(size) +
+                              R"(, "spp": )" + std::to_string(spp) + R"(, "rpp": 16, "sampler": "independent", "seed": )" + std::to_string(seed) + R"( },
+                               "ao": { "distance": )" + std::to_string(distance) + R"(, "rays": )" + std::to_string(rays) + R"( },
+                               "objects": [
+                                 { "type": "mesh", "positions": [-50, 0, -50,  50, 0, -50,  50, 0, 50,  -50, 0, 50])" + quad + R"(,
+                                 { "type": "mesh", "positions": [-50, 1, -50,  50, 1, -50,  50, 1, 50,  -50, 1, 50])" + quad + R"( ] })",
+                          "planes.json");
     }
+
+    static Image ambientOcclusion(const Scene& s) { return test::renderView(s, DebugView::Ao); }
 
     static double rowMean(const Image& im, int y) {
         double sum = 0.0;
         for (int x = 0; x < im.width; ++x) sum += im.rgb(x, y).x;
         return sum / im.width;
+    }
+
+    // Mean and (unbiased) variance of the red channel over all pixels.
+    static std::pair<double, double> moments(const Image& im) {
+        double sum = 0.0, sumSq = 0.0;
+        const double n = double(im.width) * im.height;
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x) {
+                const double v = im.rgb(x, y).x;
+                sum += v;
+                sumSq += v * v;
+            }
+        const double mean = sum / n;
+        return {mean, (sumSq - n * mean * mean) / (n - 1.0)};
     }
 };
 
@@ -54,8 +80,8 @@ TEST_F(AmbientOcclusionTest, APlaneUnderAnOpenSkyIsUnoccluded) {
 
 TEST_F(AmbientOcclusionTest, TheFootOfAWallIsHalfOccluded) {
     const Image im = ambientOcclusion(scene(true));
-    // The bottom row sees the floor more than 1 unit (DEBUG_AO_DISTANCE) from the wall, the top row
-    // the wall more than 1 unit above the floor: nothing occludes either.
+    // The bottom row sees the floor more than 1 unit (ao.distance) from the wall, the top row the
+    // wall more than 1 unit above the floor: nothing occludes either.
     EXPECT_EQ(rowMean(im, im.height - 1), 1.0);
     EXPECT_EQ(rowMean(im, 0), 1.0);
     double least = 1.0;
@@ -67,6 +93,47 @@ TEST_F(AmbientOcclusionTest, TheFootOfAWallIsHalfOccluded) {
         }
     }
     EXPECT_NEAR(least, 0.5, 0.1) << "the row at the corner";
+}
+
+// A cosine-weighted direction has cos²θ uniform in [0, 1]; it meets the plane at height h within d
+// exactly when cosθ > h/d, so the open fraction is (h/d)². Each of the 16 × 16 pixels × 16 samples ×
+// 4 rays is one Bernoulli trial of that probability (independent sampler, fixed seed).
+TEST_F(AmbientOcclusionTest, BetweenParallelPlanesTheOpenFractionIsHOverDSquared) {
+    Scene s = planes(1.25, 4, 16, 16);
+    PathTracer tracer(variantOptions(TracerVariant::Views, TracerEntry::Fragment));
+    tracer.setScene(s);
+    const unsigned program = tracer.program().id();
+    for (double d : {1.25, 2.0}) {
+        SCOPED_TRACE("ao.distance " + std::to_string(d));
+        s.ao.distance = float(d);
+        tracer.updateSettings(s);   // what the viewer does for a reset-accumulation key
+        EXPECT_EQ(tracer.program().id(), program) << "ao.distance is a uniform: no other program";
+        setTracedView(tracer.program(), DebugView::Ao, 0);
+        renderProgressively(tracer, s.render);
+        const double p = 1.0 / (d * d);
+        const double trials = 16.0 * 16.0 * 16.0 * 4.0;
+        EXPECT_NEAR(moments(tracer.readImage()).first, p, kZ * std::sqrt(p * (1.0 - p) / trials));
+    }
+}
+
+// With k rays a sample is B/k, B binomial(k, p): its variance p(1 - p)/k, and the variance of
+// the sample variance over n pixels (μ4 − σ⁴)/n with μ4 = 3(pq)²/k² + pq(1 − 6pq)/k³. One sample
+// per pixel, d = 2 (p = 1/4), 64 × 64 pixels with the same expectation.
+TEST_F(AmbientOcclusionTest, KRaysPerSampleKeepTheMeanAndDivideTheVarianceByK) {
+    const double p = 0.25, pq = p * (1.0 - p), n = 64.0 * 64.0;
+    double variance[2] = {};
+    const int ks[2] = {1, 8};
+    for (int i = 0; i < 2; ++i) {
+        const double k = ks[i];
+        SCOPED_TRACE("ao.rays " + std::to_string(ks[i]));
+        const auto [mean, var] = moments(ambientOcclusion(planes(2.0, ks[i], 1, 64, 1)));
+        EXPECT_NEAR(mean, p, kZ * std::sqrt(pq / k / n));
+        const double sigma2 = pq / k;
+        const double mu4 = 3.0 * pq * pq / (k * k) + pq * (1.0 - 6.0 * pq) / (k * k * k);
+        EXPECT_NEAR(var, sigma2, kZ * std::sqrt((mu4 - sigma2 * sigma2) / n));
+        variance[i] = var;
+    }
+    EXPECT_GT(variance[0] / variance[1], 6.0) << "about 8 times less";
 }
 
 } // namespace

@@ -34,7 +34,8 @@ const std::map<std::string, Field> kCppFields = {
     RAYLAB_FIELD(skyType),          RAYLAB_FIELD(skyBottom),     RAYLAB_FIELD(skyMapScale),
     RAYLAB_FIELD(skyRotation),      RAYLAB_FIELD(envMeanWeight), RAYLAB_FIELD(lightCount),
     RAYLAB_FIELD(triangleLightCount), RAYLAB_FIELD(nee),         RAYLAB_FIELD(mis),
-    RAYLAB_FIELD(skyIsLight),       RAYLAB_FIELD(sampleCount),
+    RAYLAB_FIELD(skyIsLight),       RAYLAB_FIELD(sampleCount),   RAYLAB_FIELD(aoDistance),
+    RAYLAB_FIELD(aoRays),           RAYLAB_FIELD(padding),
 };
 #undef RAYLAB_FIELD
 

@@ -16,7 +16,7 @@ TEST(SceneParameters, TableCoversTheSectionsWithUniqueKeys) {
     for (const ParamSpec& p : sceneParameters()) {
         EXPECT_TRUE(keys.insert(std::string(p.key)).second) << "duplicate " << p.key;
         const std::string section(p.section());
-        EXPECT_TRUE(section == "camera" || section == "render" || section == "sky") << p.key;
+        EXPECT_TRUE(section == "camera" || section == "render" || section == "sky" || section == "ao") << p.key;
         EXPECT_FALSE(p.help.empty()) << p.key;
         EXPECT_TRUE(p.get && p.set) << p.key;
         EXPECT_EQ(findParameter(p.key), &p);
@@ -26,7 +26,8 @@ TEST(SceneParameters, TableCoversTheSectionsWithUniqueKeys) {
         "camera.focus_distance", "render.show_mip_level", "render.stage",           "render.width",
         "render.height",   "render.rpp",     "render.spp",       "render.time",     "render.max_bounces",
         "render.rr_depth", "render.seed",    "render.sampler", "render.diffuse_sampling", "render.ggx_sampling", "render.light_selection", "render.accel", "render.nee",       "render.mis",      "render.exposure",  "render.tone_map", "sky.type",
-        "sky.color",       "sky.top",        "sky.bottom",       "sky.rotation",    "sky.strength"};
+        "sky.color",       "sky.top",        "sky.bottom",       "sky.rotation",    "sky.strength",
+        "ao.distance",     "ao.rays"};
     EXPECT_EQ(keys, expected);
     EXPECT_EQ(findParameter("render.sp"), nullptr);
     EXPECT_EQ(findParameter("spp"), nullptr);

@@ -6,6 +6,7 @@
 #include "app/ui_state.h"
 
 #include "render/render_helpers.h"
+#include "support/debug_view_render.h"
 #include "scene/parameters.h"
 #include "support/viewer_test_base.h"
 
@@ -69,6 +70,41 @@ TEST_F(ClassroomTest, EachHalfOfTheSplitIsThatSidesRender) {
     split.stop();
     EXPECT_FALSE(split.on());
     EXPECT_TRUE(split.overrides(0).empty());
+}
+
+TEST_F(ClassroomTest, ASideTracesADebugViewBesideTheRender) {
+    SplitScreen split;
+    EXPECT_EQ(split.addOverride(0, "debug-view", "ao", viewer->scene()), "");
+    EXPECT_NE(split.addOverride(1, "debug-view", "noise", viewer->scene()), "") << "moments live in the viewer's buffers";
+    EXPECT_NE(split.addOverride(1, "debug-view", "boxes", viewer->scene()), "") << "so do the heat maps' scales";
+    EXPECT_NE(split.addOverride(1, "debug-view", "bogus", viewer->scene()), "");
+    EXPECT_EQ(split.view(1), DebugView::Beauty);
+    EXPECT_EQ(split.label(0), "A: debug-view=ao");
+    split.start(SplitBudget::EqualSamples);
+    traceSplit(split);
+    // Side A is raylab-render --debug-view ao of the scene: a grey in [0, 1], below 1 somewhere.
+    const Scene s = viewer->scene();
+    const Image ao = split.image(0);
+    EXPECT_EQ(ao.rgba, test::renderView(s, DebugView::Ao).rgba);
+    int occluded = 0;
+    for (int y = 0; y < ao.height; ++y)
+        for (int x = 0; x < ao.width; ++x) {
+            const glm::vec3 c = ao.rgb(x, y);
+            ASSERT_TRUE(c.x >= 0.0f && c.x <= 1.0f && c.y == c.x && c.z == c.x) << x << " " << y;
+            occluded += c.x < 1.0f;
+        }
+    EXPECT_GT(occluded, 0);
+    // Side B is the render itself.
+    EXPECT_EQ(split.image(1).rgba, test::render(s).rgba);
+    EXPECT_GT(test::rmse(split.image(0), split.image(1)), 1e-2);
+    EXPECT_NE(split.displayTexture(0), 0u);
+    // The Debug panel's one click: the baked map beside the traced one.
+    split.startViews(DebugView::BakedAo, DebugView::Ao);
+    EXPECT_EQ(split.label(0), "A: debug-view=baked-ao");
+    EXPECT_EQ(split.label(1), "B: debug-view=ao");
+    EXPECT_TRUE(split.on());
+    split.stop();
+    EXPECT_EQ(split.view(0), DebugView::Beauty);
 }
 
 TEST_F(ClassroomTest, EqualTimeKeepsBothSidesWithinTheLongestPass) {

@@ -1,8 +1,10 @@
 // The Teach window in the real `raylab` under Xvfb: a lesson opened with --lesson, a presenter key
 // applying step 1 (its overlay drawn, its button highlighted), a step applied by number, the A/B
-// split screen whose halves are raylab-render's images of each side, the UI scale remembered in
-// the layout file, and the self-test passing on the X server's GL driver.
+// split screen whose halves are raylab-render's images of each side (one side a debug view, the
+// other the render), the UI scale remembered in the layout file, and the self-test passing on the
+// X server's GL driver.
 #include "io/image_io.h"
+#include "render/render_helpers.h"
 #include "ui/xvfb.h"
 
 #include <gtest/gtest.h>
@@ -65,6 +67,8 @@ TEST(TeachWindow, ALessonStepsTheSplitScreenMatchesTheRendererAndTheSelfTestPass
                                       << "set render.spp 4\nsplit samples\nsplit-a render.max_bounces 1\n"
                                       << "split-b render.max_bounces 4\nsplit-divider 0.5\nwait-spp 4\npause\n"
                                       << "screenshot " << d << "/split.png\nexport " << d << "/split.exr\nsplit off\n"
+                                      << "resume\nsplit samples\nsplit-a debug-view ao\nwait-spp 4\npause\n"
+                                      << "export " << d << "/ao_split.exr\nsplit off\nresume\n"
                                       << "ui-scale 1.5\nwait-frames 2\nself-test\nquit\n";
     const std::string cmd = "DISPLAY=" + x.display() + " " RAYLAB_VIEWER_EXE " --lesson '" + src +
                             "/lessons/05-ray-box-bvh.md' --ini '" + d + "/layout.ini' --scale 0.5 --window 1280 800 --script '" + d +
@@ -105,6 +109,25 @@ TEST(TeachWindow, ALessonStepsTheSplitScreenMatchesTheRendererAndTheSelfTestPass
     for (int y = 0; y < 180; ++y)
         for (int px = 0; px < 320; ++px) wrong += split.rgb(px, y) != (px < 160 ? a : b).rgb(px, y);
     EXPECT_EQ(wrong, 0) << "left half = A (max_bounces 1), right half = B (max_bounces 4)";
+
+    // A debug view on one side: the traced ambient occlusion (raylab-render --debug-view ao, a
+    // grey in [0, 1]) beside the render.
+    const std::string aoFile = d + "/ao.exr", beautyFile = d + "/beauty.exr";
+    const std::string scene = " '" + src + "/scenes/default.json' --width 320 --height 180 --spp 4 -q -o '";
+    ASSERT_EQ(run(std::string(RAYLAB_RENDER_EXE) + scene + aoFile + "' --debug-view ao > /dev/null 2>&1"), 0);
+    ASSERT_EQ(run(std::string(RAYLAB_RENDER_EXE) + scene + beautyFile + "' > /dev/null 2>&1"), 0);
+    const Image ao = readImage(aoFile), beauty = readImage(beautyFile), aoSplit = readImage(dir / "ao_split.exr");
+    ASSERT_EQ(aoSplit.width, 320);
+    int wrongAo = 0, notGrey = 0;
+    for (int y = 0; y < 180; ++y)
+        for (int px = 0; px < 320; ++px) {
+            const glm::vec3 c = aoSplit.rgb(px, y);
+            wrongAo += c != (px < 160 ? ao : beauty).rgb(px, y);
+            if (px < 160) notGrey += !(c.x >= 0.0f && c.x <= 1.0f && c.y == c.x && c.z == c.x);
+        }
+    EXPECT_EQ(wrongAo, 0) << "left half = the ao view, right half = the render";
+    EXPECT_EQ(notGrey, 0);
+    EXPECT_GT(test::rmse(ao, beauty), 0.05) << "the two sides differ";
 
     // UI scale remembered; the self-test passed on this driver (a failure would fail the script).
     EXPECT_NE(readText(dir / "layout.ini").find("[Raylab][Classroom]\nUiScale=1.500"), std::string::npos);

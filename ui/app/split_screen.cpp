@@ -1,6 +1,8 @@
 #include "app/split_screen.h"
 
 #include "io/image_io.h"
+#include "render/debug_buffers.h"
+#include "render/tracer_variants.h"
 #include "scene/parameters.h"
 
 #include <algorithm>
@@ -14,6 +16,19 @@ double now() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+// A side's debug view, or the complaint: the split traces the views traced in place of the beauty
+// path (the moments and the heat maps need the viewer's buffers).
+std::optional<DebugView> sideView(const std::string& name, std::string& error) {
+    const std::optional<DebugView> view = parseDebugView(name);
+    if (view && (*view == DebugView::Beauty || (tracedDebugView(*view) && !heatMapView(*view)))) return view;
+    std::string names;
+    for (DebugView v : kDebugViews)
+        if (v == DebugView::Beauty || (tracedDebugView(v) && !heatMapView(v)))
+            names += (names.empty() ? "" : ", ") + std::string(debugViewName(v));
+    error = "'" + name + "' is not a view a side can trace (" + names + ")";
+    return std::nullopt;
+}
+
 } // namespace
 
 SplitScreen::SplitScreen() = default;
@@ -25,10 +40,21 @@ void SplitScreen::start(SplitBudget budget) {
     accounting_.reset(budget);
 }
 
+void SplitScreen::startViews(DebugView a, DebugView b) {
+    stop();
+    const DebugView views[2] = {a, b};
+    for (int i = 0; i < 2; ++i) {
+        views_[i] = views[i];
+        if (views[i] != DebugView::Beauty) overrides_[i].emplace_back(kViewKey, debugViewName(views[i]));
+    }
+    start(SplitBudget::EqualSamples);
+}
+
 void SplitScreen::stop() {
     on_ = false;
     for (int i = 0; i < 2; ++i) {
         overrides_[i].clear();
+        views_[i] = DebugView::Beauty;
         defines_[i].reset();
         definesName_[i].clear();
     }
@@ -38,12 +64,20 @@ void SplitScreen::stop() {
 }
 
 std::string SplitScreen::addOverride(int side, const std::string& key, const std::string& value, const Scene& scene) {
-    Scene probe = scene;
-    try {
-        for (const auto& [k, v] : overrides_[side & 1]) setParam(probe, k, v);
-        setParam(probe, key, value);
-    } catch (const std::exception& e) {
-        return e.what();
+    if (key == kViewKey) {
+        std::string error;
+        const std::optional<DebugView> view = sideView(value, error);
+        if (!view) return error;
+        views_[side & 1] = *view;
+    } else {
+        Scene probe = scene;
+        try {
+            for (const auto& [k, v] : overrides_[side & 1])
+                if (k != kViewKey) setParam(probe, k, v);
+            setParam(probe, key, value);
+        } catch (const std::exception& e) {
+            return e.what();
+        }
     }
     auto& list = overrides_[side & 1];
     std::erase_if(list, [&](const auto& kv) { return kv.first == key; });
@@ -71,6 +105,7 @@ std::string SplitScreen::label(int side) const {
 
 void SplitScreen::rebuild(Viewer& viewer) {
     seenRestarts_ = viewer.stats().restarts;
+    depthScale_ = viewer.depthScale;
     dirty_ = false;
     accounting_.reset(accounting_.budget());
     lastError_.clear();
@@ -81,17 +116,19 @@ void SplitScreen::rebuild(Viewer& viewer) {
         s.render.width = viewer.imageWidth();
         s.render.height = viewer.imageHeight();
         try {
-            for (const auto& [k, v] : overrides_[i]) setParam(s, k, v);
-            const ShaderDefines& wanted = defines_[i] ? *defines_[i] : viewer.runningTracerDefines();
-            const bool fresh = !tracers_[i] || builtWith_[i] != wanted;
+            for (const auto& [k, v] : overrides_[i])
+                if (k != kViewKey) setParam(s, k, v);
+            TracerOptions options = variantOptions(variantFor(views_[i]), TracerEntry::Fragment);
+            const ShaderDefines& own = defines_[i] ? *defines_[i] : viewer.runningTracerDefines();
+            options.extraDefines.insert(options.extraDefines.end(), own.begin(), own.end());
+            const bool fresh = !tracers_[i] || builtWith_[i] != options.extraDefines;
             if (fresh) {
-                TracerOptions options;
-                options.extraDefines = wanted;
-                tracers_[i] = std::make_unique<PathTracer>(options);
-                builtWith_[i] = wanted;
+                builtWith_[i] = options.extraDefines;
+                tracers_[i] = std::make_unique<PathTracer>(std::move(options));
             }
             const std::string variant = tracers_[i]->variantName();
             tracers_[i]->setScene(s);
+            if (views_[i] != DebugView::Beauty) setTracedView(tracers_[i]->program(), views_[i], viewer.debugBounce());
             if (fresh || tracers_[i]->variantName() != variant) {
                 // A new program's first draw includes the driver's compile (llvmpipe JITs it):
                 // one untimed pass, dropped, so equal time compares tracing, not compiling.
@@ -148,8 +185,9 @@ unsigned SplitScreen::displayTexture(int side) {
     const std::uint64_t spp = accounting_.side(side).spp;
     if (spp == shownSpp_[side]) return pass.texture();
     const Scene& s = scenes_[side];
-    DisplayParams p = displayParams(w, h, DebugView::Beauty, DisplayTransform{s.render.exposure, s.render.toneMap});
+    DisplayParams p = displayParams(w, h, views_[side], DisplayTransform{s.render.exposure, s.render.toneMap});
     p.spp = float(spp);
+    p.depthScale = depthScale_;
     pass.draw(tracers_[side]->accumulationTexture(), p);
     shownSpp_[side] = spp;
     return pass.texture();

@@ -6,7 +6,9 @@
 // of that side's settings. Both sides keep a convergence series (stats/convergence_series.h).
 // Follows the viewer: any restart of its accumulation (an edit, a camera move) rebuilds both sides.
 // Each side's tracer is compiled with the viewer's running defines (a code-track exercise's
-// function) unless the side is given its own (the exercise's "yours against the reference").
+// function) unless the side is given its own (the exercise's "yours against the reference"). A
+// side may trace a debug view instead of the image (the override "debug-view", e.g. ao beside
+// the render), as raylab-render --debug-view does.
 // Needs a current GL 4.5 context once turned on.
 #include "app/split_accounting.h"
 #include "app/viewer.h"
@@ -17,6 +19,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -31,14 +34,19 @@ public:
 
     bool on() const { return on_; }
     void start(SplitBudget budget);   // on (overrides kept); restarts both sides
+    // Starts afresh at equal samples with side A tracing view `a` and B `b` (ao beside the render).
+    void startViews(DebugView a, DebugView b);
     void stop();                      // off: overrides cleared, tracers freed
     SplitBudget budget() const { return accounting_.budget(); }
 
     // An override for side 0 (A) or 1 (B), checked against `scene` (the viewer's): returns the
-    // error ("" when it applies). A later override of the same key replaces the earlier one.
+    // error ("" when it applies). A later override of the same key replaces the earlier one. The
+    // key kViewKey takes a traced debug view's name (or beauty) instead of a scene key.
+    static constexpr std::string_view kViewKey = "debug-view";
     std::string addOverride(int side, const std::string& key, const std::string& value, const Scene& scene);
     const std::vector<std::pair<std::string, std::string>>& overrides(int side) const { return overrides_[side & 1]; }
     std::string label(int side) const;   // "A: render.nee=false" (or "A: as the scene")
+    DebugView view(int side) const { return views_[side & 1]; }   // what the side traces
     // Side 0 or 1 compiled with these defines instead of the viewer's; stop() forgets them.
     // `name` is what the side's label calls them ("your function", "the reference").
     void setDefines(int side, ShaderDefines defines, std::string name);
@@ -68,9 +76,11 @@ private:
     bool dirty_ = true;
     std::uint64_t seenRestarts_ = ~std::uint64_t(0);
     std::vector<std::pair<std::string, std::string>> overrides_[2];
+    DebugView views_[2] = {DebugView::Beauty, DebugView::Beauty};
+    float depthScale_ = 1.0f;                    // the viewer's, for a depth side
     std::optional<ShaderDefines> defines_[2];   // none: the viewer's running defines
     std::string definesName_[2];
-    ShaderDefines builtWith_[2];                 // the defines tracers_[i] was compiled with
+    ShaderDefines builtWith_[2];                 // the defines tracers_[i] was compiled with (its variant's too)
     Scene scenes_[2];
     std::unique_ptr<PathTracer> tracers_[2];
     SplitAccounting accounting_;

@@ -1,6 +1,7 @@
 // Debug panel: the debug view, its scales, a colour legend, and the value under the cursor.
 #include "panels/panels.h"
 #include "panels/heat_legend.h"
+#include "panels/param_widget.h"
 
 #include <imgui.h>
 
@@ -16,6 +17,21 @@ void legend(const char* lo, const char* hi) {
     const float w = ImGui::GetContentRegionAvail().x, h = 12.0f;
     drawHeatLegend(ImGui::GetWindowDrawList(), p, w, h, lo, hi);
     ImGui::Dummy(ImVec2(w, h + ImGui::GetTextLineHeightWithSpacing()));
+}
+
+// The traced view's keys, and the splits that put it beside the render or the baked map.
+void ambientOcclusionControls(Viewer& viewer, UiState& ui) {
+    for (const ParamSpec& p : sceneParameters())
+        if (p.section() == "ao") paramWidget(viewer, resolveParam(viewer.scene(), p.key));
+    if (ImGui::Button("AO beside the render")) ui.split.startViews(DebugView::Ao, DebugView::Beauty);
+    const auto& materials = viewer.scene().materials;
+    const bool baked = std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.occlusionTextureIndex >= 0; });
+    if (baked) {
+        ImGui::SameLine();
+        if (ImGui::Button("baked beside traced")) ui.split.startViews(DebugView::BakedAo, DebugView::Ao);
+    }
+    if (ui.split.on() && ImGui::Button("split off")) ui.split.stop();
+    ImGui::TextDisabled("The path tracer ignores baked maps: it finds occlusion by tracing (scenes/FORMAT.md).");
 }
 
 } // namespace
@@ -72,6 +88,10 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
                             "spheres cost no box tests there.");
         break;
     }
+    case DebugView::Ao:
+    case DebugView::BakedAo:
+        ambientOcclusionControls(viewer, ui);
+        break;
     default:
         break;
     }
