@@ -520,7 +520,8 @@ Lesson loadLesson(const std::filesystem::path& file) {
 
 std::filesystem::path lessonRoot(const std::filesystem::path& file) {
     const std::filesystem::path folder = std::filesystem::absolute(file).lexically_normal().parent_path();
-    if (folder.parent_path().filename() == "lessons" && folder.filename() != "lessons") return folder.parent_path().parent_path();
+    if (folder.parent_path().filename() == "lessons" && isLessonLanguage(folder.filename().string()))
+        return folder.parent_path().parent_path();
     return folder.parent_path();
 }
 

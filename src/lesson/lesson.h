@@ -88,8 +88,8 @@ inline constexpr const char* kLessonLevels[] = {"VWO 5\u20136", "first-year univ
 // naming FILE:LINE (script errors in steps included).
 Lesson parseLesson(std::string_view text, const std::filesystem::path& file, const std::filesystem::path& root);
 
-// The repository root of a lesson file: the folder above the lesson's folder, or two above for an
-// edition's folder inside `lessons` (lessons/X.md and lessons/nl/X.md have the same root).
+// The repository root of a lesson file: the folder above the lesson's folder, or two above for a
+// language's edition inside `lessons` (lessons/X.md and lessons/nl/X.md have the same root).
 std::filesystem::path lessonRoot(const std::filesystem::path& file);
 
 // Reads `file`; its scene resolves against lessonRoot(file).

@@ -322,4 +322,6 @@ TEST(Lesson, RootOfAnEditionIsTheFolderAboveLessons) {
     EXPECT_EQ(lessonRoot("/r/lessons/nl/03-x.md"), fs::path("/r"));
     EXPECT_EQ(lessonRoot("/r/mine/03-x.md"), fs::path("/r")) << "a folder not named lessons: the folder above";
     EXPECT_EQ(lessonRoot("/r/mine/nl/03-x.md"), fs::path("/r/mine"));
+    EXPECT_EQ(lessonRoot("/r/lessons/mine/03-x.md"), fs::path("/r/lessons")) << "only a language's folder is an edition";
+    EXPECT_EQ(lessonRoot("/lessons/lessons/03-x.md"), fs::path("/lessons"));
 }
