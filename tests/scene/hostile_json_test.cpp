@@ -43,10 +43,10 @@ TEST(HostileJson, NestingPastTheLimitIsALocatedErrorWithAShortPath) {
                   std::to_string(limit - 12) + " levels)...[0][0][0][0][0][0]: nested too deeply: more than " +
                   kDepthLimit + " levels of arrays and objects");
     // Brackets inside strings and comments do not count.
-    const std::string quoted = "{ \"a[\": \"" + std::string(200, '[') + "\", /* " + std::string(200, '{') +
+    const std::string quoted = "{ \"x[\": \"" + std::string(200, '[') + "\", /* " + std::string(200, '{') +
                                " */ \"objects\": [ {} ] }";
-    EXPECT_EQ(errorOf(quoted), "test.json:1:3: error: [\"a[\"]: unknown key 'a[' at the top level (known keys: camera, "
-                               "render, sky, materials, objects, lights)");
+    EXPECT_EQ(errorOf(quoted), "test.json:1:3: error: [\"x[\"]: unknown key 'x[' at the top level (known keys: camera, "
+                               "render, sky, ao, materials, objects, lights)");
 }
 
 TEST(HostileJson, AHundredThousandLevelsFailWithoutCrashingWhereTheLimitIsPassed) {
