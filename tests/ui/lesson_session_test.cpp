@@ -52,10 +52,14 @@ protected:
     std::unique_ptr<Viewer> viewer;
 };
 
+// Every lesson of every edition, as a path below lessons/ ("07-lambert.md", "nl/07-lambert.md"):
+// the drift test keeps the editions' commands equal, this runs them.
 std::vector<std::string> lessonFiles() {
     std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(kLessons))
-        if (e.path().extension() == ".md" && e.path().filename() != "README.md") names.push_back(e.path().filename().string());
+    for (const std::string edition : {"", "nl/"})
+        for (const auto& e : fs::directory_iterator(kLessons / edition))
+            if (e.path().extension() == ".md" && e.path().filename() != "README.md")
+                names.push_back(edition + e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
