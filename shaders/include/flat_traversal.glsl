@@ -10,6 +10,43 @@
 #include "bvh_traversal.glsl"
 RL_NAMESPACE_BEGIN
 
+// llvmpipe ends every loop of an invocation once 65535 iterations have run in all
+// (path_tracer.glsl), and a mesh searched one triangle per iteration spends that on a few rays of
+// a large mesh: paths through the 8192-triangle terrain were cut short. So each iteration takes
+// FLAT_TRIANGLES_PER_STEP (16) triangles, written out; they are tested in index order, as one at a
+// time would, so the hit and the counts are the same (the host sizes its draws by the same
+// constant, geometry_types.glsl).
+
+#if RAYLAB_FEATURE_MESHES
+#define RAYLAB_FLAT_TRIANGLE(k)                                                                       \
+    if (i + k < end && !(found && anyHit)) {                                                      \
+        GpuTriangle tri = triangleAt(i + k);                                                      \
+        RL_COUNT_TRIANGLE();                                                                      \
+        TriangleHit h;                                                                            \
+        if (intersectTriangle(triRay, xyzOf(tri.p0), xyzOf(tri.p1), xyzOf(tri.p2), rec.t - tOffset, h)) { \
+            rec = TraceRecord(h.t + tOffset, instance, i + k, h.b1, h.b2);                        \
+            found = true;                                                                         \
+        }                                                                                         \
+    }
+// intersectTriangles (bvh_traversal.glsl) for a whole mesh, FLAT_TRIANGLES_PER_STEP per iteration.
+RL_FN bool intersectTrianglesFlat(TriangleRay triRay, float tOffset, uint instance, uint first, uint count,
+                                  bool anyHit, RL_INOUT(TraceRecord) rec) {
+    bool found = false;
+    uint end = first + count;
+    for (uint i = first; i < end && !(found && anyHit); i += FLAT_TRIANGLES_PER_STEP) {
+        RAYLAB_FLAT_TRIANGLE(0u) RAYLAB_FLAT_TRIANGLE(1u) RAYLAB_FLAT_TRIANGLE(2u) RAYLAB_FLAT_TRIANGLE(3u)
+        RAYLAB_FLAT_TRIANGLE(4u) RAYLAB_FLAT_TRIANGLE(5u) RAYLAB_FLAT_TRIANGLE(6u) RAYLAB_FLAT_TRIANGLE(7u)
+        RAYLAB_FLAT_TRIANGLE(8u) RAYLAB_FLAT_TRIANGLE(9u) RAYLAB_FLAT_TRIANGLE(10u) RAYLAB_FLAT_TRIANGLE(11u)
+        RAYLAB_FLAT_TRIANGLE(12u) RAYLAB_FLAT_TRIANGLE(13u) RAYLAB_FLAT_TRIANGLE(14u) RAYLAB_FLAT_TRIANGLE(15u)
+    }
+    return found;
+}
+#undef RAYLAB_FLAT_TRIANGLE
+#ifdef __cplusplus
+static_assert(FLAT_TRIANGLES_PER_STEP == 16u, "the loop above is written out for 16 triangles");
+#endif
+#endif
+
 // Object i's primitives, all of them: a sphere, or every triangle of a mesh in its object space.
 RL_FN bool intersectObjectPrimitives(Ray ray, uint i, bool anyHit, RL_INOUT(TraceRecord) rec) {
 #if RAYLAB_FEATURE_MESHES
@@ -17,8 +54,8 @@ RL_FN bool intersectObjectPrimitives(Ray ray, uint i, bool anyHit, RL_INOUT(Trac
     if (inst.info.x == INSTANCE_MESH) {
         float dt;
         Ray o = objectRay(inst, ray, dt);
-        return dt < rec.t && intersectTriangles(triangleRay(o), dt, i, instanceFirstTriangle(inst),
-                                                instanceTriangleCount(inst), anyHit, rec);
+        return dt < rec.t && intersectTrianglesFlat(triangleRay(o), dt, i, instanceFirstTriangle(inst),
+                                                    instanceTriangleCount(inst), anyHit, rec);
     }
 #endif
     return intersectInstance(ray, i, anyHit, rec);   // a sphere is its own only primitive

@@ -47,6 +47,10 @@ struct GpuInstance {
                   // object id (instanceObjectId)
 };
 
+// Triangles a flat search (render.accel boxes and none, flat_traversal.glsl) tests per loop
+// iteration; the host's draws are sized by the iterations that costs (PathTracer).
+const uint FLAT_TRIANGLES_PER_STEP = 16u;
+
 RL_FN uint instanceFirstTriangle(GpuInstance inst) { return floatBitsToUint(inst.worldMin.w); }
 RL_FN uint instanceTriangleCount(GpuInstance inst) { return floatBitsToUint(inst.worldMax.w); }
 

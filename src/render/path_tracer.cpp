@@ -23,6 +23,17 @@ int skyType(Sky::Type t) {
 
 } // namespace
 
+std::uint64_t flatLoopIterationsPerSample(const SceneGeometry& geometry, const Scene& scene) {
+    if (scene.render.accel == Accel::Bvh) return 0;
+    std::uint64_t perRay = 0;
+    for (const glsl::GpuInstance& inst : geometry.instances)
+        perRay += 1 + (glsl::instanceTriangleCount(inst) + glsl::FLAT_TRIANGLES_PER_STEP - 1) /
+                          glsl::FLAT_TRIANGLES_PER_STEP;
+    const std::uint64_t rays = std::max<std::uint64_t>(2 * (std::uint64_t(scene.render.maxBounces) + 1),
+                                                       std::uint64_t(scene.ao.rays) + 1);
+    return perRay * rays;
+}
+
 ShaderProgram PathTracer::compileVariant(const ShaderDefines& features, const void* self) {
     const TracerOptions& o = static_cast<const PathTracer*>(self)->options_;
     ShaderDefines defines = o.extraDefines;
@@ -99,6 +110,9 @@ void PathTracer::updateSettings(const Scene& scene) {
     // the variant is looked up again, and compiled only when that set was never met.
     features_ = options_.specialise ? sceneFeatures(scene) : allFeatures();
     program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
+    const std::uint64_t flatIterations = flatLoopIterationsPerSample(gpuScene_.geometry(), scene);
+    flatSamplesPerDraw_ = flatIterations == 0 ? kSamplesPerDraw
+                        : int(std::clamp<std::uint64_t>(kLoopIterationBudget / 2 / flatIterations, 1, kSamplesPerDraw));
 
     if (options_.cameraRelative && needsRebase(scene.camera, origin_)) {
         origin_ = glm::dvec3(scene.camera.position);
@@ -197,7 +211,7 @@ void PathTracer::renderPass(int rpp) {
 void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
     if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
     for (int done = 0; done < rpp;) {
-        const int n = std::min(rpp - done, samplesPerDraw_);
+        const int n = std::min(rpp - done, samplesPerDraw());
         drawBand(y, rows, sampleOffset + done, n);
         done += n;
     }
@@ -244,7 +258,7 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     nonFinite_ += counters[0];
     rays_ += counters[1];
     loopLimited_ += counters[2];
-    if (counters[2] > 0) samplesPerDraw_ = std::max(1, samplesPerDraw_ / 2);
+    if (counters[2] > 0) samplesPerDraw_ = std::max(1, samplesPerDraw() / 2);
     if (traversalBuffer_) {
         glGetNamedBufferSubData(traversalBuffer_, 0, 2 * sizeof(GLuint), counters);
         boxTests_ += counters[0];

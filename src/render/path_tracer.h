@@ -10,6 +10,7 @@
 #include "scene/scene.h"
 #include "shaders/include/tracer_params.glsl"
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -26,6 +27,11 @@ struct TracerOptions {
     bool specialise = true;       // compile for the scene's features (false: all features on)
     bool cameraRelative = true;   // upload positions relative to the camera (false: world, for tests)
 };
+
+// Loop iterations one sample can spend at most in a flat search (render.accel boxes or none):
+// a traced and a shadow ray per bounce (or ao.rays rays of the AO view), each stepping through
+// every object and FLAT_TRIANGLES_PER_STEP triangles of each mesh at a time. 0 for the BVH.
+std::uint64_t flatLoopIterationsPerSample(const SceneGeometry& geometry, const Scene& scene);
 
 class PathTracer {
 public:
@@ -76,9 +82,12 @@ public:
     // limiter), which would cut paths short without a word. So a draw traces at most this many
     // samples per pixel (a pass of more is several draws, the same samples in the same order), the
     // shader counts invocations that still ran out, and after such a draw later ones take half as
-    // many. loopLimitedInvocations() > 0 means the image lacks light; raylab-render reports it.
+    // many. A flat search (render.accel boxes, none) starts lower: at most as many samples as its
+    // loop iterations per sample (flatLoopIterationsPerSample) leave within half the budget.
+    // loopLimitedInvocations() > 0 means the image lacks light; raylab-render reports it.
     static constexpr int kSamplesPerDraw = 16;
-    int samplesPerDraw() const { return samplesPerDraw_; }
+    static constexpr std::uint64_t kLoopIterationBudget = 65535;
+    int samplesPerDraw() const { return std::min(samplesPerDraw_, flatSamplesPerDraw_); }
     std::uint64_t loopLimitedInvocations() const { return loopLimited_; }
     // With RAYLAB_COUNT_TRAVERSAL in extraDefines: BVH boxes and triangles tested (else 0).
     std::uint64_t boxTests() const { return boxTests_; }
@@ -126,7 +135,8 @@ private:
     std::uint64_t nonFinite_ = 0;
     std::uint64_t rays_ = 0;
     std::uint64_t loopLimited_ = 0;
-    int samplesPerDraw_ = kSamplesPerDraw;
+    int samplesPerDraw_ = kSamplesPerDraw;       // halved after a draw the driver cut short
+    int flatSamplesPerDraw_ = kSamplesPerDraw;   // the bound of a flat search, set per scene
     unsigned traversalBuffer_ = 0;   // only when counting traversal
     std::uint64_t boxTests_ = 0;
     std::uint64_t triangleTests_ = 0;

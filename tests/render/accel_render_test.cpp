@@ -1,6 +1,7 @@
 // render.accel on the GPU (OSMesa): boxes and none find the BVH's hits, so they render its image
 // bit for bit, on the Cornell box and on a textured mesh scene; the traversal counters (heat views,
-// stats) count their work: more triangles than the BVH, every object's box for boxes.
+// stats) count their work: more triangles than the BVH, every object's box for boxes. A flat
+// search of a large mesh stays within llvmpipe's loop budget, so its paths are not cut short.
 #include "render_helpers.h"
 #include "support/gl_test.h"
 
@@ -15,17 +16,21 @@ struct Traced {
     std::uint64_t boxes = 0;
     std::uint64_t triangles = 0;
     std::uint64_t rays = 0;
+    std::uint64_t loopLimited = 0;
+    int samplesPerDraw = 0;
 };
 
-Traced trace(const std::string& scene, const std::string& accel) {
+Traced trace(const std::string& scene, const std::string& accel, int spp = 2, int rpp = 2) {
     TracerOptions counting;
     counting.extraDefines = {{"RAYLAB_COUNT_TRAVERSAL", "1"}};
-    const Scene s = loadScene(test::scenePath(scene), {"render.width=24", "render.height=16", "render.spp=2",
-                                                       "render.rpp=2", "render.accel=" + accel});
+    const Scene s = loadScene(test::scenePath(scene),
+                              {"render.width=24", "render.height=16", "render.spp=" + std::to_string(spp),
+                               "render.rpp=" + std::to_string(rpp), "render.accel=" + accel});
     PathTracer tracer(counting);
     tracer.setScene(s);
     renderProgressively(tracer, s.render);
-    return {tracer.readImage(), tracer.boxTests(), tracer.triangleTests(), tracer.raysTraced()};
+    return {tracer.readImage(), tracer.boxTests(),           tracer.triangleTests(),
+            tracer.raysTraced(), tracer.loopLimitedInvocations(), tracer.samplesPerDraw()};
 }
 
 } // namespace
@@ -47,4 +52,35 @@ TEST_F(AccelRenderTest, BoxesAndNoneRenderTheBvhsImageAtAHigherCost) {
         EXPECT_GT(boxes.boxes, 0u);
         EXPECT_EQ(none.boxes, 0u) << "none tests no box";
     }
+}
+
+// The terrain's 8192 triangles in one mesh: one triangle per loop iteration, a few rays spent
+// llvmpipe's 65535 iterations and the paths lost light (not bit-equal, 7 % of pixels at 2 spp).
+// Passes of 4 samples: the flat search draws 4 at a time here, and a pass drawn in other slices
+// sums its samples in another order (equal to the last bit only).
+TEST_F(AccelRenderTest, AFlatSearchOfALargeMeshLosesNoPathToTheLoopLimit) {
+    const Traced bvh = trace("displaced_terrain.json", "bvh", 16, 4);
+    const Traced none = trace("displaced_terrain.json", "none", 16, 4);
+    EXPECT_EQ(none.loopLimited, 0u) << "draws cut short by the driver";
+    EXPECT_EQ(bvh.loopLimited, 0u);
+    EXPECT_EQ(none.image.rgba, bvh.image.rgba) << "same hits, same image";
+    EXPECT_GT(none.triangles, 100 * bvh.triangles);
+    EXPECT_EQ(bvh.samplesPerDraw, PathTracer::kSamplesPerDraw);
+    EXPECT_EQ(none.samplesPerDraw, 4) << "a flat search draws fewer samples at once (below)";
+}
+
+// Two spheres and the terrain (8192 triangles, max_bounces 6): per ray 1 + 1 + (1 + 8192 / 16)
+// iterations, 2 · 7 rays per sample; 32767 of them leave 4 samples per draw.
+TEST(FlatLoopIterations, CountsEveryObjectAndEachStepOfItsTriangles) {
+    Scene s = loadScene(test::scenePath("displaced_terrain.json"));
+    const SceneGeometry g = buildSceneGeometry(s);
+    EXPECT_EQ(flatLoopIterationsPerSample(g, s), 0u) << "the BVH";
+    s.render.accel = Accel::None;
+    EXPECT_EQ(flatLoopIterationsPerSample(g, s), 515u * 14u);
+    s.render.accel = Accel::Boxes;
+    s.render.maxBounces = 0;
+    s.ao.rays = 1;
+    EXPECT_EQ(flatLoopIterationsPerSample(g, s), 515u * 2u);
+    s.ao.rays = 64;
+    EXPECT_EQ(flatLoopIterationsPerSample(g, s), 515u * 65u) << "the AO view's rays";
 }
