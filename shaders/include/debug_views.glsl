@@ -53,16 +53,23 @@ layout(std430, binding = BINDING_DEBUG_HEAT_MAX) buffer DebugHeatMaxBuffer { uin
 // Ambient occlusion: the fraction of params.aoRays cosine-weighted rays from the first hit, on the
 // side the camera sees, that travel params.aoDistance without hitting anything. Above a plane
 // parallel at height h < d its expectation is 1 − P(cosθ > h/d) = (h/d)² (cos²θ is uniform).
-float debugAmbientOcclusion(Ray ray, Hit hit, inout Rng rng, inout uint rays) {
+// Ray i of sample s is sample s·aoRays + i of the render's sampler in bounce 0's BSDF dimensions,
+// so the rays of a pixel are stratified as its bounces are (the independent sampler's stream goes
+// on in call order, as before).
+float debugAmbientOcclusion(Ray ray, Hit hit, inout Sampler smp, inout uint rays) {
     vec3 n = dot(ray.dir, hit.normal) < 0.0f ? hit.normal : -hit.normal;
     Frame frame = frameFromNormal(n);
     vec3 origin = offsetRayOrigin(hit.position, n, hit.error);
     int open = 0;
+    Sampler aoSmp = smp;
+    aoSmp.count = smp.count * uint(params.aoRays);
     for (int i = 0; i < params.aoRays; ++i) {
-        vec3 dir = frameToWorld(frame, sampleCosineHemisphere(rngNext2(rng)));
+        aoSmp.index = smp.index * uint(params.aoRays) + uint(i);
+        vec3 dir = frameToWorld(frame, sampleCosineHemisphere(sample2D(aoSmp, sampleDim(0, SAMPLE_BOUNCE_BSDF))));
         ++rays;
         if (!occluded(Ray(origin, dir), params.aoDistance)) ++open;
     }
+    smp.rng = aoSmp.rng;
     return float(open) / float(params.aoRays);
 }
 
@@ -113,7 +120,7 @@ vec3 debugSample(Ray ray, inout Sampler smp, inout uint rays) {
     if (uDebugView == DEBUG_ALBEDO) return materials[hit.material].albedo.rgb;
     if (uDebugView == DEBUG_DEPTH) return vec3(hit.t);
     if (uDebugView == DEBUG_OBJECT_ID) return debugIdColor(instanceObjectId(instances[hit.instance]));
-    if (uDebugView == DEBUG_AO) return vec3(debugAmbientOcclusion(ray, hit, smp.rng, rays));
+    if (uDebugView == DEBUG_AO) return vec3(debugAmbientOcclusion(ray, hit, smp, rays));
     if (uDebugView == DEBUG_BAKED_AO) return vec3(debugBakedOcclusion(ray, hit));
     return debugIdColor(hit.material);
 }

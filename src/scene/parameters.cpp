@@ -233,7 +233,7 @@ std::vector<ParamSpec> buildSceneTable() {
              G::ResetAccumulation),
         [](auto& s) -> auto& { return s.ao.distance; });
     add(spec("ao.rays", T::Int, atLeast(1), atMost(64), "rays",
-             "Ambient-occlusion view: cosine-weighted rays per camera sample (k rays: 1/k of one ray's variance).",
+             "Ambient-occlusion view: cosine-weighted rays per camera sample, drawn by render.sampler (independent: k rays give 1/k of one ray's variance; the others stratify them).",
              G::ResetAccumulation),
         [](auto& s) -> auto& { return s.ao.rays; });
     return t;

@@ -37,11 +37,12 @@ protected:
 
     // Two planes 100 units wide, y = 0 and y = 1 (h = 1), the camera between them looking down at
     // a patch of the lower one so small that every pixel sees the same (h/d)².
-    static Scene planes(double distance, int rays, int spp, int size, int seed = 7) {
+    static Scene planes(double distance, int rays, int spp, int size, int seed = 7,
+                        const std::string& sampler = "independent") {
         const std::string quad = R"(, "indices": [0, 1, 2,  0, 2, 3] })";
         return parseScene(R"({ "camera": { "position": [0, 0.5, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 10 },
                                "render": { "width": )" + std::to_string(size) + R"(, "height": )" + std::to_string(size) +
-                              R"(, "spp": )" + std::to_string(spp) + R"(, "rpp": 16, "sampler": "independent", "seed": )" + std::to_string(seed) + R"( },
+                              R"(, "spp": )" + std::to_string(spp) + R"(, "rpp": 16, "sampler": ")" + sampler + R"(", "seed": )" + std::to_string(seed) + R"( },
                                "ao": { "distance": )" + std::to_string(distance) + R"(, "rays": )" + std::to_string(rays) + R"( },
                                "objects": [
                                  { "type": "mesh", "positions": [-50, 0, -50,  50, 0, -50,  50, 0, 50,  -50, 0, 50])" + quad + R"(,
@@ -134,6 +135,54 @@ TEST_F(AmbientOcclusionTest, KRaysPerSampleKeepTheMeanAndDivideTheVarianceByK) {
         variance[i] = var;
     }
     EXPECT_GT(variance[0] / variance[1], 6.0) << "about 8 times less";
+}
+
+// The AO rays take the render's sampler (bounce 0's BSDF dimensions, sample s·k + i for ray i), so
+// a pixel's 16 rays (16 samples of 1 ray, or 4 of 4) are stratified as its bounces are. Between
+// the planes (h/d = 1/2) a ray is open where the concentric map's max(|2u − 1|) > √3/2: a frame of
+// width w = (1 − √3/2)/2 around the unit square. Independent rays give a pixel binomial variance
+// pq/16; jittered 4 × 4 strata give Σ p_k q_k / 16², p_k the open share of stratum k, as only the
+// 12 strata the frame crosses vary; the Sobol samplers fall well below both. 64 × 64 pixels; the
+// family of ten 3.5σ checks: α ≈ 0.005 (the bounds of 1/2 are far outside any noise).
+TEST_F(AmbientOcclusionTest, StratifyingSamplersSpreadAPixelsRaysAndScatterLess) {
+    const double p = 0.25, n = 64.0 * 64.0;
+    // Mean and variance of the sample variance of a pixel's mean of 16 independent Bernoulli(p_k).
+    const auto expectVariance = [&](const double(&pk)[16], double var, const std::string& what) {
+        double sum2 = 0.0, sum4 = 0.0, mu4 = 0.0;
+        for (double pp : pk) {
+            const double s2 = pp * (1.0 - pp);
+            sum2 += s2;
+            sum4 += s2 * s2;
+            mu4 += s2 * (1.0 - 3.0 * s2);
+        }
+        const double sigma2 = sum2 / 256.0;
+        const double mu4Mean = (mu4 + 3.0 * (sum2 * sum2 - sum4)) / (256.0 * 256.0);
+        EXPECT_NEAR(var, sigma2, kZ * std::sqrt((mu4Mean - sigma2 * sigma2) / n)) << what;
+    };
+    double binomial[16], strata[16];
+    const double w = (1.0 - std::sqrt(3.0) / 2.0) / 2.0;
+    const auto inner = [&](int i) {   // length of stratum column i inside [w, 1 − w]
+        return std::max(0.0, std::min((i + 1) / 4.0, 1.0 - w) - std::max(i / 4.0, w));
+    };
+    for (int k = 0; k < 16; ++k) {
+        binomial[k] = p;
+        strata[k] = 1.0 - inner(k % 4) * inner(k / 4) * 16.0;
+    }
+    const auto [mean, independent] = moments(ambientOcclusion(planes(2.0, 1, 16, 64, 1)));
+    EXPECT_NEAR(mean, p, kZ * std::sqrt(p * (1.0 - p) / 16.0 / n));
+    expectVariance(binomial, independent, "independent: binomial");
+    for (const char* sampler : {"stratified", "sobol", "zsobol"}) {
+        SCOPED_TRACE(sampler);
+        for (int rays : {1, 4}) {
+            SCOPED_TRACE("ao.rays " + std::to_string(rays));
+            const auto [m, var] = moments(ambientOcclusion(planes(2.0, rays, 16 / rays, 64, 1, sampler)));
+            EXPECT_NEAR(m, p, kZ * std::sqrt(p * (1.0 - p) / 16.0 / n));
+            if (std::string(sampler) == "stratified")
+                expectVariance(strata, var, "jittered 4 x 4");   // 3.5σ bands of the two: disjoint
+            else
+                EXPECT_LT(var, 0.5 * independent);
+        }
+    }
 }
 
 } // namespace
