@@ -36,5 +36,11 @@
 #ifndef RAYLAB_ACCEL
 #define RAYLAB_ACCEL RAYLAB_ACCEL_BVH
 #endif
+// With boxes or none: 1 when one sample's search, a triangle per loop iteration, would not fit in
+// llvmpipe's loop budget (a large mesh): the search then takes whole steps of 16 triangles
+// (flat_traversal.glsl). Off otherwise, as a step no lane fills still runs, masked.
+#ifndef RAYLAB_FLAT_STEPS
+#define RAYLAB_FLAT_STEPS 1
+#endif
 
 #endif

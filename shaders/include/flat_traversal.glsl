@@ -12,14 +12,16 @@ RL_NAMESPACE_BEGIN
 
 // llvmpipe ends every loop of an invocation once 65535 iterations have run in all
 // (path_tracer.glsl), and a mesh searched one triangle per iteration spends that on a few rays of
-// a large mesh: paths through the 8192-triangle terrain were cut short. So each iteration takes
-// FLAT_TRIANGLES_PER_STEP (16) triangles, written out; they are tested in index order, as one at a
-// time would, so the hit and the counts are the same (the host sizes its draws by the same
-// constant, geometry_types.glsl).
+// a large mesh: paths through the 8192-triangle terrain were cut short. So in scenes with such a
+// mesh (RAYLAB_FLAT_STEPS, estimator_stages.glsl) an iteration takes FLAT_TRIANGLES_PER_STEP (16)
+// triangles, written out; they are tested in index order, as one at a time would, so the hit and
+// the counts are the same (the host sizes its draws by the same constant, geometry_types.glsl).
+// Only there: llvmpipe runs a loop's body once even when no lane enters it, and a masked step of
+// 16 tests per object made the Cornell box's flat search 3.5 times dearer (bench/mesh_rays.md).
 
 #if RAYLAB_FEATURE_MESHES
 #define RAYLAB_FLAT_TRIANGLE(k)                                                                       \
-    if (i + k < end && !(found && anyHit)) {                                                      \
+    if (!(found && anyHit)) {                                                                     \
         GpuTriangle tri = triangleAt(i + k);                                                      \
         RL_COUNT_TRIANGLE();                                                                      \
         TriangleHit h;                                                                            \
@@ -28,17 +30,22 @@ RL_NAMESPACE_BEGIN
             found = true;                                                                         \
         }                                                                                         \
     }
-// intersectTriangles (bvh_traversal.glsl) for a whole mesh, FLAT_TRIANGLES_PER_STEP per iteration.
+// intersectTriangles (bvh_traversal.glsl) for a whole mesh: with RAYLAB_FLAT_STEPS whole steps of
+// FLAT_TRIANGLES_PER_STEP triangles first, then the rest one at a time.
 RL_FN bool intersectTrianglesFlat(TriangleRay triRay, float tOffset, uint instance, uint first, uint count,
                                   bool anyHit, RL_INOUT(TraceRecord) rec) {
     bool found = false;
     uint end = first + count;
-    for (uint i = first; i < end && !(found && anyHit); i += FLAT_TRIANGLES_PER_STEP) {
+    uint i = first;
+#if RAYLAB_FLAT_STEPS
+    for (; i + FLAT_TRIANGLES_PER_STEP <= end && !(found && anyHit); i += FLAT_TRIANGLES_PER_STEP) {
         RAYLAB_FLAT_TRIANGLE(0u) RAYLAB_FLAT_TRIANGLE(1u) RAYLAB_FLAT_TRIANGLE(2u) RAYLAB_FLAT_TRIANGLE(3u)
         RAYLAB_FLAT_TRIANGLE(4u) RAYLAB_FLAT_TRIANGLE(5u) RAYLAB_FLAT_TRIANGLE(6u) RAYLAB_FLAT_TRIANGLE(7u)
         RAYLAB_FLAT_TRIANGLE(8u) RAYLAB_FLAT_TRIANGLE(9u) RAYLAB_FLAT_TRIANGLE(10u) RAYLAB_FLAT_TRIANGLE(11u)
         RAYLAB_FLAT_TRIANGLE(12u) RAYLAB_FLAT_TRIANGLE(13u) RAYLAB_FLAT_TRIANGLE(14u) RAYLAB_FLAT_TRIANGLE(15u)
     }
+#endif
+    for (; i < end && !(found && anyHit); ++i) RAYLAB_FLAT_TRIANGLE(0u)
     return found;
 }
 #undef RAYLAB_FLAT_TRIANGLE

@@ -23,17 +23,6 @@ int skyType(Sky::Type t) {
 
 } // namespace
 
-std::uint64_t flatLoopIterationsPerSample(const SceneGeometry& geometry, const Scene& scene) {
-    if (scene.render.accel == Accel::Bvh) return 0;
-    std::uint64_t perRay = 0;
-    for (const glsl::GpuInstance& inst : geometry.instances)
-        perRay += 1 + (glsl::instanceTriangleCount(inst) + glsl::FLAT_TRIANGLES_PER_STEP - 1) /
-                          glsl::FLAT_TRIANGLES_PER_STEP;
-    const std::uint64_t rays = std::max<std::uint64_t>(2 * (std::uint64_t(scene.render.maxBounces) + 1),
-                                                       std::uint64_t(scene.ao.rays) + 1);
-    return perRay * rays;
-}
-
 ShaderProgram PathTracer::compileVariant(const ShaderDefines& features, const void* self) {
     const TracerOptions& o = static_cast<const PathTracer*>(self)->options_;
     ShaderDefines defines = o.extraDefines;
@@ -110,7 +99,7 @@ void PathTracer::updateSettings(const Scene& scene) {
     // the variant is looked up again, and compiled only when that set was never met.
     features_ = options_.specialise ? sceneFeatures(scene) : allFeatures();
     program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
-    const std::uint64_t flatIterations = flatLoopIterationsPerSample(gpuScene_.geometry(), scene);
+    const std::uint64_t flatIterations = flatLoopIterationsPerSample(scene, features_.flatSteps);
     flatSamplesPerDraw_ = flatIterations == 0 ? kSamplesPerDraw
                         : int(std::clamp<std::uint64_t>(kLoopIterationBudget / 2 / flatIterations, 1, kSamplesPerDraw));
 

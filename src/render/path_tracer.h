@@ -28,11 +28,6 @@ struct TracerOptions {
     bool cameraRelative = true;   // upload positions relative to the camera (false: world, for tests)
 };
 
-// Loop iterations one sample can spend at most in a flat search (render.accel boxes or none):
-// a traced and a shadow ray per bounce (or ao.rays rays of the AO view), each stepping through
-// every object and FLAT_TRIANGLES_PER_STEP triangles of each mesh at a time. 0 for the BVH.
-std::uint64_t flatLoopIterationsPerSample(const SceneGeometry& geometry, const Scene& scene);
-
 class PathTracer {
 public:
     explicit PathTracer(TracerOptions options = {});
@@ -83,10 +78,10 @@ public:
     // samples per pixel (a pass of more is several draws, the same samples in the same order), the
     // shader counts invocations that still ran out, and after such a draw later ones take half as
     // many. A flat search (render.accel boxes, none) starts lower: at most as many samples as its
-    // loop iterations per sample (flatLoopIterationsPerSample) leave within half the budget.
+    // loop iterations per sample (flatLoopIterationsPerSample, shader_variant.h) leave within half of
+    // kLoopIterationBudget.
     // loopLimitedInvocations() > 0 means the image lacks light; raylab-render reports it.
     static constexpr int kSamplesPerDraw = 16;
-    static constexpr std::uint64_t kLoopIterationBudget = 65535;
     int samplesPerDraw() const { return std::min(samplesPerDraw_, flatSamplesPerDraw_); }
     std::uint64_t loopLimitedInvocations() const { return loopLimited_; }
     // With RAYLAB_COUNT_TRAVERSAL in extraDefines: BVH boxes and triangles tested (else 0).

@@ -43,6 +43,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.diffuseSampling = scene.render.diffuseSampling;
     f.ggxSampling = scene.render.ggxSampling;
     f.accel = scene.render.accel;
+    f.flatSteps = flatLoopIterationsPerSample(scene, false) > kLoopIterationBudget / 2;
     f.emissiveTriangles = false;
     for (const Mesh& m : scene.meshes) f.emissiveTriangles |= f.nee && meshHasEmissiveTriangle(scene, m);
     f.analyticLights = !scene.lights.empty();
@@ -52,6 +53,18 @@ SceneFeatures sceneFeatures(const Scene& scene) {
 }
 
 SceneFeatures allFeatures() { return SceneFeatures{}; }
+
+std::uint64_t flatLoopIterationsPerSample(const Scene& scene, bool steps) {
+    if (scene.render.accel == Accel::Bvh) return 0;
+    std::uint64_t perRay = scene.spheres.size();
+    for (const Mesh& m : scene.meshes) {
+        const std::uint64_t n = m.triangles.size();
+        perRay += 1 + (steps ? n / glsl::FLAT_TRIANGLES_PER_STEP + n % glsl::FLAT_TRIANGLES_PER_STEP : n);
+    }
+    const std::uint64_t rays = std::max<std::uint64_t>(2 * (std::uint64_t(scene.render.maxBounces) + 1),
+                                                       std::uint64_t(scene.ao.rays) + 1);
+    return perRay * rays;
+}
 
 ShaderDefines featureDefines(const SceneFeatures& f) {
     ShaderDefines d = {{tracerDefine("RAYLAB_FEATURES_SPECIALISED"), "1"}};
@@ -64,6 +77,7 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     d.emplace_back(tracerDefine("RAYLAB_DIFFUSE_SAMPLING"), std::to_string(int(f.diffuseSampling)));
     d.emplace_back(tracerDefine("RAYLAB_GGX_SAMPLING"), std::to_string(int(f.ggxSampling)));
     d.emplace_back(tracerDefine("RAYLAB_ACCEL"), std::to_string(int(f.accel)));
+    d.emplace_back(tracerDefine("RAYLAB_FLAT_STEPS"), f.flatSteps && f.accel != Accel::Bvh ? "1" : "0");
     return d;
 }
 
@@ -86,6 +100,7 @@ std::string featureName(const SceneFeatures& f) {
     add(f.ggxSampling == GgxSampling::DCos, "ggx-d-cos");
     add(f.accel == Accel::Boxes, "accel-boxes");
     add(f.accel == Accel::None, "accel-none");
+    add(f.flatSteps && f.accel != Accel::Bvh, "flat-steps");
     return name.empty() ? "none" : name;
 }
 

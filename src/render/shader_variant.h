@@ -6,6 +6,7 @@
 #include "scene/scene.h"
 #include "shaders/include/features.glsl"
 
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -22,12 +23,23 @@ struct SceneFeatures {
     DiffuseSampling diffuseSampling = DiffuseSampling(RAYLAB_DIFFUSE_SAMPLING);   // RAYLAB_DIFFUSE_SAMPLING
     GgxSampling ggxSampling = GgxSampling(RAYLAB_GGX_SAMPLING);                   // RAYLAB_GGX_SAMPLING
     Accel accel = Accel(RAYLAB_ACCEL);                                            // RAYLAB_ACCEL
+    bool flatSteps = RAYLAB_FLAT_STEPS;   // boxes/none with a large mesh: RAYLAB_FLAT_STEPS
     static constexpr bool always = true;   // the `needs` of a feature without a prerequisite
     bool operator==(const SceneFeatures&) const = default;
 };
 
 // Up to this many objects the top level is a plain loop (bench/geometry.md measured it faster).
 constexpr std::size_t kLinearTopLevelMax = 16;
+
+// llvmpipe ends all loops of a shader invocation after this many iterations in all (gallivm's loop
+// limiter; PathTracer sizes its draws by it).
+constexpr std::uint64_t kLoopIterationBudget = 65535;
+
+// Loop iterations one sample can spend at most in a flat search (render.accel boxes or none): a
+// traced and a shadow ray per bounce (or ao.rays rays of the AO view), each stepping through every
+// object and each mesh's triangles, with `steps` in whole steps of FLAT_TRIANGLES_PER_STEP and the
+// rest one at a time. 0 for the BVH.
+std::uint64_t flatLoopIterationsPerSample(const Scene& scene, bool steps);
 
 SceneFeatures sceneFeatures(const Scene& scene);   // what this scene needs
 SceneFeatures allFeatures();                       // the unspecialised tracer

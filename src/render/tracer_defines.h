@@ -26,6 +26,7 @@ inline constexpr TracerDefine kTracerDefines[] = {
     {"RAYLAB_DIFFUSE_SAMPLING", "render/shader_variant.cpp"},
     {"RAYLAB_GGX_SAMPLING", "render/shader_variant.cpp"},
     {"RAYLAB_ACCEL", "render/shader_variant.cpp"},
+    {"RAYLAB_FLAT_STEPS", "render/shader_variant.cpp"},
     // The compute entry's work-group size (render/path_tracer.cpp).
     {"LOCAL_SIZE_X", "render/path_tracer.cpp", true},
     {"LOCAL_SIZE_Y", "render/path_tracer.cpp", true},

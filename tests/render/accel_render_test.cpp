@@ -69,18 +69,30 @@ TEST_F(AccelRenderTest, AFlatSearchOfALargeMeshLosesNoPathToTheLoopLimit) {
     EXPECT_EQ(none.samplesPerDraw, 4) << "a flat search draws fewer samples at once (below)";
 }
 
-// Two spheres and the terrain (8192 triangles, max_bounces 6): per ray 1 + 1 + (1 + 8192 / 16)
-// iterations, 2 · 7 rays per sample; 32767 of them leave 4 samples per draw.
+// Two spheres and the terrain (8192 triangles, max_bounces 6): in whole steps per ray 2 + (1 + 8192 /
+// 16) iterations, 2 · 7 rays per sample; 32767 of them leave 4 samples per draw. One triangle per
+// iteration, a sample would need 14 · 8195, more than the budget: the terrain takes the steps. A
+// Cornell box wall (2 triangles) costs 1 + 2, a block (10) 1 + 10 either way: no steps there.
 TEST(FlatLoopIterations, CountsEveryObjectAndEachStepOfItsTriangles) {
     Scene s = loadScene(test::scenePath("displaced_terrain.json"));
-    const SceneGeometry g = buildSceneGeometry(s);
-    EXPECT_EQ(flatLoopIterationsPerSample(g, s), 0u) << "the BVH";
+    EXPECT_EQ(flatLoopIterationsPerSample(s, true), 0u) << "the BVH";
+    EXPECT_FALSE(sceneFeatures(s).flatSteps && sceneFeatures(s).accel != Accel::Bvh);
     s.render.accel = Accel::None;
-    EXPECT_EQ(flatLoopIterationsPerSample(g, s), 515u * 14u);
+    EXPECT_EQ(flatLoopIterationsPerSample(s, true), 515u * 14u);
+    EXPECT_EQ(flatLoopIterationsPerSample(s, false), 8195u * 14u);
+    EXPECT_TRUE(sceneFeatures(s).flatSteps);
+    EXPECT_NE(featureName(sceneFeatures(s)).find("flat-steps"), std::string::npos);
     s.render.accel = Accel::Boxes;
     s.render.maxBounces = 0;
     s.ao.rays = 1;
-    EXPECT_EQ(flatLoopIterationsPerSample(g, s), 515u * 2u);
+    EXPECT_EQ(flatLoopIterationsPerSample(s, true), 515u * 2u);
     s.ao.rays = 64;
-    EXPECT_EQ(flatLoopIterationsPerSample(g, s), 515u * 65u) << "the AO view's rays";
+    EXPECT_EQ(flatLoopIterationsPerSample(s, true), 515u * 65u) << "the AO view's rays";
+
+    const Scene box = loadScene(test::scenePath("cornell_box.json"), {"render.accel=none"});
+    // Five walls and the light, 2 triangles each; two blocks of 10; 2 · 9 rays.
+    EXPECT_EQ(flatLoopIterationsPerSample(box, true), (6u * 3u + 2u * 11u) * 18u);
+    EXPECT_EQ(flatLoopIterationsPerSample(box, false), (6u * 3u + 2u * 11u) * 18u);
+    EXPECT_FALSE(sceneFeatures(box).flatSteps);
+    EXPECT_EQ(featureName(sceneFeatures(box)).find("flat-steps"), std::string::npos);
 }
