@@ -11,10 +11,12 @@ time (the time the default side takes for BUDGET_SPP samples; the other side get
 that time buys) against a REF_SPP x 4 sample reference of the default side, averaged over SEEDS
 seeds. The acceleration modes trace the same samples (checked: equal images), so only their cost
 differs. Run from the repository root after building:
-    PYTHONPATH=build/python nice -n 5 /usr/bin/python3 bench/split_comparisons.py
+    PYTHONPATH=build/python nice -n 5 /usr/bin/python3 bench/split_comparisons.py [SCENE KEY ...]
+(with SCENE KEY pairs, e.g. displaced_terrain.json render.accel, only those comparisons).
 """
 import os
 import statistics
+import sys
 import zlib
 
 import numpy as np
@@ -80,7 +82,12 @@ def main():
     print("| scene | fixed keys | key | side | ms / spp | variance / sample | efficiency vs default "
           "| spp in the budget | RMSE at equal time |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    if len(sys.argv) % 2 == 0:
+        sys.exit("usage: split_comparisons.py [SCENE KEY ...]")
+    only = set(zip(sys.argv[1::2], sys.argv[2::2]))
     for scene_file, fixed, key, sides in COMPARISONS:
+        if only and (scene_file, key) not in only:
+            continue
         scenes = [scene_of(scene_file, {**fixed, key: side}) for side in sides]
         times = ms_per_spp(scenes)
         default = scenes[-1]
