@@ -10,14 +10,11 @@
 #include "bvh_traversal.glsl"
 RL_NAMESPACE_BEGIN
 
-// llvmpipe ends every loop of an invocation once 65535 iterations have run in all
-// (path_tracer.glsl), and a mesh searched one triangle per iteration spends that on a few rays of
-// a large mesh: paths through the 8192-triangle terrain were cut short. So in scenes with such a
-// mesh (RAYLAB_FLAT_STEPS, estimator_stages.glsl) an iteration takes FLAT_TRIANGLES_PER_STEP (16)
-// triangles, written out; they are tested in index order, as one at a time would, so the hit and
-// the counts are the same (the host sizes its draws by the same constant, geometry_types.glsl).
-// Only there: llvmpipe runs a loop's body once even when no lane enters it, and a masked step of
-// 16 tests per object made the Cornell box's flat search 3.5 times dearer (bench/mesh_rays.md).
+// llvmpipe ends every loop of an invocation after 65535 iterations in all (path_tracer.glsl), which
+// a one-triangle-per-iteration search of a large mesh exhausts; so with RAYLAB_FLAT_STEPS
+// (estimator_stages.glsl) an iteration tests FLAT_TRIANGLES_PER_STEP triangles in index order, the
+// hit and counts unchanged, and only then, as llvmpipe runs a loop body once even when no lane
+// enters it (bench/mesh_rays.md).
 
 #if RAYLAB_FEATURE_MESHES
 #define RAYLAB_FLAT_TRIANGLE(k)                                                                       \
