@@ -73,6 +73,9 @@ def equal_time_rmse(scene, spp, reference):
 
 
 def main():
+    if len(sys.argv) % 2 == 0:
+        sys.exit("usage: split_comparisons.py [SCENE KEY ...]")
+    only = set(zip(sys.argv[1::2], sys.argv[2::2]))
     os.makedirs(CACHE, exist_ok=True)
     load = os.getloadavg()
     print(f"load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f} on {os.cpu_count()} CPUs; "
@@ -82,9 +85,6 @@ def main():
     print("| scene | fixed keys | key | side | ms / spp | variance / sample | efficiency vs default "
           "| spp in the budget | RMSE at equal time |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-    if len(sys.argv) % 2 == 0:
-        sys.exit("usage: split_comparisons.py [SCENE KEY ...]")
-    only = set(zip(sys.argv[1::2], sys.argv[2::2]))
     for scene_file, fixed, key, sides in COMPARISONS:
         if only and (scene_file, key) not in only:
             continue

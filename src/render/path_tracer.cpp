@@ -99,7 +99,9 @@ void PathTracer::updateSettings(const Scene& scene) {
     // the variant is looked up again, and compiled only when that set was never met.
     features_ = options_.specialise ? sceneFeatures(scene) : allFeatures();
     program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
-    const std::uint64_t flatIterations = flatLoopIterationsPerSample(scene, features_.flatSteps);
+    // The variant's search, not the scene's key: the unspecialised tracer always walks the BVH.
+    const std::uint64_t flatIterations =
+        features_.accel == Accel::Bvh ? 0 : flatLoopIterationsPerSample(scene, features_.flatSteps);
     flatSamplesPerDraw_ = flatIterations == 0 ? kSamplesPerDraw
                         : int(std::clamp<std::uint64_t>(kLoopIterationBudget / 2 / flatIterations, 1, kSamplesPerDraw));
 

@@ -77,7 +77,7 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     d.emplace_back(tracerDefine("RAYLAB_DIFFUSE_SAMPLING"), std::to_string(int(f.diffuseSampling)));
     d.emplace_back(tracerDefine("RAYLAB_GGX_SAMPLING"), std::to_string(int(f.ggxSampling)));
     d.emplace_back(tracerDefine("RAYLAB_ACCEL"), std::to_string(int(f.accel)));
-    d.emplace_back(tracerDefine("RAYLAB_FLAT_STEPS"), f.flatSteps && f.accel != Accel::Bvh ? "1" : "0");
+    d.emplace_back(tracerDefine("RAYLAB_FLAT_STEPS"), f.usesFlatSteps() ? "1" : "0");
     return d;
 }
 
@@ -100,7 +100,7 @@ std::string featureName(const SceneFeatures& f) {
     add(f.ggxSampling == GgxSampling::DCos, "ggx-d-cos");
     add(f.accel == Accel::Boxes, "accel-boxes");
     add(f.accel == Accel::None, "accel-none");
-    add(f.flatSteps && f.accel != Accel::Bvh, "flat-steps");
+    add(f.usesFlatSteps(), "flat-steps");
     return name.empty() ? "none" : name;
 }
 

@@ -25,6 +25,7 @@ struct SceneFeatures {
     Accel accel = Accel(RAYLAB_ACCEL);                                            // RAYLAB_ACCEL
     bool flatSteps = RAYLAB_FLAT_STEPS;   // boxes/none with a large mesh: RAYLAB_FLAT_STEPS
     static constexpr bool always = true;   // the `needs` of a feature without a prerequisite
+    bool usesFlatSteps() const { return flatSteps && accel != Accel::Bvh; }   // the BVH has no flat search
     bool operator==(const SceneFeatures&) const = default;
 };
 
