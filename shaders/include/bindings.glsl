@@ -8,6 +8,11 @@
 #define BINDING_ACCUM_IMAGE 0          // image unit: the running mean, RGBA32F (tracer)
 #define BINDING_ACCUM_TEXTURE 0        // texture unit: the running mean, read by the display pass
 #define BINDING_SKY_MAP_TEXTURE 4      // texture unit: sky.map (1×1 black without)
+// Texture units: texture-buffer views of geometry buffers, RGBA32UI (scene_geometry.glsl).
+#define BINDING_TOP_NODE_TEXELS 5
+#define BINDING_MESH_NODE_TEXELS 6
+#define BINDING_INSTANCE_TEXELS 7
+#define BINDING_TRIANGLE_TEXELS 8
 
 // The tracer's storage buffers (shaders/include/scene_data.glsl, scene_geometry.glsl,
 // scene_textures.glsl; filled by src/render/gpu_scene.cpp and path_tracer.cpp).

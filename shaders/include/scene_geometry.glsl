@@ -15,10 +15,28 @@ layout(std430, binding = BINDING_INSTANCES) readonly buffer InstanceBuffer { Gpu
 layout(std430, binding = BINDING_TRIANGLES) readonly buffer TriangleBuffer { GpuTriangle triangles[]; };
 layout(std430, binding = BINDING_VERTICES) readonly buffer VertexBuffer { GpuVertex vertices[]; };
 
-GpuBvhNode topNode(uint i) { return topNodes[i]; }
-GpuBvhNode meshNode(uint i) { return meshNodes[i]; }
-GpuInstance instanceAt(uint i) { return instances[i]; }
-GpuTriangle triangleAt(uint i) { return triangles[i]; }
+// Traversal reads nodes, instances and triangles through integer texture buffers over the same GL
+// buffers (bit-exact, RGBA32UI): on llvmpipe a texel fetch costs less than a per-lane vec4 load
+// from a storage buffer (bench/mesh_rays.md), and on GPUs it is the usual cached read path for BVHs.
+layout(binding = BINDING_TOP_NODE_TEXELS) uniform usamplerBuffer topNodeTexels;
+layout(binding = BINDING_MESH_NODE_TEXELS) uniform usamplerBuffer meshNodeTexels;
+layout(binding = BINDING_INSTANCE_TEXELS) uniform usamplerBuffer instanceTexels;
+layout(binding = BINDING_TRIANGLE_TEXELS) uniform usamplerBuffer triangleTexels;
+vec4 texelBits(usamplerBuffer b, uint i) { return uintBitsToFloat(texelFetch(b, int(i))); }
+GpuBvhNode bvhNodeFrom(usamplerBuffer b, uint i) { return GpuBvhNode(texelBits(b, 2u * i), texelBits(b, 2u * i + 1u)); }
+GpuBvhNode topNode(uint i) { return bvhNodeFrom(topNodeTexels, i); }
+GpuBvhNode meshNode(uint i) { return bvhNodeFrom(meshNodeTexels, i); }
+GpuInstance instanceAt(uint i) {
+    uint b = 9u * i;
+    return GpuInstance(texelBits(instanceTexels, b), texelBits(instanceTexels, b + 1u), texelBits(instanceTexels, b + 2u),
+                       texelBits(instanceTexels, b + 3u), texelBits(instanceTexels, b + 4u), texelBits(instanceTexels, b + 5u),
+                       texelBits(instanceTexels, b + 6u), texelBits(instanceTexels, b + 7u), texelFetch(instanceTexels, int(b + 8u)));
+}
+GpuTriangle triangleAt(uint i) {
+    uint b = 4u * i;
+    return GpuTriangle(texelBits(triangleTexels, b), texelBits(triangleTexels, b + 1u), texelBits(triangleTexels, b + 2u),
+                       texelFetch(triangleTexels, int(b + 3u)));
+}
 GpuVertex vertexAt(uint i) { return vertices[i]; }
 GpuSphere sphereAt(uint i) { return spheres[i]; }
 uint instanceCount() { return uint(instances.length()); }

@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -32,6 +34,11 @@ static_assert(sizeof(glsl::GpuAnalyticLight) == 48 && offsetof(glsl::AnalyticLig
 // geometryBuffers_ in order: top nodes, mesh nodes, instances, triangles, vertices.
 constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, BINDING_INSTANCES,
                                          BINDING_TRIANGLES, BINDING_VERTICES};
+
+// geometryTexels_ in order, and the geometryBuffers_ each views.
+constexpr GLuint kGeometryTexelBindings[4] = {BINDING_TOP_NODE_TEXELS, BINDING_MESH_NODE_TEXELS,
+                                              BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS};
+constexpr int kGeometryTexelSources[4] = {0, 1, 2, 3};
 
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
@@ -53,6 +60,7 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &envMarginalBuffer_);
     glCreateBuffers(1, &envConditionalBuffer_);
     glCreateBuffers(5, geometryBuffers_);
+    glCreateTextures(GL_TEXTURE_BUFFER, 4, geometryTexels_);
     glCreateBuffers(2, textureBuffers_);
     glCreateBuffers(1, &triangleLightBuffer_);
     glCreateBuffers(1, &lightAliasBuffer_);
@@ -69,6 +77,7 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &envMarginalBuffer_);
     glDeleteBuffers(1, &envConditionalBuffer_);
     glDeleteBuffers(5, geometryBuffers_);
+    glDeleteTextures(4, geometryTexels_);
     glDeleteBuffers(2, textureBuffers_);
     glDeleteBuffers(1, &triangleLightBuffer_);
     glDeleteBuffers(1, &lightAliasBuffer_);
@@ -79,6 +88,7 @@ void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
     geometry_ = buildSceneGeometry(scene);
     ++meshBvhBuilds_;
     uploadBuffer(geometryBuffers_[1], geometry_.meshNodes);
+    attachGeometryTexels(1);
     uploadBuffer(geometryBuffers_[4], geometry_.vertices);
     uploadSkyMap(scene.sky);
     // Textures: all levels of all textures in one texel array; see shaders/include/scene_textures.glsl.
@@ -89,6 +99,20 @@ void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
     uploadMaterials(scene);
     uploadTopLevel(scene, origin);   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
     uploadBuffer(geometryBuffers_[3], geometry_.triangles);
+    attachGeometryTexels(3);
+}
+
+// A texture buffer sees a buffer's data store as of its attachment, so each upload re-attaches.
+void GpuScene::attachGeometryTexels(int view) {
+    const GLuint buffer = geometryBuffers_[kGeometryTexelSources[view]];
+    GLint64 bytes = 0;
+    glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &bytes);
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    if (bytes / 16 > GLint64(maxTexels))
+        throw std::runtime_error("the scene's geometry needs " + std::to_string(bytes / 16) +
+                                 " texels in one texture buffer; this GL allows " + std::to_string(maxTexels));
+    glTextureBuffer(geometryTexels_[view], GL_RGBA32UI, buffer);
 }
 
 void GpuScene::updateMaterials(const Scene& scene, const glm::dvec3& origin) {
@@ -172,6 +196,8 @@ void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     glNamedBufferData(analyticLightBuffer_, sizeof block, &block, GL_STATIC_DRAW);
     uploadBuffer(geometryBuffers_[0], relativeTop_.topNodes);
     uploadBuffer(geometryBuffers_[2], relativeTop_.instances);
+    attachGeometryTexels(0);
+    attachGeometryTexels(2);
 }
 
 // The sky map as an RGBA32F texture, rows top first as in the file (v = 0 is straight up); a
@@ -204,6 +230,7 @@ void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_ENV_MARGINAL, envMarginalBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_ENV_CONDITIONAL, envConditionalBuffer_);
     for (int i = 0; i < 5; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGeometryBindings[i], geometryBuffers_[i]);
+    for (int i = 0; i < 4; ++i) glBindTextureUnit(kGeometryTexelBindings[i], geometryTexels_[i]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_TEXELS, textureBuffers_[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_INFO, textureBuffers_[1]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHTS, triangleLightBuffer_);

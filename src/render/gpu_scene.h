@@ -64,6 +64,9 @@ private:
     std::uint64_t topLevelUpdates_ = 0;
     std::uint64_t materialUpdates_ = 0;
     unsigned geometryBuffers_[5] = {};   // top nodes, mesh nodes, instances, triangles, vertices
+    // Texture-buffer views of top nodes, mesh nodes, instances and triangles (scene_geometry.glsl).
+    unsigned geometryTexels_[4] = {};
+    void attachGeometryTexels(int view);
     void uploadTopLevel(const Scene& scene, const glm::dvec3& origin);
     SceneGeometry relativeTop_;   // spheres, instances and top nodes as uploaded (mesh data stays in geometry_)
     unsigned triangleLightBuffer_ = 0;   // emissive triangles

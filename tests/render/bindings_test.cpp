@@ -40,6 +40,11 @@ static_assert(pairwiseDistinct(std::array{BINDING_SPHERES, BINDING_MATERIALS, BI
                                           BINDING_TRIANGLE_LIGHTS, BINDING_TRIANGLE_LIGHT_INDEX,
                                           BINDING_BSDF_SAMPLES}));
 static_assert(BINDING_TEST_INPUT != BINDING_TEST_OUTPUT);
+// The tracer's texture units: the sky map and the geometry's texel views (the accumulation
+// texture is the display pass's, a program of its own).
+static_assert(pairwiseDistinct(std::array{BINDING_SKY_MAP_TEXTURE, BINDING_TOP_NODE_TEXELS, BINDING_MESH_NODE_TEXELS,
+                                          BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS}),
+              "two tracer texture units coincide");
 
 // `binding = 3` in a layout, or a glBind* call whose point is a number.
 const std::regex kLiteralPoint(
