@@ -165,7 +165,18 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
         if (instanceInfo(i).x != INSTANCE_MESH) continue;
         RL_COUNT_BOX();
         if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) < 0.0f) continue;
+#if RAYLAB_SMALL_MESHES && !RAYLAB_COUNT_TRAVERSAL
+        // A few triangles: tested straight after the world box, without the mesh BVH's root read,
+        // box test and walk (bench/mesh_rays.md). The heat views count the BVH's own tests.
+        GpuInstance inst = instanceAt(i);
+        float dt;
+        Ray o = objectRay(inst, ray, dt);
+        if (dt < rec.t && intersectTriangles(triangleRay(o), dt, i, instanceFirstTriangle(inst), instanceTriangleCount(inst),
+                                             anyHit, rec))
+            found = true;
+#else
         if (intersectInstance(ray, i, anyHit, rec)) found = true;
+#endif
         if (found && anyHit) break;
     }
 #endif

@@ -18,6 +18,8 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.depthOfField = scene.camera.aperture > 0.0f;
     f.textures = !scene.textures.empty();
     f.linearTopLevel = scene.spheres.size() + scene.meshes.size() <= kLinearTopLevelMax;
+    f.smallMeshes = f.meshes;
+    for (const Mesh& m : scene.meshes) f.smallMeshes &= m.triangles.size() <= kSmallMeshMax;
     f.showMipLevel = f.textures && scene.render.showMipLevel != 0;
     f.nee = scene.render.nee;
     f.generalBsdf = false;

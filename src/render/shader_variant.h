@@ -32,6 +32,10 @@ struct SceneFeatures {
 // Up to this many objects the top level is a plain loop (bench/geometry.md measured it faster).
 constexpr std::size_t kLinearTopLevelMax = 16;
 
+// Up to this many triangles a mesh of a few-object scene is searched without its BVH: its triangles
+// straight after its world box (RAYLAB_SMALL_MESHES; bench/mesh_rays.md measured it cheaper).
+constexpr std::size_t kSmallMeshMax = 16;
+
 // llvmpipe ends all loops of a shader invocation after this many iterations in all (gallivm's loop
 // limiter; PathTracer sizes its draws by it).
 constexpr std::uint64_t kLoopIterationBudget = 65535;

@@ -194,9 +194,11 @@ std::vector<ParamSpec> buildSceneTable() {
               {"uniform", static_cast<int>(LightSelection::Uniform)}}),
         [](auto& s) -> auto& { return s.render.lightSelection; });
     add(spec("render.accel", T::Enum, kAny, kAny, "",
-             "How rays find surfaces: bvh (two-level bounding volume hierarchy), boxes (a flat list of object "
-             "boxes, each hit box's primitives all tested) or none (every primitive tested). Same image, "
-             "different cost (heat views, bench/estimator_stages.md).",
+             "How rays find surfaces: bvh (two-level bounding volume hierarchy; with at most 16 objects a "
+             "loop over their boxes, and meshes of at most 16 triangles tested without their tree, which the "
+             "heat views still count), boxes (a flat list of object boxes, each hit box's primitives all "
+             "tested) or none (every primitive tested). Same image, different cost (heat views, "
+             "bench/estimator_stages.md, bench/mesh_rays.md).",
              G::RecompileShader,
              {{"bvh", static_cast<int>(Accel::Bvh)},
               {"boxes", static_cast<int>(Accel::Boxes)},

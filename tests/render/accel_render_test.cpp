@@ -2,6 +2,7 @@
 // bit for bit, on the Cornell box and on a textured mesh scene; the traversal counters (heat views,
 // stats) count their work: more triangles than the BVH, every object's box for boxes. A flat
 // search of a large mesh stays within llvmpipe's loop budget, so its paths are not cut short.
+// Small meshes searched without their BVH render the BVH's image too.
 #include "render_helpers.h"
 #include "support/gl_test.h"
 
@@ -51,6 +52,24 @@ TEST_F(AccelRenderTest, BoxesAndNoneRenderTheBvhsImageAtAHigherCost) {
         EXPECT_GT(none.triangles, boxes.triangles);
         EXPECT_GT(boxes.boxes, 0u);
         EXPECT_EQ(none.boxes, 0u) << "none tests no box";
+    }
+}
+
+// Few objects and small meshes (RAYLAB_SMALL_MESHES): the tracer tests a mesh's triangles straight
+// after its world box, while the counting variant of the heat views walks the mesh's BVH. Same
+// hits, so the same image bit for bit.
+TEST_F(AccelRenderTest, SmallMeshesSearchedWithoutTheirBvhRenderTheBvhsImage) {
+    for (const char* scene : {"cornell_box.json", "textured_bricks.json"}) {
+        SCOPED_TRACE(scene);
+        const Scene s = loadScene(test::scenePath(scene), {"render.width=24", "render.height=16", "render.spp=2", "render.rpp=2"});
+        ASSERT_TRUE(sceneFeatures(s).smallMeshes && sceneFeatures(s).linearTopLevel);
+        PathTracer plain;
+        plain.setScene(s);
+        renderProgressively(plain, s.render);
+        EXPECT_NE(plain.variantName().find("small-meshes"), std::string::npos) << plain.variantName();
+        const Traced bvh = trace(scene, "bvh");
+        EXPECT_GT(bvh.boxes, bvh.triangles) << "the counting variant walks the meshes' BVHs";
+        EXPECT_EQ(plain.readImage().rgba, bvh.image.rgba) << "same hits, same image";
     }
 }
 

@@ -31,7 +31,7 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     s.meshes.push_back(Mesh{});
     s.meshes[0].normals.push_back(glm::vec3(0, 0, 1));
     s.camera.aperture = 0.1f;
-    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects");
+    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes");
     for (int i = 0; i < 20; ++i) s.spheres.push_back(Sphere{});
     EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof") << "many objects: top-level BVH";
     const ShaderDefines d = on(featureDefines(sceneFeatures(spheres)));
@@ -42,6 +42,29 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     // 5 geometry features + NEE, BSDF, sky map + roughness, metallic, emission, specular textures,
     // wrap modes + triangle lights, light power selection + point/spot/distant lights, one-sided emitters
     EXPECT_EQ(on(featureDefines(allFeatures())).size(), 18u);
+}
+
+// A scene of few objects whose meshes all have at most kSmallMeshMax triangles searches them
+// without their BVHs; one larger mesh, or a top-level BVH, and every mesh is walked.
+TEST(ShaderVariant, SmallMeshesAreThoseOfAtMostSixteenTriangles) {
+    const auto small = [](const Scene& s) {
+        for (const auto& [name, value] : featureDefines(sceneFeatures(s)))
+            if (name == "RAYLAB_SMALL_MESHES") return value == "1";
+        ADD_FAILURE() << "no RAYLAB_SMALL_MESHES define";
+        return false;
+    };
+    Scene box = loadScene(test::scenePath("cornell_box.json"));
+    EXPECT_TRUE(small(box)) << "walls of 2 triangles, blocks of 10";
+    const Scene terrain = loadScene(test::scenePath("displaced_terrain.json"));
+    EXPECT_FALSE(small(terrain));
+    EXPECT_FALSE(small(loadScene(test::scenePath("default.json")))) << "no meshes";
+    box.meshes[0].triangles.resize(kSmallMeshMax, box.meshes[0].triangles[0]);
+    EXPECT_TRUE(small(box));
+    box.meshes[0].triangles.push_back(box.meshes[0].triangles[0]);
+    EXPECT_FALSE(small(box)) << kSmallMeshMax + 1 << " triangles";
+    box.meshes[0].triangles.resize(2);
+    for (int i = 0; i < 20; ++i) box.spheres.push_back(Sphere{});
+    EXPECT_FALSE(small(box)) << "many objects: the top-level BVH";
 }
 
 TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore) {
@@ -55,6 +78,7 @@ TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore
     if (f.smoothNormals) expected.emplace_back("RAYLAB_FEATURE_SMOOTH_NORMALS", "1");
     expected.emplace_back("RAYLAB_FEATURE_TEXTURES", "1");
     if (f.linearTopLevel) expected.emplace_back("RAYLAB_TOP_LEVEL_LINEAR", "1");
+    if (f.linearTopLevel && f.smallMeshes) expected.emplace_back("RAYLAB_SMALL_MESHES", "1");
     if (f.nee) expected.emplace_back("RAYLAB_NEE", "1");
     if (f.generalBsdf) expected.emplace_back("RAYLAB_GENERAL_BSDF", "1");
     EXPECT_EQ(on(featureDefines(f)), expected);
