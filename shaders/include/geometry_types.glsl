@@ -51,6 +51,12 @@ struct GpuInstance {
 // iteration; the host's draws are sized by the iterations that costs (PathTracer).
 const uint FLAT_TRIANGLES_PER_STEP = 16u;
 
+// Each record's size in 16-byte texels: the stride of its texture-buffer view (scene_geometry.glsl;
+// render/gpu_scene.cpp checks them against sizeof).
+const uint BVH_NODE_TEXELS = 2u;
+const uint INSTANCE_TEXELS = 9u;
+const uint TRIANGLE_TEXELS = 4u;
+
 RL_FN uint instanceFirstTriangle(GpuInstance inst) { return floatBitsToUint(inst.worldMin.w); }
 RL_FN uint instanceTriangleCount(GpuInstance inst) { return floatBitsToUint(inst.worldMax.w); }
 

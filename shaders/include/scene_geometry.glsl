@@ -23,17 +23,17 @@ layout(binding = BINDING_MESH_NODE_TEXELS) uniform usamplerBuffer meshNodeTexels
 layout(binding = BINDING_INSTANCE_TEXELS) uniform usamplerBuffer instanceTexels;
 layout(binding = BINDING_TRIANGLE_TEXELS) uniform usamplerBuffer triangleTexels;
 vec4 texelBits(usamplerBuffer b, uint i) { return uintBitsToFloat(texelFetch(b, int(i))); }
-GpuBvhNode bvhNodeFrom(usamplerBuffer b, uint i) { return GpuBvhNode(texelBits(b, 2u * i), texelBits(b, 2u * i + 1u)); }
+GpuBvhNode bvhNodeFrom(usamplerBuffer b, uint i) { return GpuBvhNode(texelBits(b, BVH_NODE_TEXELS * i), texelBits(b, BVH_NODE_TEXELS * i + 1u)); }
 GpuBvhNode topNode(uint i) { return bvhNodeFrom(topNodeTexels, i); }
 GpuBvhNode meshNode(uint i) { return bvhNodeFrom(meshNodeTexels, i); }
 GpuInstance instanceAt(uint i) {
-    uint b = 9u * i;
+    uint b = INSTANCE_TEXELS * i;
     return GpuInstance(texelBits(instanceTexels, b), texelBits(instanceTexels, b + 1u), texelBits(instanceTexels, b + 2u),
                        texelBits(instanceTexels, b + 3u), texelBits(instanceTexels, b + 4u), texelBits(instanceTexels, b + 5u),
                        texelBits(instanceTexels, b + 6u), texelBits(instanceTexels, b + 7u), texelFetch(instanceTexels, int(b + 8u)));
 }
 GpuTriangle triangleAt(uint i) {
-    uint b = 4u * i;
+    uint b = TRIANGLE_TEXELS * i;
     return GpuTriangle(texelBits(triangleTexels, b), texelBits(triangleTexels, b + 1u), texelBits(triangleTexels, b + 2u),
                        texelFetch(triangleTexels, int(b + 3u)));
 }

@@ -28,6 +28,8 @@ static_assert(offsetof(glsl::GpuMaterial, emissionTexture) == 64 && offsetof(gls
 static_assert(offsetof(glsl::GpuMaterial, occlusionTexture) == 80);
 // The geometry records are vec4s only, so their std430 layout is their C++ layout.
 static_assert(sizeof(glsl::GpuBvhNode) == 32 && sizeof(glsl::GpuInstance) == 144 && sizeof(glsl::GpuTriangle) == 64);
+static_assert(sizeof(glsl::GpuBvhNode) == 16 * glsl::BVH_NODE_TEXELS && sizeof(glsl::GpuInstance) == 16 * glsl::INSTANCE_TEXELS &&
+              sizeof(glsl::GpuTriangle) == 16 * glsl::TRIANGLE_TEXELS);
 // std140 offsets of AnalyticLightBlock: vec4s only.
 static_assert(sizeof(glsl::GpuAnalyticLight) == 48 && offsetof(glsl::AnalyticLightBlock, lights) == 16);
 
@@ -35,10 +37,9 @@ static_assert(sizeof(glsl::GpuAnalyticLight) == 48 && offsetof(glsl::AnalyticLig
 constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, BINDING_INSTANCES,
                                          BINDING_TRIANGLES, BINDING_VERTICES};
 
-// geometryTexels_ in order, and the geometryBuffers_ each views.
+// geometryTexels_ in order; geometryTexels_[i] views geometryBuffers_[i].
 constexpr GLuint kGeometryTexelBindings[4] = {BINDING_TOP_NODE_TEXELS, BINDING_MESH_NODE_TEXELS,
                                               BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS};
-constexpr int kGeometryTexelSources[4] = {0, 1, 2, 3};
 
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
@@ -104,7 +105,7 @@ void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
 
 // A texture buffer sees a buffer's data store as of its attachment, so each upload re-attaches.
 void GpuScene::attachGeometryTexels(int view) {
-    const GLuint buffer = geometryBuffers_[kGeometryTexelSources[view]];
+    const GLuint buffer = geometryBuffers_[view];
     GLint64 bytes = 0;
     glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &bytes);
     GLint maxTexels = 0;
