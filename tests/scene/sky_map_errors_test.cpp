@@ -1,6 +1,7 @@
 // A sky map that is not a readable image, or one too large to read, is refused when the scene is
 // read, at sky.map, before any pixel is allocated.
 #include "scene/scene_loader.h"
+#include "support/render_cli.h"
 
 #include <gtest/gtest.h>
 
@@ -13,11 +14,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch() {
-    const fs::path dir = fs::temp_directory_path() / "raylab_sky_map_errors";
-    fs::create_directories(dir);
-    return dir;
-}
+// This process's own folder: ctest runs the tests of this file in parallel processes.
+fs::path scratch() { return test::scratchDir("raylab_sky_map_errors"); }
 
 // The error of a scene in `dir` whose sky map is `map`, or "<no error>".
 std::string errorWithMap(const std::string& map) {
