@@ -190,7 +190,7 @@ def image(tree, texture):
 # 1/eta^2 radiance scaling across glass does not change camera-path images.
 def material(name, albedo, emission, f0=(0.0, 0.0, 0.0, 1.0), roughness=1.0, transmission=0.0, ior=1.5,
              metallic=0.0, albedo_map=None, roughness_map=None, metallic_map=None, normal_map=None,
-             normal_scale=1.0, emission_map=None, specular_map=None):
+             normal_scale=1.0, emission_map=None, specular_map=None, front_only=False):
     m = bpy.data.materials.new(name)
     m.use_nodes = True
     tree = m.node_tree
@@ -278,7 +278,11 @@ def material(name, albedo, emission, f0=(0.0, 0.0, 0.0, 1.0), roughness=1.0, tra
         emit = tree.nodes.new("ShaderNodeEmission")
         feed(tree, emit.inputs["Color"], emission if emission_map is None
              else vmath(tree, "MULTIPLY", emission[:3], image(tree, emission_map)))
-        emit.inputs["Strength"].default_value = 1.0
+        if front_only:   # emission_sides front: Cycles emits from both sides, so the back is masked
+            geometry = tree.nodes.new("ShaderNodeNewGeometry")
+            feed(tree, emit.inputs["Strength"], smath(tree, "SUBTRACT", 1.0, geometry.outputs["Backfacing"]))
+        else:
+            emit.inputs["Strength"].default_value = 1.0
         add = tree.nodes.new("ShaderNodeAddShader")
         feed(tree, add.inputs[0], surface)
         feed(tree, add.inputs[1], emit.outputs[0])
@@ -551,9 +555,29 @@ std::string blenderScript(const Scene& scene, const fs::path& embeddedDir) {
     // raylab's max_bounces counts the vertices that gather light (1: direct light alone), Cycles'
     // the bounces after the first (0: direct light alone); raylab's 0 (emitters alone) has no match.
     py << "settings(" << r.width << ", " << r.height << ", " << std::max(r.maxBounces - 1, 0) << ", " << r.seed << ")\n";
-    for (size_t i = 0; i < scene.materials.size(); ++i) {
+    // A mesh whose emission is one-sided takes its emissive materials as variants that mask the
+    // back face ("mat<i>f"); every other object shares "mat<i>".
+    std::vector<bool> frontVariant(scene.materials.size(), false);
+    for (const Mesh& mesh : scene.meshes) {
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            const int mat = triangleMaterial(mesh, t);
+            if (mat < 0 || std::size_t(mat) >= scene.materials.size()) continue;
+            const Material& m = scene.materials[std::size_t(mat)];
+            const glm::vec3 L = m.radiance();
+            if (emitsFrontOnly(mesh, m) && std::max({L.r, L.g, L.b}) > 0.0f) frontVariant[std::size_t(mat)] = true;
+        }
+    }
+    const auto meshMaterial = [&](const Mesh& mesh, int mat) {
+        const bool front = mat >= 0 && std::size_t(mat) < scene.materials.size() && frontVariant[std::size_t(mat)] &&
+                           emitsFrontOnly(mesh, scene.materials[std::size_t(mat)]);
+        return "mat" + std::to_string(mat) + (front ? "f" : "");
+    };
+    for (size_t k = 0; k < 2 * scene.materials.size(); ++k) {
+        const size_t i = k % scene.materials.size();
+        const bool front = k >= scene.materials.size();
+        if (front && !frontVariant[i]) continue;
         const Material& m = scene.materials[i];
-        py << "mat" << i << " = material(" << pyString(m.name) << ", ";
+        py << "mat" << i << (front ? "f" : "") << " = material(" << pyString(front ? m.name + " (front)" : m.name) << ", ";
         if (!hasTexture(m)) {
             // metallic on the f0 model (scenes/FORMAT.md), as the tracer bakes it without textures
             const glm::vec3 albedo = m.albedo * (1.0f - m.metallic), f0 = glm::mix(m.f0, m.albedo, m.metallic);
@@ -574,6 +598,7 @@ std::string blenderScript(const Scene& scene, const fs::path& embeddedDir) {
                 if (index >= 0) py << ", " << key << "=" << mapArgument(scene, embeddedDir, index);
             if (m.normalTextureIndex >= 0) py << ", normal_scale=" << num(m.normalScale);
         }
+        if (front) py << ", front_only=True";
         py << ")\n";
     }
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
@@ -606,10 +631,10 @@ std::string blenderScript(const Scene& scene, const fs::path& embeddedDir) {
         for (size_t v = 0; v < m.normals.size(); ++v) py << (v ? ", " : "") << point(m.normals[v]);
         py << "], ";
         if (slots.size() == 1) {
-            py << "mat" << slots[0];
+            py << meshMaterial(m, slots[0]);
         } else {
             py << "[";
-            for (size_t k = 0; k < slots.size(); ++k) py << (k ? ", " : "") << "mat" << slots[k];
+            for (size_t k = 0; k < slots.size(); ++k) py << (k ? ", " : "") << meshMaterial(m, slots[k]);
             py << "]";
         }
         py << ", " << transform(m.transform);

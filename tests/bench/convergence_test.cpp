@@ -311,6 +311,27 @@ TEST(BenchBlenderExport, GltfMeshesKeepTheirPrimitivesMaterialsAndImages) {
     EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
 }
 
+TEST(BenchBlenderExport, OneSidedEmittersMaskTheirBackFaceInCycles) {
+    // The Cornell box's light emits downwards alone (emission_sides front); Cycles emits from both
+    // faces, so the light's mesh takes a variant of its material whose emission is 1 − Backfacing,
+    // and objects that emit from both sides keep the shared material.
+    const Scene box = loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/cornell_box.json");
+    int light = -1;
+    for (size_t i = 0; i < box.materials.size(); ++i)
+        if (box.materials[i].name == "light") light = int(i);
+    ASSERT_GE(light, 0);
+    const std::string variant = "mat" + std::to_string(light) + "f";
+    const std::string py = blenderScript(box);
+    EXPECT_NE(py.find(variant + " = material(\"light (front)\", "), std::string::npos) << py;
+    EXPECT_NE(materialLine(py, "light (front)").find(", front_only=True)"), std::string::npos);
+    EXPECT_NE(py.find("], " + variant + ", "), std::string::npos) << "the light's mesh takes the variant";
+    EXPECT_NE(py.find("smath(tree, \"SUBTRACT\", 1.0, geometry.outputs[\"Backfacing\"])"), std::string::npos);
+    const std::string both =
+        blenderScript(loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/cornell_box.json", {"objects.5.emission_sides=both"}));
+    EXPECT_EQ(both.find(variant + " = "), std::string::npos) << "two-sided: no variant";
+    EXPECT_NE(both.find("], mat" + std::to_string(light) + ", "), std::string::npos);
+}
+
 TEST(BenchPeerMismatch, MarksAScenePastThreePercentApproximate) {
     const Image raylab = constant(4, 2, 0.5f);
     PeerMismatch near = peerMismatch(raylab, constant(4, 2, 0.51f));   // +2 %

@@ -69,7 +69,9 @@ TEST(LightList, CornellBoxLightIsTwoTrianglesWithTheirAreaAndPower) {
     }
     EXPECT_NEAR(area, 130.0 * 105.0, 1e-3);   // 343..213 × 227..332
     ASSERT_EQ(lights.power.size(), 2u);
-    EXPECT_NEAR(lights.power[0] + lights.power[1], (0.2126 * 17 + 0.7152 * 12 + 0.0722 * 4) * 2.0 * 130.0 * 105.0, 1e-2);
+    // One-sided (emission_sides front): power = luminance × π·A over the front hemisphere alone,
+    // the factor π common to every light and left out.
+    EXPECT_NEAR(lights.power[0] + lights.power[1], (0.2126 * 17 + 0.7152 * 12 + 0.0722 * 4) * 1.0 * 130.0 * 105.0, 1e-2);
     int marked = 0;
     for (std::uint32_t i : lights.triangleLightIndex) marked += i > 0 ? 1 : 0;
     EXPECT_EQ(marked, 2);
