@@ -5,7 +5,10 @@
 // Defines set by the host: the scene's features, every one 0 or 1 (include/features.glsl), and
 // the optional debug and test defines; the one list is src/render/tracer_defines.h.
 #include "../include/path_tracer.glsl"
+#include "../include/fragment_layout.glsl"
 
 void main() {
-    tracePixelPass(ivec2(gl_FragCoord.xy));
+    ivec2 pixel = fragmentPixel(ivec2(gl_FragCoord.xy), params.imageSize, params.fragmentStripTiles);
+    if (pixel.x >= params.imageSize.x || pixel.y >= params.imageSize.y) return;   // past the strip's last block
+    tracePixelPass(pixel);
 }

@@ -50,7 +50,8 @@ layout(std140, binding = BINDING_TRACER_PARAMS_UBO) uniform TracerParams {
     uint sampleCount;          // render.spp: samples per pixel of the whole render (stratified strata)
     float aoDistance;          // ao.distance: the ambient-occlusion view's reach, world units
     int aoRays;                // ao.rays: its rays per camera sample
-    ivec2 padding;             // std140: the block is whole vec4s
+    int fragmentStripTiles;    // fragment entry: tiles of the strip a small image is drawn in (fragment_layout.glsl); 0 none
+    int padding;               // std140: the block is whole vec4s
 #ifdef __cplusplus
 };
 

@@ -3,6 +3,7 @@
 #include "render/camera_relative.h"
 #include "shaders/include/bindings.glsl"
 #include "shaders/include/camera.glsl"
+#include "shaders/include/fragment_layout.glsl"
 #include "shaders/include/sky.glsl"
 
 #include <glad/gl.h>
@@ -10,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace raylab {
@@ -67,14 +70,41 @@ std::string PathTracer::variantName() const {
     return entry + " [" + (options_.specialise ? featureName(features_) : "all features") + "]";
 }
 
+int fragmentStripTiles(int width, int height, int threads) {
+    const auto tiles = [](int n) { return (n + glsl::RASTER_TILE - 1) / glsl::RASTER_TILE; };
+    return threads < 2 || tiles(width) * tiles(height) >= 4 * threads ? 0 : threads;
+}
+
+glm::ivec2 fragmentStripSize(int width, int height, int tiles) {
+    if (tiles == 0) return {width, height};
+    const auto blocks = [](int n) { return (n + glsl::FRAGMENT_BLOCK - 1) / glsl::FRAGMENT_BLOCK; };
+    const int perTile = (blocks(width) * blocks(height) + tiles - 1) / tiles;
+    const int rows = (perTile + glsl::TILE_BLOCKS - 1) / glsl::TILE_BLOCKS;
+    return {tiles * glsl::RASTER_TILE, rows * glsl::FRAGMENT_BLOCK};
+}
+
+int rasterThreads() {
+    if (const char* env = std::getenv("LP_NUM_THREADS")) {
+        char* end = nullptr;
+        const long n = std::strtol(env, &end, 10);
+        if (end != env && *end == '\0' && n >= 0 && n <= 1024) return int(n);
+    }
+    return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 void PathTracer::allocateImage(int width, int height) {
     if (width == width_ && height == height_ && accumTexture_) return;
     glDeleteTextures(1, &accumTexture_);
     glCreateTextures(GL_TEXTURE_2D, 1, &accumTexture_);
     glTextureStorage2D(accumTexture_, 1, GL_RGBA32F, width, height);
-    // The fragment entry draws into a framebuffer with no attachments, sized here.
-    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
-    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
+    stripTiles_ = options_.entry == TracerEntry::Fragment && options_.balanceTiles
+                             ? fragmentStripTiles(width, height, rasterThreads())
+                             : 0;
+    // The fragment entry draws into a framebuffer with no attachments, sized here to hold the
+    // image or its strip.
+    const glm::ivec2 strip = fragmentStripSize(width, height, stripTiles_);
+    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_WIDTH, std::max(width, strip.x));
+    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, std::max(height, strip.y));
     width_ = width;
     height_ = height;
 }
@@ -151,7 +181,8 @@ void PathTracer::updateSettings(const Scene& scene) {
         .sampleCount = std::uint32_t(std::max(r.spp, 1)),
         .aoDistance = scene.ao.distance,
         .aoRays = scene.ao.rays,
-        .padding = glm::ivec2(0),
+        .fragmentStripTiles = 0,   // set per draw by drawBand
+        .padding = 0,
     };
     glNamedBufferSubData(paramsBuffer_, 0, sizeof(params_), &params_);
     reset();
@@ -213,6 +244,15 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     params_.rpp = rpp;
     glNamedBufferSubData(paramsBuffer_, offsetof(glsl::TracerParams, sampleStart),
                          sizeof(params_.sampleStart) + sizeof(params_.rpp), &params_.sampleStart);
+    // A band (the viewer's, the inspector's row) is drawn as rows of the image, the whole image
+    // of a small one as its strip.
+    const bool band = y > 0 || rows < height_;
+    const int tiles = band ? 0 : stripTiles_;
+    if (params_.fragmentStripTiles != tiles) {
+        params_.fragmentStripTiles = tiles;
+        glNamedBufferSubData(paramsBuffer_, offsetof(glsl::TracerParams, fragmentStripTiles),
+                             sizeof(params_.fragmentStripTiles), &params_.fragmentStripTiles);
+    }
 
     const GLuint zeros[3] = {0, 0, 0};
     glNamedBufferSubData(counterBuffer_, 0, sizeof(zeros), zeros);
@@ -227,8 +267,8 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     glUseProgram(program_->id());
     if (options_.entry == TracerEntry::Fragment) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-        glViewport(0, 0, width_, height_);
-        const bool band = y > 0 || rows < height_;
+        const glm::ivec2 viewport = fragmentStripSize(width_, height_, tiles);
+        glViewport(0, 0, viewport.x, viewport.y);
         if (band) {   // the full-screen triangle, cut to the band's rows
             glEnable(GL_SCISSOR_TEST);
             glScissor(0, y, width_, rows);

@@ -26,7 +26,17 @@ struct TracerOptions {
     ShaderDefines extraDefines;   // names from kTracerDefines (tracer_defines.h), e.g. RAYLAB_DEBUG_VIEWS
     bool specialise = true;       // compile for the scene's features (false: all features on)
     bool cameraRelative = true;   // upload positions relative to the camera (false: world, for tests)
+    bool balanceTiles = true;     // fragment only: draw a small image as a strip (fragment_layout.glsl)
 };
+
+// The strip (fragment_layout.glsl) in which the fragment entry draws a width × height image for
+// `threads` rasteriser threads, as its number of tiles: 0 (none) from 4 tiles per thread on,
+// where llvmpipe's queue of tiles balances itself; else one tile per thread.
+int fragmentStripTiles(int width, int height, int threads);
+// The area drawn, in fragments (width, height): the strip's, or the image's for 0 tiles.
+glm::ivec2 fragmentStripSize(int width, int height, int tiles);
+// llvmpipe's thread count: LP_NUM_THREADS, else the CPUs.
+int rasterThreads();
 
 class PathTracer {
 public:
@@ -124,6 +134,7 @@ private:
     unsigned paramsBuffer_ = 0;     // uniform buffer at BINDING_TRACER_PARAMS_UBO
     int width_ = 0;
     int height_ = 0;
+    int stripTiles_ = 0;   // fragmentStripTiles of the image, 0 when balanceTiles is off
     int defaultRpp_ = 1;
     std::uint64_t samplesPerPixel_ = 0;
     std::uint64_t passes_ = 0;

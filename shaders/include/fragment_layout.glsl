@@ -1,0 +1,31 @@
+// Which pixel a fragment of the fragment entry (trace.frag) traces. llvmpipe hands whole 64×64
+// tiles to its threads, so a small image wastes them: 96×54 is one full tile and one of half its
+// width, and one of two threads idles a third of the pass. Such an image is drawn instead as its
+// 4×4 pixel blocks (a block's pixels stay together, as the rasteriser shades them) dealt in turn
+// to `tiles` tiles side by side, a strip one tile per thread wide: tile t holds blocks t, t +
+// tiles, t + 2·tiles … row by row, so every tile gets an equal share of every part of the image.
+// 0 tiles keeps fragment = pixel. Shared by C++ (path_tracer.cpp chooses the strip) and GLSL.
+#ifndef RAYLAB_FRAGMENT_LAYOUT_GLSL
+#define RAYLAB_FRAGMENT_LAYOUT_GLSL
+#include "compat.glsl"
+RL_NAMESPACE_BEGIN
+
+const int FRAGMENT_BLOCK = 4;                                 // pixels per block side
+const int RASTER_TILE = 64;                                   // llvmpipe's tile side (lp_limits.h TILE_SIZE)
+const int TILE_BLOCKS = RASTER_TILE / FRAGMENT_BLOCK;         // blocks per tile side
+
+// The pixel fragment `frag` traces; outside the image (x or y >= imageSize) for the strip's
+// fragments past the last block.
+RL_FN ivec2 fragmentPixel(ivec2 frag, ivec2 imageSize, int tiles) {
+    if (tiles == 0) return frag;
+    ivec2 block = frag / FRAGMENT_BLOCK;
+    int tile = block.x / TILE_BLOCKS;
+    int inTile = block.y * TILE_BLOCKS + (block.x - tile * TILE_BLOCKS);
+    int index = inTile * tiles + tile;
+    int imageBlocksPerRow = (imageSize.x + FRAGMENT_BLOCK - 1) / FRAGMENT_BLOCK;
+    ivec2 imageBlock = ivec2(index % imageBlocksPerRow, index / imageBlocksPerRow);
+    return imageBlock * FRAGMENT_BLOCK + (frag - block * FRAGMENT_BLOCK);
+}
+
+RL_NAMESPACE_END
+#endif
