@@ -1,7 +1,7 @@
 #version 450 core
-// Fragment entry of the path tracer: a full-screen triangle, one fragment per pixel, drawn into
-// a framebuffer with no attachments; results go to uAccum by imageStore. The scene's data arrives
-// in buffers and uniforms.
+// Fragment entry of the path tracer: a full-screen triangle, one fragment per pixel (a small
+// image's pixels laid out as a strip, fragment_layout.glsl), drawn into a framebuffer with no
+// attachments; results go to uAccum by imageStore. The scene's data arrives in buffers and uniforms.
 // Defines set by the host: the scene's features, every one 0 or 1 (include/features.glsl), and
 // the optional debug and test defines; the one list is src/render/tracer_defines.h.
 #include "../include/path_tracer.glsl"
