@@ -384,94 +384,125 @@ bool survivesRoulette(int bounce, inout vec3 beta, bool delta, inout Sampler smp
     return true;
 }
 
-// Radiance along one camera path (Kajiya 1986). beta is the path throughput: the product of
-// f·|cosθ|/pdf over the bounces so far. With params.nee, each bounce also adds a light sample;
-// emission that a BSDF sample reaches is then weighted so nothing is counted twice.
-vec3 traceRadiance(Ray ray, inout Sampler smp, inout uint rays) {
-    SkyParams sky = SkyParams(params.skyType, params.skyColor, params.skyTop, params.skyBottom);
-    int lightCount = neeLightCount();
-    vec3 radiance = vec3(0.0f);
-    vec3 beta = vec3(1.0f);
-    PrevBounce prev = PrevBounce(0.0f, true, vec3(0.0f));
+// A camera path between bounces (Kajiya 1986): the ray it follows next, its radiance so far, and
+// beta, the path throughput: the product of f·|cosθ|/pdf over the bounces so far.
+struct PathState {
+    Ray ray;
+    vec3 radiance;
+    vec3 beta;
+    PrevBounce prev;
+    int bounce;
 #if RAYLAB_FEATURE_TEXTURES
     // Ray cone (Ray Tracing Gems ch. 20, §20.3.4): the width grows by the spread angle per unit
     // distance; the spread starts at the pixel's and widens at rough bounces (ray_cone.glsl).
-    float coneWidth = 0.0f;
-    float coneSpread = params.camPixelSpread;
+    float coneWidth;
+    float coneSpread;
 #endif
-    for (int bounce = 0;; ++bounce) {
-        Hit hit;
-        ++rays;
-        bool found = intersectScene(ray, hit);
-        RAYLAB_RECORD(recordSegment(bounce, ray, found, hit, beta));
-        RAYLAB_RECORD(recordCounted(bounce, RAYLAB_KEEP_BOUNCE(bounce), RAYLAB_KEEP_BOUNCE(bounce + 1)));
-        if (!found) {
+};
+
+PathState pathStart(Ray ray) {
+    PathState st;
+    st.ray = ray;
+    st.radiance = vec3(0.0f);
+    st.beta = vec3(1.0f);
+    st.prev = PrevBounce(0.0f, true, vec3(0.0f));
+    st.bounce = 0;
+#if RAYLAB_FEATURE_TEXTURES
+    st.coneWidth = 0.0f;
+    st.coneSpread = params.camPixelSpread;
+#endif
+    return st;
+}
+
+// One bounce of a camera path: its ray's hit, the emission found there, the light sample and the
+// BSDF sample that continues the path. True when the path has ended. With params.nee, each
+// bounce also adds a light sample; emission that a BSDF sample reaches is then weighted so
+// nothing is counted twice.
+bool pathStep(inout PathState st, inout Sampler smp, inout uint rays) {
+    SkyParams sky = SkyParams(params.skyType, params.skyColor, params.skyTop, params.skyBottom);
+    int lightCount = neeLightCount();
+    int bounce = st.bounce;
+    Ray ray = st.ray;
+    Hit hit;
+    ++rays;
+    bool found = intersectScene(ray, hit);
+    RAYLAB_RECORD(recordSegment(bounce, ray, found, hit, st.beta));
+    RAYLAB_RECORD(recordCounted(bounce, RAYLAB_KEEP_BOUNCE(bounce), RAYLAB_KEEP_BOUNCE(bounce + 1)));
+    if (!found) {
 #if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
-            break;   // render.stage primary: black sky, as the albedo view
+        return true;   // render.stage primary: black sky, as the albedo view
 #endif
-            vec3 dir = normalize(ray.dir);
-            float w = skyHitWeight(dir, prev, lightCount);
+        vec3 dir = normalize(ray.dir);
+        float w = skyHitWeight(dir, st.prev, lightCount);
 #if RAYLAB_ANALYTIC_LIGHTS
-            // The sky and the discs of distant lights, each weighted: one term, weight folded in.
-            vec3 Lesc = skyLookup(sky, dir) * w + distantLightsSeen(dir, prev, lightCount);
-            RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Lesc);
-            RAYLAB_RECORD(recordEmission(bounce, Lesc, 1.0f));
+        // The sky and the discs of distant lights, each weighted: one term, weight folded in.
+        vec3 Lesc = skyLookup(sky, dir) * w + distantLightsSeen(dir, st.prev, lightCount);
+        RAYLAB_ADD_RADIANCE(st.radiance, bounce, st.beta * Lesc);
+        RAYLAB_RECORD(recordEmission(bounce, Lesc, 1.0f));
 #else
-            RAYLAB_ADD_RADIANCE(radiance, bounce, beta * skyLookup(sky, dir) * w);
-            RAYLAB_RECORD(recordEmission(bounce, skyLookup(sky, dir), w));
+        RAYLAB_ADD_RADIANCE(st.radiance, bounce, st.beta * skyLookup(sky, dir) * w);
+        RAYLAB_RECORD(recordEmission(bounce, skyLookup(sky, dir), w));
 #endif
-            break;
-        }
-        GpuMaterial m = materials[hit.material];
-#if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
-        // render.stage primary: the flat albedo of the first hit is the whole estimate (beta is 1).
-        RAYLAB_ADD_RADIANCE(radiance, bounce, beta * m.albedo.rgb);
-        RAYLAB_RECORD(recordStageAlbedo(bounce, m.albedo.rgb));
-        break;
-#endif
-        vec3 Le = m.emission.rgb;
-#if RAYLAB_FEATURE_TEXTURES
-        coneWidth += coneSpread * hit.t * length(ray.dir);
-        Le *= materialEmissionScale(hit, ray.dir, coneWidth);
-#endif
-        if (emitterBackFace(ray.dir, hit)) Le = vec3(0.0f);
-        if (max(Le.r, max(Le.g, Le.b)) > 0.0f) {
-            float w = surfaceHitWeight(ray, hit, prev, lightCount);
-            RAYLAB_ADD_RADIANCE(radiance, bounce, beta * Le * w);
-            RAYLAB_RECORD(recordEmission(bounce, Le, w));
-        }
-        if (bounce >= params.maxBounces || RAYLAB_STAGE == RAYLAB_STAGE_EMISSION) break;
-
-        BsdfParams bsdf = materialBsdf(m);
-#if RAYLAB_FEATURE_TEXTURES
-        applyMaterialTextures(hit, ray.dir, coneWidth, bsdf);
-#endif
-        ShadingPoint sp = shadingPoint(bsdf, hit, ray.dir);
-        RAYLAB_RECORD(recordShadingFrame(bounce, sp.frame.n));
-#if RAYLAB_NEE
-        vec3 Ld;
-        if (lightCount > 0 && sampleLd(hit, sp, sky, beta, bounce, smp, rays, Ld))
-            RAYLAB_ADD_RADIANCE(radiance, bounce + 1, Ld);
-#endif
-
-        BsdfSample bs = sampleScattering(sp, bounce, smp);
-        vec3 dir = frameToWorld(sp.frame, bs.wi);
-        // f·|cosθ| as the sampler used it (weight × pdf): a second bsdfEval of a narrow GGX lobe
-        // differs from the sampler's by rounding the peak amplifies, and the inspector's columns
-        // must multiply out to the weight the throughput took.
-        RAYLAB_RECORD(recordBsdfSample(bounce, dir, bs.lobe, bsdfLobeProbability(sp.bsdf, sp.wo, bs.lobe),
-                                       bs.weight * bs.pdf, abs(bs.wi.z), bs.weight, bs.pdf, bs.delta));
-        if (bs.lobe == LOBE_NONE || !sidesAgree(sp, bs.wi, dir, hit.normal)) break;
-        beta *= bs.weight;
-#if RAYLAB_FEATURE_TEXTURES
-        coneSpread += rayConeBounceSpread(bs.lobe, bs.delta, sp.bsdf.alpha);
-#endif
-        prev = PrevBounce(bs.pdf, bs.delta, hit.position);
-        RAYLAB_RECORD(recordThroughput(bounce, beta, bs.delta));
-        if (bounce + 1 >= params.rrDepth && !survivesRoulette(bounce, beta, bs.delta, smp)) break;
-        ray = spawnRay(hit, dir);
+        return true;
     }
-    return radiance;
+    GpuMaterial m = materials[hit.material];
+#if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
+    // render.stage primary: the flat albedo of the first hit is the whole estimate (beta is 1).
+    RAYLAB_ADD_RADIANCE(st.radiance, bounce, st.beta * m.albedo.rgb);
+    RAYLAB_RECORD(recordStageAlbedo(bounce, m.albedo.rgb));
+    return true;
+#endif
+    vec3 Le = m.emission.rgb;
+#if RAYLAB_FEATURE_TEXTURES
+    st.coneWidth += st.coneSpread * hit.t * length(ray.dir);
+    Le *= materialEmissionScale(hit, ray.dir, st.coneWidth);
+#endif
+    if (emitterBackFace(ray.dir, hit)) Le = vec3(0.0f);
+    if (max(Le.r, max(Le.g, Le.b)) > 0.0f) {
+        float w = surfaceHitWeight(ray, hit, st.prev, lightCount);
+        RAYLAB_ADD_RADIANCE(st.radiance, bounce, st.beta * Le * w);
+        RAYLAB_RECORD(recordEmission(bounce, Le, w));
+    }
+    if (bounce >= params.maxBounces || RAYLAB_STAGE == RAYLAB_STAGE_EMISSION) return true;
+
+    BsdfParams bsdf = materialBsdf(m);
+#if RAYLAB_FEATURE_TEXTURES
+    applyMaterialTextures(hit, ray.dir, st.coneWidth, bsdf);
+#endif
+    ShadingPoint sp = shadingPoint(bsdf, hit, ray.dir);
+    RAYLAB_RECORD(recordShadingFrame(bounce, sp.frame.n));
+#if RAYLAB_NEE
+    vec3 Ld;
+    if (lightCount > 0 && sampleLd(hit, sp, sky, st.beta, bounce, smp, rays, Ld))
+        RAYLAB_ADD_RADIANCE(st.radiance, bounce + 1, Ld);
+#endif
+
+    BsdfSample bs = sampleScattering(sp, bounce, smp);
+    vec3 dir = frameToWorld(sp.frame, bs.wi);
+    // f·|cosθ| as the sampler used it (weight × pdf): a second bsdfEval of a narrow GGX lobe
+    // differs from the sampler's by rounding the peak amplifies, and the inspector's columns
+    // must multiply out to the weight the throughput took.
+    RAYLAB_RECORD(recordBsdfSample(bounce, dir, bs.lobe, bsdfLobeProbability(sp.bsdf, sp.wo, bs.lobe),
+                                   bs.weight * bs.pdf, abs(bs.wi.z), bs.weight, bs.pdf, bs.delta));
+    if (bs.lobe == LOBE_NONE || !sidesAgree(sp, bs.wi, dir, hit.normal)) return true;
+    st.beta *= bs.weight;
+#if RAYLAB_FEATURE_TEXTURES
+    st.coneSpread += rayConeBounceSpread(bs.lobe, bs.delta, sp.bsdf.alpha);
+#endif
+    st.prev = PrevBounce(bs.pdf, bs.delta, hit.position);
+    RAYLAB_RECORD(recordThroughput(bounce, st.beta, bs.delta));
+    if (bounce + 1 >= params.rrDepth && !survivesRoulette(bounce, st.beta, bs.delta, smp)) return true;
+    st.ray = spawnRay(hit, dir);
+    st.bounce = bounce + 1;
+    return false;
+}
+
+// Radiance along one camera path: its bounces until it ends.
+vec3 traceRadiance(Ray ray, inout Sampler smp, inout uint rays) {
+    PathState st = pathStart(ray);
+    while (!pathStep(st, smp, rays)) {
+    }
+    return st.radiance;
 }
 
 #endif

@@ -15,6 +15,42 @@
 #include RAYLAB_EXERCISE_RUNNING_MEAN   // a pupil's runningMean (exercises/README.md)
 #endif
 
+// A camera ray through a fresh position inside the pixel (box filter), through the lens with DOF.
+Ray cameraSample(CameraBasis cam, ivec2 pixel, inout Sampler smp) {
+    vec2 ndc = (vec2(pixel) + sample2D(smp, SAMPLE_DIM_PIXEL)) / vec2(params.imageSize) * 2.0f - 1.0f;
+#if RAYLAB_FEATURE_DOF
+    return cameraRayThinLens(cam, ndc, sample2D(smp, SAMPLE_DIM_LENS), params.camLensRadius, params.camFocusDistance);
+#else
+    return cameraRay(cam, ndc);
+#endif
+}
+
+#if RAYLAB_DEBUG_MOMENTS
+#define RAYLAB_MOMENTS_ARG , inout DebugMoments moments
+#define RAYLAB_MOMENTS , moments
+#else
+#define RAYLAB_MOMENTS_ARG
+#define RAYLAB_MOMENTS
+#endif
+
+// Sample s's radiance L into the pass's sum; a NaN or infinite one is dropped and counted.
+void addSample(vec3 L, int s, ivec2 pixel, inout vec3 sum, inout uint nonFinite RAYLAB_MOMENTS_ARG) {
+#if RAYLAB_INJECT_NONFINITE
+    // Tests only: every RAYLAB_INJECT_NONFINITE-th sample of a row becomes NaN or +Inf.
+    uint k = params.sampleStart + uint(s) + uint(pixel.x);
+    if (k % uint(RAYLAB_INJECT_NONFINITE) == 0u)
+        L = vec3(uintBitsToFloat((k & 1u) == 0u ? 0x7fc00000u : 0x7f800000u));
+#endif
+#if RAYLAB_DEBUG_MOMENTS
+    debugMomentsAdd(moments, L);
+#endif
+    if (any(isnan(L)) || any(isinf(L))) {
+        ++nonFinite;
+        L = vec3(0.0f);
+    }
+    sum += L;
+}
+
 void tracePixelPass(ivec2 pixel) {
     CameraBasis cam = CameraBasis(params.camOrigin, params.camRight, params.camUp, params.camForward,
                                   params.camTanHalfFovY, params.camAspect);
@@ -24,16 +60,10 @@ void tracePixelPass(ivec2 pixel) {
 #if RAYLAB_DEBUG_MOMENTS
     DebugMoments moments = debugMomentsBegin();
 #endif
+#if RAYLAB_DEBUG_VIEWS || RAYLAB_INSPECT_PATHS
     for (int s = 0; s < params.rpp; ++s) {
         Sampler smp = samplerCreate(uvec2(pixel), params.sampleStart + uint(s), params.seed, params.sampleCount);
-        // A fresh position inside the pixel for every sample (box filter).
-        vec2 ndc = (vec2(pixel) + sample2D(smp, SAMPLE_DIM_PIXEL)) / vec2(params.imageSize) * 2.0f - 1.0f;
-#if RAYLAB_FEATURE_DOF
-        Ray cameraPath = cameraRayThinLens(cam, ndc, sample2D(smp, SAMPLE_DIM_LENS), params.camLensRadius,
-                                           params.camFocusDistance);
-#else
-        Ray cameraPath = cameraRay(cam, ndc);
-#endif
+        Ray cameraPath = cameraSample(cam, pixel, smp);
         RAYLAB_RECORD_PATH_BEGIN(pixel, s, cameraPath);
 #if RAYLAB_DEBUG_VIEWS
         vec3 L = debugSample(cameraPath, smp, rays);
@@ -41,21 +71,26 @@ void tracePixelPass(ivec2 pixel) {
         vec3 L = traceRadiance(cameraPath, smp, rays);
 #endif
         RAYLAB_RECORD_PATH_END(pixel, s, L);
-#if RAYLAB_INJECT_NONFINITE
-        // Tests only: every RAYLAB_INJECT_NONFINITE-th sample of a row becomes NaN or +Inf.
-        uint k = params.sampleStart + uint(s) + uint(pixel.x);
-        if (k % uint(RAYLAB_INJECT_NONFINITE) == 0u)
-            L = vec3(uintBitsToFloat((k & 1u) == 0u ? 0x7fc00000u : 0x7f800000u));
-#endif
-#if RAYLAB_DEBUG_MOMENTS
-        debugMomentsAdd(moments, L);
-#endif
-        if (any(isnan(L)) || any(isinf(L))) {
-            ++nonFinite;
-            L = vec3(0.0f);
-        }
-        sum += L;
+        addSample(L, s, pixel, sum, nonFinite RAYLAB_MOMENTS);
     }
+#else
+    // Path regeneration (Novák, Havran and Dachsbacher 2010, "Path Regeneration for Interactive
+    // Path Tracing"): one loop over the bounces of the pass's rpp samples, so an invocation whose
+    // path ended starts its next sample at once. Invocations run in SIMD batches that last as long
+    // as their longest loop: per sample, a batch would wait for its longest path every time. Each
+    // sample's radiance and the sum's order are as the plain loop has them.
+    int s = 0;
+    Sampler smp = samplerCreate(uvec2(pixel), params.sampleStart, params.seed, params.sampleCount);
+    PathState path = pathStart(cameraSample(cam, pixel, smp));
+    while (s < params.rpp) {
+        if (!pathStep(path, smp, rays)) continue;
+        addSample(path.radiance, s, pixel, sum, nonFinite RAYLAB_MOMENTS);
+        if (++s < params.rpp) {
+            smp = samplerCreate(uvec2(pixel), params.sampleStart + uint(s), params.seed, params.sampleCount);
+            path = pathStart(cameraSample(cam, pixel, smp));
+        }
+    }
+#endif
     // Running mean over all samples: mean_n = mean_m + (sum − k·mean_m) / n, with n = m + k.
 #ifdef RAYLAB_EXERCISE_RUNNING_MEAN
     vec3 old = params.sampleStart > 0u ? imageLoad(uAccum, pixel).rgb : vec3(0.0f);

@@ -54,6 +54,10 @@ struct Curve {
 
 // Relative error levels for "time to reach": RMSE as a fraction of the reference's mean.
 constexpr double kLevels[] = {0.10, 0.05, 0.02};
+// Samples per pixel per pass, as a batch render would take them: a pass of several samples lets
+// a pixel whose path ended start its next one at once (path regeneration, path_tracer.glsl). The
+// checkpoints' passes are cut to land on 1, 2, 4 … spp.
+constexpr int kRpp = 8;
 
 std::string fmt(const char* f, double v) {
     char buf[64];
@@ -202,7 +206,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 run.render.seed = unsigned(seed + 1);
                 tracer.setScene(run);
                 tracer.renderPass(1);   // warm-up: shader JIT stays out of the curve
-                curves.push_back({"raylab", seed + 1, runConvergence(tracer, 1, std::uint64_t(mode.maxSpp), reference.mean)});
+                curves.push_back({"raylab", seed + 1, runConvergence(tracer, kRpp, std::uint64_t(mode.maxSpp), reference.mean)});
                 for (const auto& [variantName, overrides] : s.variants) {
                     std::vector<std::string> settings = size;
                     settings.insert(settings.end(), overrides.begin(), overrides.end());
@@ -211,7 +215,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     tracer.setScene(variant);
                     tracer.renderPass(1);
                     curves.push_back({"raylab:" + variantName, seed + 1,
-                                      runConvergence(tracer, 1, std::uint64_t(mode.maxSpp), reference.mean)});
+                                      runConvergence(tracer, kRpp, std::uint64_t(mode.maxSpp), reference.mean)});
                 }
             }
         } catch (const std::exception& e) {
@@ -378,7 +382,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                      " min built references (cached in the reference folder for later runs)"
                : std::string(" min, every reference read from the cache"))
        << "\n- image: " << mode.width << "×" << mode.height
-       << ", raylab checkpoints at 1, 2, 4 … " << mode.maxSpp << " spp, rpp 1, time = tracing only; Cycles "
+       << ", raylab checkpoints at 1, 2, 4 … " << mode.maxSpp << " spp, rpp " << kRpp << ", time = tracing only; Cycles "
        << (peerReady ? "3.4 (CPU, " + std::to_string(o.threads) + " threads, no denoising), one Blender run per sample count, "
                        "time = its render call" +
                        (mode.peerTimingRuns > 1 ? " (median of " + std::to_string(mode.peerTimingRuns) + " runs)"
