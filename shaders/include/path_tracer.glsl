@@ -15,6 +15,11 @@
 #include RAYLAB_EXERCISE_RUNNING_MEAN   // a pupil's runningMean (exercises/README.md)
 #endif
 
+// The sampler of the pass's sample s of a pixel.
+Sampler passSampler(ivec2 pixel, int s) {
+    return samplerCreate(uvec2(pixel), params.sampleStart + uint(s), params.seed, params.sampleCount);
+}
+
 // A camera ray through a fresh position inside the pixel (box filter), through the lens with DOF.
 Ray cameraSample(CameraBasis cam, ivec2 pixel, inout Sampler smp) {
     vec2 ndc = (vec2(pixel) + sample2D(smp, SAMPLE_DIM_PIXEL)) / vec2(params.imageSize) * 2.0f - 1.0f;
@@ -62,7 +67,7 @@ void tracePixelPass(ivec2 pixel) {
 #endif
 #if RAYLAB_DEBUG_VIEWS || RAYLAB_INSPECT_PATHS
     for (int s = 0; s < params.rpp; ++s) {
-        Sampler smp = samplerCreate(uvec2(pixel), params.sampleStart + uint(s), params.seed, params.sampleCount);
+        Sampler smp = passSampler(pixel, s);
         Ray cameraPath = cameraSample(cam, pixel, smp);
         RAYLAB_RECORD_PATH_BEGIN(pixel, s, cameraPath);
 #if RAYLAB_DEBUG_VIEWS
@@ -80,13 +85,13 @@ void tracePixelPass(ivec2 pixel) {
     // as their longest loop: per sample, a batch would wait for its longest path every time. Each
     // sample's radiance and the sum's order are as the plain loop has them.
     int s = 0;
-    Sampler smp = samplerCreate(uvec2(pixel), params.sampleStart, params.seed, params.sampleCount);
+    Sampler smp = passSampler(pixel, 0);
     PathState path = pathStart(cameraSample(cam, pixel, smp));
     while (s < params.rpp) {
         if (!pathStep(path, smp, rays)) continue;
         addSample(path.radiance, s, pixel, sum, nonFinite RAYLAB_MOMENTS);
         if (++s < params.rpp) {
-            smp = samplerCreate(uvec2(pixel), params.sampleStart + uint(s), params.seed, params.sampleCount);
+            smp = passSampler(pixel, s);
             path = pathStart(cameraSample(cam, pixel, smp));
         }
     }

@@ -557,25 +557,22 @@ std::string blenderScript(const Scene& scene, const fs::path& embeddedDir) {
     py << "settings(" << r.width << ", " << r.height << ", " << std::max(r.maxBounces - 1, 0) << ", " << r.seed << ")\n";
     // A mesh whose emission is one-sided takes its emissive materials as variants that mask the
     // back face ("mat<i>f"); every other object shares "mat<i>".
+    const auto frontOnly = [&](const Mesh& mesh, int mat) {
+        if (mat < 0 || std::size_t(mat) >= scene.materials.size()) return false;
+        const Material& m = scene.materials[std::size_t(mat)];
+        const glm::vec3 L = m.radiance();
+        return emitsFrontOnly(mesh, m) && std::max({L.r, L.g, L.b}) > 0.0f;
+    };
     std::vector<bool> frontVariant(scene.materials.size(), false);
-    for (const Mesh& mesh : scene.meshes) {
+    for (const Mesh& mesh : scene.meshes)
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
             const int mat = triangleMaterial(mesh, t);
-            if (mat < 0 || std::size_t(mat) >= scene.materials.size()) continue;
-            const Material& m = scene.materials[std::size_t(mat)];
-            const glm::vec3 L = m.radiance();
-            if (emitsFrontOnly(mesh, m) && std::max({L.r, L.g, L.b}) > 0.0f) frontVariant[std::size_t(mat)] = true;
+            if (frontOnly(mesh, mat)) frontVariant[std::size_t(mat)] = true;
         }
-    }
     const auto meshMaterial = [&](const Mesh& mesh, int mat) {
-        const bool front = mat >= 0 && std::size_t(mat) < scene.materials.size() && frontVariant[std::size_t(mat)] &&
-                           emitsFrontOnly(mesh, scene.materials[std::size_t(mat)]);
-        return "mat" + std::to_string(mat) + (front ? "f" : "");
+        return "mat" + std::to_string(mat) + (frontOnly(mesh, mat) ? "f" : "");
     };
-    for (size_t k = 0; k < 2 * scene.materials.size(); ++k) {
-        const size_t i = k % scene.materials.size();
-        const bool front = k >= scene.materials.size();
-        if (front && !frontVariant[i]) continue;
+    const auto writeMaterial = [&](size_t i, bool front) {
         const Material& m = scene.materials[i];
         py << "mat" << i << (front ? "f" : "") << " = material(" << pyString(front ? m.name + " (front)" : m.name) << ", ";
         if (!hasTexture(m)) {
@@ -600,7 +597,10 @@ std::string blenderScript(const Scene& scene, const fs::path& embeddedDir) {
         }
         if (front) py << ", front_only=True";
         py << ")\n";
-    }
+    };
+    for (size_t i = 0; i < scene.materials.size(); ++i) writeMaterial(i, false);
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (frontVariant[i]) writeMaterial(i, true);
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
         py << "sphere(\"sphere" << i << "\", " << point(s.center) << ", " << num(s.radius) << ", mat"
