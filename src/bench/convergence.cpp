@@ -75,6 +75,33 @@ double convergenceSlope(const std::vector<Checkpoint>& curve) {
     return sxx > 0 ? sxy / sxx : 0.0;
 }
 
+TimeToErrorGoal timeToErrorGoal(const std::vector<Checkpoint>& raylab, double raylabStartup,
+                                const std::vector<Checkpoint>& peer, double raylabTarget, double peerTarget,
+                                double goal) {
+    using V = TimeToErrorGoal::Verdict;
+    using B = TimeToErrorGoal::Bound;
+    TimeToErrorGoal g;
+    const double tr = timeToReach(raylab, raylabTarget);
+    g.peerSeconds = timeToReach(peer, peerTarget);
+    if (tr >= 0.0) g.raylabSeconds = tr + raylabStartup;
+    if (g.raylabSeconds > 0.0 && g.peerSeconds >= 0.0) {
+        g.bound = B::Exact;
+        g.ratio = g.peerSeconds / g.raylabSeconds;
+        g.verdict = g.ratio >= goal ? V::Met : V::NotMet;
+    } else if (g.raylabSeconds > 0.0 && !peer.empty()) {
+        // The peer needs more samples than its longest run, which took at least this long.
+        g.bound = B::AtLeast;
+        g.ratio = peer.back().seconds / g.raylabSeconds;
+        if (g.ratio >= goal) g.verdict = V::Met;
+    } else if (g.peerSeconds >= 0.0 && !raylab.empty()) {
+        // raylab's curve is progressive: it gets there after its last checkpoint, if at all.
+        g.bound = B::AtMost;
+        g.ratio = g.peerSeconds / (raylab.back().seconds + raylabStartup);
+        if (g.ratio < goal) g.verdict = V::NotMet;
+    }
+    return g;
+}
+
 PeerMismatch peerMismatch(const Image& raylabReference, const Image& peerReference) {
     PeerMismatch m;
     m.raylabMean = imageMean(raylabReference);

@@ -31,6 +31,24 @@ double efficiency(const Checkpoint& c);
 // Least-squares slope of log RMSE against log spp (−0.5 for an unbiased estimator).
 double convergenceSlope(const std::vector<Checkpoint>& curve);
 
+// The time-to-error goal at one error level: raylab's time to reach it, its start-up included, is
+// at most 1/goal of the peer's whole run (issue 13). Both curves reach the level: the ratio is
+// measured. One does not: its time lies past its last checkpoint, so the ratio is a bound, and
+// the goal is decided only when that bound settles it.
+struct TimeToErrorGoal {
+    enum class Verdict { Met, NotMet, Open };
+    enum class Bound { Exact, AtLeast, AtMost, None };
+    Verdict verdict = Verdict::Open;
+    Bound bound = Bound::None;
+    double ratio = 0.0;            // peer / raylab, or the bound (0 when neither reaches)
+    double raylabSeconds = -1.0;   // start-up included; -1 when not reached
+    double peerSeconds = -1.0;     // -1 when not reached
+};
+
+TimeToErrorGoal timeToErrorGoal(const std::vector<Checkpoint>& raylab, double raylabStartup,
+                                const std::vector<Checkpoint>& peer, double raylabTarget, double peerTarget,
+                                double goal);
+
 // A peer scene whose two references' means differ by more than this fraction draws another image
 // than raylab's: its times to error compare different integrals, so the summary marks it
 // approximate and leaves it out of the time-to-error goal.

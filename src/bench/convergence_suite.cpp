@@ -54,6 +54,9 @@ struct Curve {
 
 // Relative error levels for "time to reach": RMSE as a fraction of the reference's mean.
 constexpr double kLevels[] = {0.10, 0.05, 0.02};
+// The time-to-error goal: at these levels, Cycles' run takes at least kGoalRatio × raylab's.
+constexpr double kGoalLevels[] = {0.05, 0.02};
+constexpr double kGoalRatio = 3.0;
 // Samples per pixel per pass, as a batch render would take them: a pass of several samples lets
 // a pixel whose path ended start its next one at once (path regeneration, path_tracer.glsl). The
 // checkpoints' passes are cut to land on 1, 2, 4 … spp.
@@ -157,7 +160,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
     summary << " |\n|---|---|---|---|---|---|---|---|---";
     for (size_t i = 0; i < std::size(kLevels); ++i) summary << "|---";
     summary << "|\n";
-    std::ostringstream ratios;
+    std::ostringstream ratios, goals;
     std::vector<std::pair<std::string, PeerMismatch>> mismatches;
 
     for (const SuiteScene& s : scenes) {
@@ -342,23 +345,41 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                    << fmt("%.3g", curves.front().points.back().seconds * 1e3 / double(curves.front().points.back().spp))
                    << " ms per sample per pixel after a one-off startup of " << fmt("%.3g", startupSeconds)
                    << " s (scene load and shader compile)\n";
-            for (double l : kLevels) {
-                const double tr = timeToReach(curves.front().points, l * refMean);
-                const double tc = timeToReach(curves.back().points, l * imageMean(peerReference.mean));
-                if (tr > 0 && tc > 0) {
-                    ratios << "- " << s.name << (mismatch.approximate ? " (approximate)" : "") << ", RMSE ≤ "
-                           << int(l * 100) << "% of the mean: Cycles "
-                           << fmt("%.3g", tc) << " s, raylab " << fmt("%.3g", tr) << " s: Cycles/raylab "
-                           << fmt("%.2f", tc / tr) << "× whole runs, ";
-                    // The sampling part is the run less the fitted fixed cost; when that is not
-                    // clearly above zero the fit cannot tell it (the run is all fixed cost).
-                    const double tcSampling = tc - fixed;
-                    if (perSample > 0.0 && tcSampling > 0.1 * tc)
-                        ratios << fmt("%.2f", tcSampling / tr) << "× sampling only (" << fmt("%.3g", tcSampling)
-                               << " s of Cycles' sampling)\n";
-                    else
-                        ratios << "sampling only not resolved (Cycles' run is mostly its fixed cost)\n";
-                }
+            // The goal's levels, raylab's start-up included (the convergence table's times are
+            // tracing only).
+            for (double l : kGoalLevels) {
+                const TimeToErrorGoal g = timeToErrorGoal(curves.front().points, startupSeconds, curves.back().points,
+                                                          l * refMean, l * imageMean(peerReference.mean), kGoalRatio);
+                const auto& peerPts = curves.back().points;
+                goals << "| " << s.name << " | " << int(l * 100) << " % | "
+                      << (g.raylabSeconds > 0.0 ? fmt("%.3g", g.raylabSeconds)
+                                                : "not in " + std::to_string(curves.front().points.back().spp) + " spp")
+                      << " | "
+                      << (g.peerSeconds >= 0.0 ? fmt("%.3g", g.peerSeconds)
+                                               : "not in " + std::to_string(peerPts.back().spp) + " spp (" +
+                                                     fmt("%.3g", peerPts.back().seconds) + " s)")
+                      << " | ";
+                using B = TimeToErrorGoal::Bound;
+                goals << (g.bound == B::Exact     ? fmt("%.2f×", g.ratio)
+                          : g.bound == B::AtLeast ? fmt("> %.2f×", g.ratio)
+                          : g.bound == B::AtMost  ? fmt("< %.2f×", g.ratio)
+                                                  : std::string("—"))
+                      << " | ";
+                // The sampling part is Cycles' run less the fitted fixed cost, against raylab's
+                // tracing alone; when that part is not clearly above zero the fit cannot tell it.
+                const double tcSampling = g.peerSeconds - fixed;
+                const double trTracing = g.raylabSeconds - startupSeconds;
+                goals << (g.bound == B::Exact && perSample > 0.0 && tcSampling > 0.1 * g.peerSeconds
+                              ? fmt("%.2f×", tcSampling / trTracing)
+                              : std::string("—"))
+                      << " | ";
+                using V = TimeToErrorGoal::Verdict;
+                goals << (mismatch.approximate      ? std::string("approximate scene: out of the goal")
+                          : g.verdict == V::Met     ? std::string("met")
+                          : g.verdict == V::NotMet ? std::string("not met")
+                          : g.bound == B::None      ? std::string("open: neither reached it")
+                                                    : std::string("open: the bound does not decide it"))
+                      << " |\n";
             }
         }
         csv.flush();
@@ -391,6 +412,15 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
        << "\n- slope: log–log slope of RMSE against spp (−0.5 when unbiased); efficiency at the last checkpoint\n\n"
        << summary.str();
     if (!ratios.str().empty()) md << "\n## raylab and Cycles\n\n" << ratios.str();
+    if (!goals.str().empty())
+        md << "\n### Time-to-error goal\n\nraylab's time to the error level, its start-up (scene load, shader "
+              "compile) included, against Cycles' render call, its scene build included; the goal is "
+           << fmt("%.0f", kGoalRatio)
+           << "× or more. Where one renderer does not reach the level, its time lies past its last point "
+              "and the ratio is a bound; sampling only: Cycles' run less its fitted fixed cost against "
+              "raylab's tracing.\n\n| scene | RMSE ≤ (of the mean) | raylab s | Cycles s | Cycles/raylab | "
+              "sampling only | goal |\n|---|---|---|---|---|---|---|\n"
+           << goals.str();
     if (!mismatches.empty())
         md << "\n### Reference mismatch\n\nMean difference: (Cycles − raylab) / raylab's mean over the two "
               "references; an approximate scene compares different images.\n\n"

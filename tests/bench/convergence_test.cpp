@@ -90,6 +90,52 @@ TEST(BenchConvergence, TimeToReachTakesTheCheapestRunThatGetsThere) {
     EXPECT_LE(timeToReach(curve, 0.6), timeToReach(curve, 0.25));
 }
 
+TEST(BenchConvergence, TimeToErrorGoalIsARatioWhenBothReachAndABoundOtherwise) {
+    // raylab: RMSE = 1/sqrt(spp) at 1 ms per spp up to 1024 spp, 0.05 s start-up. Peer: the same
+    // RMSE at 10 ms per spp up to 64 spp (separate runs).
+    const auto curve = [](std::uint64_t maxSpp, double secondsPerSpp) {
+        std::vector<Checkpoint> c;
+        for (std::uint64_t spp = 1; spp <= maxSpp; spp *= 2) {
+            Checkpoint p;
+            p.spp = spp;
+            p.seconds = double(spp) * secondsPerSpp;
+            p.error.rmse = 1.0 / std::sqrt(double(spp));
+            c.push_back(p);
+        }
+        return c;
+    };
+    using V = TimeToErrorGoal::Verdict;
+    using B = TimeToErrorGoal::Bound;
+    const auto raylab = curve(1024, 1e-3), peer = curve(64, 1e-2);
+    // Both reach RMSE 0.25 at 16 spp: peer 0.16 s, raylab 0.016 + 0.05 s (start-up counts).
+    TimeToErrorGoal g = timeToErrorGoal(raylab, 0.05, peer, 0.25, 0.25, 3.0);
+    EXPECT_EQ(g.bound, B::Exact);
+    EXPECT_NEAR(g.raylabSeconds, 0.066, 1e-9);
+    EXPECT_NEAR(g.ratio, 0.16 / 0.066, 1e-9);
+    EXPECT_EQ(g.verdict, V::NotMet);
+    EXPECT_EQ(timeToErrorGoal(raylab, 0.0, peer, 0.25, 0.25, 3.0).verdict, V::Met);   // 10× without it
+    // Only raylab reaches RMSE 1/32 (1024 spp, 1.024 + 0.05 s); the peer's longest run took 0.64 s:
+    // the ratio is at least 0.64 / 1.074, which does not decide a goal of 3, but decides 0.5.
+    g = timeToErrorGoal(raylab, 0.05, peer, 1.0 / 32.0, 1.0 / 32.0, 3.0);
+    EXPECT_EQ(g.bound, B::AtLeast);
+    EXPECT_LT(g.peerSeconds, 0.0);
+    EXPECT_NEAR(g.ratio, 0.64 / 1.074, 1e-9);
+    EXPECT_EQ(g.verdict, V::Open);
+    EXPECT_EQ(timeToErrorGoal(raylab, 0.05, peer, 1.0 / 32.0, 1.0 / 32.0, 0.5).verdict, V::Met);
+    // Only the peer reaches RMSE 1/8 (64 spp, 0.64 s) where raylab stops at 16 spp (0.016 + 0.05
+    // s): raylab's time is later, so the ratio is at most 0.64 / 0.066 — below a goal of 20.
+    const auto shortRaylab = curve(16, 1e-3);
+    g = timeToErrorGoal(shortRaylab, 0.05, peer, 1.0 / 8.0, 1.0 / 8.0, 20.0);
+    EXPECT_EQ(g.bound, B::AtMost);
+    EXPECT_NEAR(g.ratio, 0.64 / 0.066, 1e-9);
+    EXPECT_EQ(g.verdict, V::NotMet);
+    EXPECT_EQ(timeToErrorGoal(shortRaylab, 0.05, peer, 1.0 / 8.0, 1.0 / 8.0, 3.0).verdict, V::Open);
+    // Neither reaches it: nothing is decided.
+    g = timeToErrorGoal(shortRaylab, 0.05, peer, 0.01, 0.01, 3.0);
+    EXPECT_EQ(g.bound, B::None);
+    EXPECT_EQ(g.verdict, V::Open);
+}
+
 TEST(BenchReference, CachedReferenceIsReusedAndRebuiltWhenItsKeyChanges) {
     const fs::path base = scratch() / "ref";
     fs::remove(base.string() + ".json");
