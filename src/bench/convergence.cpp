@@ -102,6 +102,13 @@ TimeToErrorGoal timeToErrorGoal(const std::vector<Checkpoint>& raylab, double ra
     return g;
 }
 
+bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector<Checkpoint>& peer,
+                        const std::vector<double>& levels, double raylabMean, double peerMean) {
+    for (double l : levels)
+        if (timeToReach(raylab, l * raylabMean) >= 0.0 && timeToReach(peer, l * peerMean) < 0.0) return true;
+    return false;
+}
+
 PeerMismatch peerMismatch(const Image& raylabReference, const Image& peerReference) {
     PeerMismatch m;
     m.raylabMean = imageMean(raylabReference);

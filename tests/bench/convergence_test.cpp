@@ -136,6 +136,32 @@ TEST(BenchConvergence, TimeToErrorGoalIsARatioWhenBothReachAndABoundOtherwise) {
     EXPECT_EQ(g.verdict, V::Open);
 }
 
+TEST(BenchConvergence, PeerCurveGoesOnOnlyWhereRaylabReachedALevelThePeerHasNot) {
+    // RMSE = scale/sqrt(spp) against a mean of 1; levels 5 % and 2 %.
+    const auto curve = [](std::uint64_t maxSpp, double scale) {
+        std::vector<Checkpoint> c;
+        for (std::uint64_t spp = 1; spp <= maxSpp; spp *= 2) {
+            Checkpoint p;
+            p.spp = spp;
+            p.seconds = double(spp) * 1e-3;
+            p.error.rmse = scale / std::sqrt(double(spp));
+            c.push_back(p);
+        }
+        return c;
+    };
+    const std::vector<double> levels = {0.05, 0.02};
+    const auto raylab = curve(1024, 0.5);   // 5 % at 100 spp, 2 % at 625 spp: both reached
+    EXPECT_TRUE(peerCurveUndecided(raylab, curve(64, 0.5), levels, 1.0, 1.0));     // peer: neither yet
+    EXPECT_TRUE(peerCurveUndecided(raylab, curve(256, 0.5), levels, 1.0, 1.0));    // peer: 5 % only
+    EXPECT_FALSE(peerCurveUndecided(raylab, curve(1024, 0.5), levels, 1.0, 1.0));  // peer: both
+    // raylab reached neither: more peer samples could not give a ratio.
+    EXPECT_FALSE(peerCurveUndecided(curve(64, 0.5), curve(64, 0.5), levels, 1.0, 1.0));
+    // Each renderer's level is of its own reference's mean: a peer mean twice as large halves
+    // the peer's relative error, so its 64 spp already reach 5 %, not 2 %.
+    EXPECT_TRUE(peerCurveUndecided(raylab, curve(64, 0.5), levels, 1.0, 2.0));
+    EXPECT_FALSE(peerCurveUndecided(raylab, curve(256, 0.5), levels, 1.0, 2.0));
+}
+
 TEST(BenchReference, CachedReferenceIsReusedAndRebuiltWhenItsKeyChanges) {
     const fs::path base = scratch() / "ref";
     fs::remove(base.string() + ".json");
@@ -498,6 +524,17 @@ TEST(BenchConvergenceCli, BadSuiteNamesTheFileAndTheKey) {
     ASSERT_TRUE(WIFEXITED(raw));
     EXPECT_EQ(WEXITSTATUS(raw), 1) << log.str();
     EXPECT_NE(log.str().find("bad_suite.json: error: modes.quick.peer_timing_runs must be at least 1"), std::string::npos)
+        << log.str();
+    EXPECT_FALSE(fs::exists(dir / "bad_out" / "quick" / "summary.md"));
+    // peer_extend_spp is where Cycles' curve may go on to: below peer_max_spp it is refused too.
+    std::ofstream(dir / "bad_suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, "seeds": 1,
+        "reference_spp": 4, "reference_batches": 2, "peer_max_spp": 8, "peer_extend_spp": 4}},
+        "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
+    ASSERT_TRUE(WIFEXITED(std::system(cmd.c_str())));
+    log.str("");
+    log << std::ifstream(dir / "bad_log.txt").rdbuf();
+    EXPECT_NE(log.str().find("bad_suite.json: error: modes.quick.peer_extend_spp must be at least peer_max_spp"),
+              std::string::npos)
         << log.str();
     EXPECT_FALSE(fs::exists(dir / "bad_out" / "quick" / "summary.md"));
 }
