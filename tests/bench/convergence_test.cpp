@@ -36,6 +36,19 @@ Image constant(int w, int h, float v) {
     return im;
 }
 
+// Checkpoints at 1, 2, 4 … maxSpp with RMSE = scale/sqrt(spp) and secondsPerSpp per sample.
+std::vector<Checkpoint> sqrtCurve(std::uint64_t maxSpp, double secondsPerSpp, double scale = 1.0) {
+    std::vector<Checkpoint> c;
+    for (std::uint64_t spp = 1; spp <= maxSpp; spp *= 2) {
+        Checkpoint p;
+        p.spp = spp;
+        p.seconds = double(spp) * secondsPerSpp;
+        p.error.rmse = scale / std::sqrt(double(spp));
+        c.push_back(p);
+    }
+    return c;
+}
+
 } // namespace
 
 TEST(BenchErrorMetrics, MseRmseAndRelMse) {
@@ -93,17 +106,7 @@ TEST(BenchConvergence, TimeToReachTakesTheCheapestRunThatGetsThere) {
 TEST(BenchConvergence, TimeToErrorGoalIsARatioWhenBothReachAndABoundOtherwise) {
     // raylab: RMSE = 1/sqrt(spp) at 1 ms per spp up to 1024 spp, 0.05 s start-up. Peer: the same
     // RMSE at 10 ms per spp up to 64 spp (separate runs).
-    const auto curve = [](std::uint64_t maxSpp, double secondsPerSpp) {
-        std::vector<Checkpoint> c;
-        for (std::uint64_t spp = 1; spp <= maxSpp; spp *= 2) {
-            Checkpoint p;
-            p.spp = spp;
-            p.seconds = double(spp) * secondsPerSpp;
-            p.error.rmse = 1.0 / std::sqrt(double(spp));
-            c.push_back(p);
-        }
-        return c;
-    };
+    const auto curve = [](std::uint64_t maxSpp, double secondsPerSpp) { return sqrtCurve(maxSpp, secondsPerSpp); };
     using V = TimeToErrorGoal::Verdict;
     using B = TimeToErrorGoal::Bound;
     const auto raylab = curve(1024, 1e-3), peer = curve(64, 1e-2);
@@ -138,17 +141,7 @@ TEST(BenchConvergence, TimeToErrorGoalIsARatioWhenBothReachAndABoundOtherwise) {
 
 TEST(BenchConvergence, PeerCurveGoesOnOnlyWhereRaylabReachedALevelThePeerHasNot) {
     // RMSE = scale/sqrt(spp) against a mean of 1; levels 5 % and 2 %.
-    const auto curve = [](std::uint64_t maxSpp, double scale) {
-        std::vector<Checkpoint> c;
-        for (std::uint64_t spp = 1; spp <= maxSpp; spp *= 2) {
-            Checkpoint p;
-            p.spp = spp;
-            p.seconds = double(spp) * 1e-3;
-            p.error.rmse = scale / std::sqrt(double(spp));
-            c.push_back(p);
-        }
-        return c;
-    };
+    const auto curve = [](std::uint64_t maxSpp, double scale) { return sqrtCurve(maxSpp, 1e-3, scale); };
     const std::vector<double> levels = {0.05, 0.02};
     const auto raylab = curve(1024, 0.5);   // 5 % at 100 spp, 2 % at 625 spp: both reached
     EXPECT_TRUE(peerCurveUndecided(raylab, curve(64, 0.5), levels, 1.0, 1.0));     // peer: neither yet
