@@ -63,9 +63,9 @@ constexpr double kGoalLevels[] = {0.05, 0.02};
 constexpr double kGoalRatio = 3.0;
 // Samples per pixel per pass, as a batch render would take them: a pass of several samples lets
 // a pixel whose path ended start its next one at once (path regeneration, path_tracer.glsl). The
-// checkpoints' passes are cut to land on 1, 2, 4 … spp. 16 is the most one draw takes
-// (kSamplesPerDraw); against 8 it cut the Cornell box's 512 spp at 96×54 from 2.07 to 2.01 s.
-constexpr int kRpp = 16;
+// checkpoints' passes are cut to land on 1, 2, 4 … spp. As many as one draw takes: fewer cost
+// more time per sample (bench/throughput.md).
+constexpr int kRpp = PathTracer::kSamplesPerDraw;
 
 std::string fmt(const char* f, double v) {
     char buf[64];
