@@ -1,6 +1,7 @@
-"""Where a scene's error lies, for bench/samplers.md: the MSE of SEEDS renders against the quick
-benchmark's cached reference, per pixel, and the share of it held by the brightest pixels of the
-reference (the emitters seen directly and their edges) and by the worst 1 % of the pixels.
+"""Where a scene's error lies, for bench/samplers.md: the MSE of a few seeds' renders (RUNS)
+against the quick benchmark's cached reference, per pixel, and the share of it held by the
+brightest pixels of the reference (the emitters seen directly and their edges) and by the worst
+1 % of the pixels.
 Run from the repository root after building and after `raylab-bench convergence --mode quick`
 has cached the reference:
     PYTHONPATH=build/python nice -n 5 /usr/bin/python3 bench/error_by_pixel.py [SCENE_NAME SCENE_FILE]

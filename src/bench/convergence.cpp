@@ -103,7 +103,7 @@ TimeToErrorGoal timeToErrorGoal(const std::vector<Checkpoint>& raylab, double ra
 }
 
 bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector<Checkpoint>& peer,
-                        const std::vector<double>& levels, double raylabMean, double peerMean) {
+                        std::span<const double> levels, double raylabMean, double peerMean) {
     for (double l : levels)
         if (timeToReach(raylab, l * raylabMean) >= 0.0 && timeToReach(peer, l * peerMean) < 0.0) return true;
     return false;

@@ -5,6 +5,7 @@
 #include "render/path_tracer.h"
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,7 @@ TimeToErrorGoal timeToErrorGoal(const std::vector<Checkpoint>& raylab, double ra
 // Whether a peer's curve should go on past its planned last point: at some goal level raylab's
 // curve reached, the peer's has not, so the goal would get only a bound there.
 bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector<Checkpoint>& peer,
-                        const std::vector<double>& levels, double raylabMean, double peerMean);
+                        std::span<const double> levels, double raylabMean, double peerMean);
 
 // A peer scene whose two references' means differ by more than this fraction draws another image
 // than raylab's: its times to error compare different integrals, so the summary marks it

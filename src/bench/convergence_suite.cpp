@@ -270,10 +270,9 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 // Each point is a separate Blender run whose time jitters: the point's time is
                 // the median of peerTimingRuns runs, its error that of the first.
                 Curve c{"cycles", 1, {}};
-                const std::vector<double> goalLevels(std::begin(kGoalLevels), std::end(kGoalLevels));
                 for (int spp = 1; spp <= mode.peerExtendSpp; spp *= 2) {
                     if (spp > mode.peerMaxSpp &&
-                        !peerCurveUndecided(curves.front().points, c.points, goalLevels, imageMean(reference.mean),
+                        !peerCurveUndecided(curves.front().points, c.points, kGoalLevels, imageMean(reference.mean),
                                             imageMean(peerReference.mean)))
                         break;
                     const CyclesRun r = runCycles(script, spp, o.threads, 1, work);

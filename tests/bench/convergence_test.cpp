@@ -106,10 +106,9 @@ TEST(BenchConvergence, TimeToReachTakesTheCheapestRunThatGetsThere) {
 TEST(BenchConvergence, TimeToErrorGoalIsARatioWhenBothReachAndABoundOtherwise) {
     // raylab: RMSE = 1/sqrt(spp) at 1 ms per spp up to 1024 spp, 0.05 s start-up. Peer: the same
     // RMSE at 10 ms per spp up to 64 spp (separate runs).
-    const auto curve = [](std::uint64_t maxSpp, double secondsPerSpp) { return sqrtCurve(maxSpp, secondsPerSpp); };
     using V = TimeToErrorGoal::Verdict;
     using B = TimeToErrorGoal::Bound;
-    const auto raylab = curve(1024, 1e-3), peer = curve(64, 1e-2);
+    const auto raylab = sqrtCurve(1024, 1e-3), peer = sqrtCurve(64, 1e-2);
     // Both reach RMSE 0.25 at 16 spp: peer 0.16 s, raylab 0.016 + 0.05 s (start-up counts).
     TimeToErrorGoal g = timeToErrorGoal(raylab, 0.05, peer, 0.25, 0.25, 3.0);
     EXPECT_EQ(g.bound, B::Exact);
@@ -127,7 +126,7 @@ TEST(BenchConvergence, TimeToErrorGoalIsARatioWhenBothReachAndABoundOtherwise) {
     EXPECT_EQ(timeToErrorGoal(raylab, 0.05, peer, 1.0 / 32.0, 1.0 / 32.0, 0.5).verdict, V::Met);
     // Only the peer reaches RMSE 1/8 (64 spp, 0.64 s) where raylab stops at 16 spp (0.016 + 0.05
     // s): raylab's time is later, so the ratio is at most 0.64 / 0.066 — below a goal of 20.
-    const auto shortRaylab = curve(16, 1e-3);
+    const auto shortRaylab = sqrtCurve(16, 1e-3);
     g = timeToErrorGoal(shortRaylab, 0.05, peer, 1.0 / 8.0, 1.0 / 8.0, 20.0);
     EXPECT_EQ(g.bound, B::AtMost);
     EXPECT_NEAR(g.ratio, 0.64 / 0.066, 1e-9);
@@ -141,18 +140,17 @@ TEST(BenchConvergence, TimeToErrorGoalIsARatioWhenBothReachAndABoundOtherwise) {
 
 TEST(BenchConvergence, PeerCurveGoesOnOnlyWhereRaylabReachedALevelThePeerHasNot) {
     // RMSE = scale/sqrt(spp) against a mean of 1; levels 5 % and 2 %.
-    const auto curve = [](std::uint64_t maxSpp, double scale) { return sqrtCurve(maxSpp, 1e-3, scale); };
-    const std::vector<double> levels = {0.05, 0.02};
-    const auto raylab = curve(1024, 0.5);   // 5 % at 100 spp, 2 % at 625 spp: both reached
-    EXPECT_TRUE(peerCurveUndecided(raylab, curve(64, 0.5), levels, 1.0, 1.0));     // peer: neither yet
-    EXPECT_TRUE(peerCurveUndecided(raylab, curve(256, 0.5), levels, 1.0, 1.0));    // peer: 5 % only
-    EXPECT_FALSE(peerCurveUndecided(raylab, curve(1024, 0.5), levels, 1.0, 1.0));  // peer: both
+    const double levels[] = {0.05, 0.02};
+    const auto raylab = sqrtCurve(1024, 1e-3, 0.5);   // 5 % at 100 spp, 2 % at 625 spp: both reached
+    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(64, 1e-3, 0.5), levels, 1.0, 1.0));     // peer: neither yet
+    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-3, 0.5), levels, 1.0, 1.0));    // peer: 5 % only
+    EXPECT_FALSE(peerCurveUndecided(raylab, sqrtCurve(1024, 1e-3, 0.5), levels, 1.0, 1.0));  // peer: both
     // raylab reached neither: more peer samples could not give a ratio.
-    EXPECT_FALSE(peerCurveUndecided(curve(64, 0.5), curve(64, 0.5), levels, 1.0, 1.0));
+    EXPECT_FALSE(peerCurveUndecided(sqrtCurve(64, 1e-3, 0.5), sqrtCurve(64, 1e-3, 0.5), levels, 1.0, 1.0));
     // Each renderer's level is of its own reference's mean: a peer mean twice as large halves
     // the peer's relative error, so its 64 spp already reach 5 %, not 2 %.
-    EXPECT_TRUE(peerCurveUndecided(raylab, curve(64, 0.5), levels, 1.0, 2.0));
-    EXPECT_FALSE(peerCurveUndecided(raylab, curve(256, 0.5), levels, 1.0, 2.0));
+    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(64, 1e-3, 0.5), levels, 1.0, 2.0));
+    EXPECT_FALSE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-3, 0.5), levels, 1.0, 2.0));
 }
 
 TEST(BenchReference, CachedReferenceIsReusedAndRebuiltWhenItsKeyChanges) {
@@ -523,7 +521,9 @@ TEST(BenchConvergenceCli, BadSuiteNamesTheFileAndTheKey) {
     std::ofstream(dir / "bad_suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, "seeds": 1,
         "reference_spp": 4, "reference_batches": 2, "peer_max_spp": 8, "peer_extend_spp": 4}},
         "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
-    ASSERT_TRUE(WIFEXITED(std::system(cmd.c_str())));
+    const int raw2 = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(raw2));
+    EXPECT_EQ(WEXITSTATUS(raw2), 1);
     log.str("");
     log << std::ifstream(dir / "bad_log.txt").rdbuf();
     EXPECT_NE(log.str().find("bad_suite.json: error: modes.quick.peer_extend_spp must be at least peer_max_spp"),
