@@ -102,9 +102,13 @@ const uint SOBOL_MATRICES[128] = uint[128](RAYLAB_SOBOL_MATRICES);
 #endif
 
 // Written out without a loop: llvmpipe allows an invocation 65535 loop iterations in all
-// (path_tracer.glsl), and a loop here would spend 32 of them on every number.
+// (path_tracer.glsl), and a loop here would spend 32 of them on every number. Dimension 0's
+// matrix is the identity read backwards (van der Corput), so it is the index reversed: callers
+// pass constant dimensions, and that case costs one instruction instead of 32 masked XORs
+// (bench/samplers.md).
 #define RAYLAB_SOBOL_BIT(b) x ^= SOBOL_MATRICES[base + b] & (0u - ((index >> b) & 1u));
 RL_FN uint sobolBits(uint index, uint dim) {
+    if (dim == 0u) return bitfieldReverse(index);
     uint base = dim * 32u;
     uint x = 0u;
     RAYLAB_SOBOL_BIT(0u) RAYLAB_SOBOL_BIT(1u) RAYLAB_SOBOL_BIT(2u) RAYLAB_SOBOL_BIT(3u)

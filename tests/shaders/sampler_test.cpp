@@ -135,6 +135,19 @@ TEST(Sampler, SobolIsAZeroTwoNetInEachPixel) {
             }
 }
 
+TEST(Sampler, SobolBitsAreTheGeneratorMatrixTimesTheIndex) {
+    // sobolBits takes dimension 0 by reversing the index's bits: that must be its matrix's product,
+    // as the other dimensions' are, for indices with every bit in play.
+    for (uint dim = 0; dim < 4; ++dim)
+        for (uint k = 0; k < 4096; ++k) {
+            const uint index = k < 2048 ? k : pcg4d(uvec4(k, dim, 7u, 0u)).x;
+            uint product = 0;
+            for (uint b = 0; b < 32; ++b)
+                if ((index >> b) & 1u) product ^= SOBOL_MATRICES[dim * 32 + b];
+            ASSERT_EQ(sobolBits(index, dim), product) << "dim " << dim << " index " << index;
+        }
+}
+
 TEST(Sampler, ZSobolPermutesDigitsByAllTwentyFourPermutations) {
     std::vector<uint> seen;
     for (uint p = 0; p < 24; ++p) {
