@@ -13,6 +13,7 @@
 #define BINDING_MESH_NODE_TEXELS 6
 #define BINDING_INSTANCE_TEXELS 7
 #define BINDING_TRIANGLE_TEXELS 8
+#define BINDING_TEXTURE_TEXELS 9      // texture unit: every texture's texels, RGBA32UI (scene_textures.glsl)
 
 // The tracer's storage buffers (shaders/include/scene_data.glsl, scene_geometry.glsl,
 // scene_textures.glsl; filled by src/render/gpu_scene.cpp and path_tracer.cpp).
@@ -28,7 +29,6 @@
 #define BINDING_TRIANGLES 11
 #define BINDING_VERTICES 12
 #define BINDING_TRAVERSAL_COUNTERS 13  // RAYLAB_COUNT_TRAVERSAL: boxes and triangles tested
-#define BINDING_TEXTURE_TEXELS 14
 #define BINDING_TEXTURE_INFO 15
 #define BINDING_TRIANGLE_LIGHTS 24
 #define BINDING_LIGHT_ALIAS 25         // alias table over every light, by power

@@ -3,12 +3,15 @@
 #define RAYLAB_SCENE_TEXTURES_GLSL
 #include "bindings.glsl"
 
-layout(std430, binding = BINDING_TEXTURE_TEXELS) readonly buffer TextureTexelBuffer { vec4 textureTexels[]; };
+// Texels through an integer texture buffer, bit-exact like the geometry's (scene_geometry.glsl): on
+// llvmpipe a texel fetch gathers eight lanes at once where a storage-buffer load walks them one by
+// one, and a bilinear tap is four of them (bench/mesh_rays.md).
+layout(binding = BINDING_TEXTURE_TEXELS) uniform usamplerBuffer textureTexels;
 // Texture k (GpuTexture.info: offset, width, height, levels and wrap modes); a material names its
 // textures in GpuMaterial.
 layout(std430, binding = BINDING_TEXTURE_INFO) readonly buffer TextureInfoBuffer { uvec4 textureInfo[]; };
 
-vec4 texelAt(uint i) { return textureTexels[i]; }
+vec4 texelAt(uint i) { return uintBitsToFloat(texelFetch(textureTexels, int(i))); }
 
 #include "texture.glsl"
 

@@ -41,6 +41,19 @@ constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, 
 constexpr GLuint kGeometryTexelBindings[4] = {BINDING_TOP_NODE_TEXELS, BINDING_MESH_NODE_TEXELS,
                                               BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS};
 
+// An RGBA32UI texture-buffer view of a buffer of 16-byte records; `what` starts the error when the
+// GL's texture buffers are too small for it.
+void attachTexels(GLuint texture, GLuint buffer, const char* what) {
+    GLint64 bytes = 0;
+    glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &bytes);
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    if (bytes / 16 > GLint64(maxTexels))
+        throw std::runtime_error(std::string(what) + " " + std::to_string(bytes / 16) +
+                                 " texels in one texture buffer; this GL allows " + std::to_string(maxTexels));
+    glTextureBuffer(texture, GL_RGBA32UI, buffer);
+}
+
 template <typename T>
 void uploadBuffer(GLuint buffer, std::vector<T> data) {
     data.resize(std::max<size_t>(data.size(), 1));   // an empty SSBO binding is not allowed
@@ -63,6 +76,7 @@ GpuScene::GpuScene() {
     glCreateBuffers(5, geometryBuffers_);
     glCreateTextures(GL_TEXTURE_BUFFER, 4, geometryTexels_);
     glCreateBuffers(2, textureBuffers_);
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &textureTexels_);
     glCreateBuffers(1, &triangleLightBuffer_);
     glCreateBuffers(1, &lightAliasBuffer_);
     glCreateBuffers(1, &triangleLightIndexBuffer_);
@@ -80,6 +94,7 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(5, geometryBuffers_);
     glDeleteTextures(4, geometryTexels_);
     glDeleteBuffers(2, textureBuffers_);
+    glDeleteTextures(1, &textureTexels_);
     glDeleteBuffers(1, &triangleLightBuffer_);
     glDeleteBuffers(1, &lightAliasBuffer_);
     glDeleteBuffers(1, &triangleLightIndexBuffer_);
@@ -97,6 +112,7 @@ void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
     for (const Texture& t : scene.textures)
         for (const MipLevel& l : t.levels) texels.insert(texels.end(), l.texels.begin(), l.texels.end());
     uploadBuffer(textureBuffers_[0], std::move(texels));
+    attachTexels(textureTexels_, textureBuffers_[0], "the scene's textures need");
     uploadMaterials(scene);
     uploadTopLevel(scene, origin);   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
     uploadBuffer(geometryBuffers_[3], geometry_.triangles);
@@ -105,15 +121,7 @@ void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
 
 // A texture buffer sees a buffer's data store as of its attachment, so each upload re-attaches.
 void GpuScene::attachGeometryTexels(int view) {
-    const GLuint buffer = geometryBuffers_[view];
-    GLint64 bytes = 0;
-    glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &bytes);
-    GLint maxTexels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-    if (bytes / 16 > GLint64(maxTexels))
-        throw std::runtime_error("the scene's geometry needs " + std::to_string(bytes / 16) +
-                                 " texels in one texture buffer; this GL allows " + std::to_string(maxTexels));
-    glTextureBuffer(geometryTexels_[view], GL_RGBA32UI, buffer);
+    attachTexels(geometryTexels_[view], geometryBuffers_[view], "the scene's geometry needs");
 }
 
 void GpuScene::updateMaterials(const Scene& scene, const glm::dvec3& origin) {
@@ -232,7 +240,7 @@ void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_ENV_CONDITIONAL, envConditionalBuffer_);
     for (int i = 0; i < 5; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGeometryBindings[i], geometryBuffers_[i]);
     for (int i = 0; i < 4; ++i) glBindTextureUnit(kGeometryTexelBindings[i], geometryTexels_[i]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_TEXELS, textureBuffers_[0]);
+    glBindTextureUnit(BINDING_TEXTURE_TEXELS, textureTexels_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_INFO, textureBuffers_[1]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHTS, triangleLightBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_LIGHT_ALIAS, lightAliasBuffer_);

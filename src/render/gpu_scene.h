@@ -67,6 +67,7 @@ private:
     // Texture-buffer views of top nodes, mesh nodes, instances and triangles (scene_geometry.glsl).
     unsigned geometryTexels_[4] = {};
     void attachGeometryTexels(int view);
+    unsigned textureTexels_ = 0;   // texture-buffer view of textureBuffers_[0] (scene_textures.glsl)
     void uploadTopLevel(const Scene& scene, const glm::dvec3& origin);
     SceneGeometry relativeTop_;   // spheres, instances and top nodes as uploaded (mesh data stays in geometry_)
     unsigned triangleLightBuffer_ = 0;   // emissive triangles

@@ -25,7 +25,7 @@ using namespace raylab;
 static_assert(BINDING_CAST_RAYS != BINDING_CAST_HITS);
 static_assert([] {
     for (int b : std::array{BINDING_SPHERES, BINDING_MATERIALS, BINDING_TOP_NODES, BINDING_MESH_NODES, BINDING_INSTANCES,
-                            BINDING_TRIANGLES, BINDING_VERTICES, BINDING_TEXTURE_TEXELS, BINDING_TEXTURE_INFO})
+                            BINDING_TRIANGLES, BINDING_VERTICES, BINDING_TEXTURE_INFO})
         if (b == BINDING_CAST_RAYS || b == BINDING_CAST_HITS) return false;
     return true;
 }());

@@ -20,7 +20,7 @@ constexpr std::array kTracerStorageBuffers = {
     BINDING_SPHERE_LIGHTS,    BINDING_ENV_MARGINAL,     BINDING_ENV_CONDITIONAL,
     BINDING_TOP_NODES,        BINDING_MESH_NODES,       BINDING_INSTANCES,
     BINDING_TRIANGLES,        BINDING_VERTICES,         BINDING_TRAVERSAL_COUNTERS,
-    BINDING_TEXTURE_TEXELS,   BINDING_TEXTURE_INFO,     BINDING_TRIANGLE_LIGHTS,
+    BINDING_TEXTURE_INFO,     BINDING_TRIANGLE_LIGHTS,
     BINDING_LIGHT_ALIAS,      BINDING_TRIANGLE_LIGHT_INDEX, BINDING_DEBUG_MOMENTS,
     BINDING_DEBUG_HEAT_MAX,   BINDING_INSPECT_BOUNCES,  BINDING_INSPECT_PATHS,
 };
@@ -40,10 +40,10 @@ static_assert(pairwiseDistinct(std::array{BINDING_SPHERES, BINDING_MATERIALS, BI
                                           BINDING_TRIANGLE_LIGHTS, BINDING_TRIANGLE_LIGHT_INDEX,
                                           BINDING_BSDF_SAMPLES}));
 static_assert(BINDING_TEST_INPUT != BINDING_TEST_OUTPUT);
-// The tracer's texture units: the sky map and the geometry's texel views (the accumulation
+// The tracer's texture units: the sky map, the geometry's and the textures' texel views (the accumulation
 // texture is the display pass's, a program of its own).
 static_assert(pairwiseDistinct(std::array{BINDING_SKY_MAP_TEXTURE, BINDING_TOP_NODE_TEXELS, BINDING_MESH_NODE_TEXELS,
-                                          BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS}),
+                                          BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS, BINDING_TEXTURE_TEXELS}),
               "two tracer texture units coincide");
 
 // `binding = 3` in a layout, or a glBind* call whose point is a number.
