@@ -61,7 +61,11 @@ RL_FN bool intersectTriangles(TriangleRay triRay, float tOffset, uint instance, 
 }
 
 // Nearest triangle of one mesh in (0, rec.t), in the mesh's object space; updates rec. The
-// object-space ray starts tOffset further along than the world ray (see objectRay).
+// object-space ray starts tOffset further along than the world ray (see objectRay). An inner node
+// tests both children's boxes in one step and goes on into the nearer one, keeping the other if
+// the ray meets it (Aila & Laine 2009, "Understanding the Efficiency of Ray Traversal on GPUs"):
+// a missed child then costs no step of its own, and a step's loop control and stack work, which
+// llvmpipe runs masked for all eight lanes, are spent once per two boxes (bench/mesh_rays.md).
 RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool anyHit, RL_INOUT(TraceRecord) rec) {
     vec3 invDir = safeInverseDir(ray.dir);
     TriangleRay triRay = triangleRay(ray);
@@ -69,28 +73,39 @@ RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool a
     uint stack[BVH_STACK_SIZE];
     int sp = 0;
     uint node = root;
+    GpuBvhNode n = meshNode(node);   // the node of the step; the ray meets its box
+    RL_COUNT_BOX();
+    if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t - tOffset) < 0.0f) return false;
     bool done = false;
     while (!done) {
-        GpuBvhNode n = meshNode(node);
-        RL_COUNT_BOX();
-        bool descended = false;
-        if (intersectBox(ray.origin, invDir, nodeMin(n), nodeMax(n), rec.t - tOffset) >= 0.0f) {
-            if (bvhNodeIsLeaf(n)) {
-                if (intersectTriangles(triRay, tOffset, instance, bvhNodeLink(n), bvhNodeCount(n), anyHit, rec)) found = true;
-                if (found && anyHit) done = true;
-            } else {
-                // Visit the child on the near side of the split plane first.
-                bool dirNeg = ray.dir[int(bvhNodeAxis(n))] < 0.0f;
-                uint first = node + 1u;
-                uint second = bvhNodeLink(n);
-                if (sp < BVH_STACK_SIZE) stack[sp++] = dirNeg ? first : second;
-                node = dirNeg ? second : first;
-                descended = true;
+        bool pop = true;
+        if (bvhNodeIsLeaf(n)) {
+            if (intersectTriangles(triRay, tOffset, instance, bvhNodeLink(n), bvhNodeCount(n), anyHit, rec)) found = true;
+            done = found && anyHit;
+        } else {
+            uint a = node + 1u;
+            uint b = bvhNodeLink(n);
+            GpuBvhNode na = meshNode(a);
+            GpuBvhNode nb = meshNode(b);
+            RL_COUNT_BOX();
+            RL_COUNT_BOX();
+            float ta = intersectBox(ray.origin, invDir, nodeMin(na), nodeMax(na), rec.t - tOffset);
+            float tb = intersectBox(ray.origin, invDir, nodeMin(nb), nodeMax(nb), rec.t - tOffset);
+            if (ta >= 0.0f || tb >= 0.0f) {
+                // Nearer entry first; a child the ray misses has t = -1.
+                bool aFirst = tb < 0.0f || (ta >= 0.0f && ta <= tb);
+                if (ta >= 0.0f && tb >= 0.0f && sp < BVH_STACK_SIZE) stack[sp++] = aFirst ? b : a;
+                node = aFirst ? a : b;
+                n = aFirst ? na : nb;
+                pop = false;
             }
         }
-        if (!descended && !done) {
+        if (pop && !done) {
             if (sp == 0) done = true;
-            else node = stack[--sp];
+            else {
+                node = stack[--sp];
+                n = meshNode(node);
+            }
         }
     }
     return found;
