@@ -5,7 +5,7 @@
 
 // Texels through an integer texture buffer, bit-exact like the geometry's (scene_geometry.glsl): on
 // llvmpipe a texel fetch gathers eight lanes at once where a storage-buffer load walks them one by
-// one, and a bilinear tap is four of them (bench/mesh_rays.md).
+// one, and a bilinear sample reads four texels (bench/mesh_rays.md).
 layout(binding = BINDING_TEXTURE_TEXELS) uniform usamplerBuffer textureTexels;
 // Texture k (GpuTexture.info: offset, width, height, levels and wrap modes); a material names its
 // textures in GpuMaterial.

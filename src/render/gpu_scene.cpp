@@ -42,7 +42,8 @@ constexpr GLuint kGeometryTexelBindings[4] = {BINDING_TOP_NODE_TEXELS, BINDING_M
                                               BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS};
 
 // An RGBA32UI texture-buffer view of a buffer of 16-byte records; `what` starts the error when the
-// GL's texture buffers are too small for it.
+// GL's texture buffers are too small for it. A view sees the buffer's data store as of its
+// attachment, so every upload of the buffer attaches again.
 void attachTexels(GLuint texture, GLuint buffer, const char* what) {
     GLint64 bytes = 0;
     glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &bytes);
@@ -119,7 +120,6 @@ void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
     attachGeometryTexels(3);
 }
 
-// A texture buffer sees a buffer's data store as of its attachment, so each upload re-attaches.
 void GpuScene::attachGeometryTexels(int view) {
     attachTexels(geometryTexels_[view], geometryBuffers_[view], "the scene's geometry needs");
 }
