@@ -101,14 +101,29 @@ inline constexpr uint SOBOL_MATRICES[128] = {RAYLAB_SOBOL_MATRICES};
 const uint SOBOL_MATRICES[128] = uint[128](RAYLAB_SOBOL_MATRICES);
 #endif
 
+// Dimension 1's matrix is Pascal's triangle mod 2 read backwards: output digit i is the XOR of
+// the index bits b whose bit pattern contains i's (Lucas' theorem: C(b, i) is odd iff i & b == i).
+// That XOR over supersets takes one shift-and-mask step per bit of b (a zeta transform over the
+// five bits of a bit position) instead of 32 masked XORs.
+RL_FN uint sobolDimension1(uint index) {
+    uint z = index;
+    z ^= (z >> 1u) & 0x55555555u;
+    z ^= (z >> 2u) & 0x33333333u;
+    z ^= (z >> 4u) & 0x0f0f0f0fu;
+    z ^= (z >> 8u) & 0x00ff00ffu;
+    z ^= (z >> 16u) & 0x0000ffffu;
+    return bitfieldReverse(z);
+}
+
 // Written out without a loop: llvmpipe allows an invocation 65535 loop iterations in all
 // (path_tracer.glsl), and a loop here would spend 32 of them on every number. Dimension 0's
-// matrix is the identity read backwards (van der Corput), so it is the index reversed: callers
-// pass constant dimensions, and that case costs one instruction instead of 32 masked XORs
-// (bench/samplers.md).
+// matrix is the identity read backwards (van der Corput), so it is the index reversed, and
+// dimension 1 has the closed form above: callers pass constant dimensions, so those cases cost a
+// few instructions instead of 32 masked XORs (bench/samplers.md).
 #define RAYLAB_SOBOL_BIT(b) x ^= SOBOL_MATRICES[base + b] & (0u - ((index >> b) & 1u));
 RL_FN uint sobolBits(uint index, uint dim) {
     if (dim == 0u) return bitfieldReverse(index);
+    if (dim == 1u) return sobolDimension1(index);
     uint base = dim * 32u;
     uint x = 0u;
     RAYLAB_SOBOL_BIT(0u) RAYLAB_SOBOL_BIT(1u) RAYLAB_SOBOL_BIT(2u) RAYLAB_SOBOL_BIT(3u)

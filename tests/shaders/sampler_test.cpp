@@ -136,8 +136,9 @@ TEST(Sampler, SobolIsAZeroTwoNetInEachPixel) {
 }
 
 TEST(Sampler, SobolBitsAreTheGeneratorMatrixTimesTheIndex) {
-    // sobolBits takes dimension 0 by reversing the index's bits: that must be its matrix's product,
-    // as the other dimensions' are, for indices with every bit in play.
+    // sobolBits takes dimension 0 by reversing the index's bits and dimension 1 by its closed form
+    // (Pascal's triangle mod 2): each must be its matrix's product, as dimensions 2 and 3 are, for
+    // indices with every bit in play.
     for (uint dim = 0; dim < 4; ++dim)
         for (uint k = 0; k < 4096; ++k) {
             const uint index = k < 2048 ? k : pcg4d(uvec4(k, dim, 7u, 0u)).x;
