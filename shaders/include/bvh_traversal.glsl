@@ -5,7 +5,7 @@
 //   GpuBvhNode topNode(uint i); GpuBvhNode meshNode(uint i); GpuInstance instanceAt(uint i);
 //   GpuTriangle triangleAt(uint i); GpuVertex vertexAt(uint i); GpuSphere sphereAt(uint i);
 //   uint instanceCount(); uvec4 instanceInfo(uint i); vec3 instanceWorldMin(uint i);
-//   vec3 instanceWorldMax(uint i); uint sphereCount();
+//   vec3 instanceWorldMax(uint i); uvec2 instanceTriangleRange(uint i) (first, count); uint sphereCount();
 // (GLSL: scene_geometry.glsl reads buffers; C++: accel/cpu_traversal.h reads vectors), and may
 // define RL_COUNT_BOX() / RL_COUNT_TRIANGLE() to count tests (heat maps).
 #ifndef RAYLAB_BVH_TRAVERSAL_GLSL
@@ -176,11 +176,24 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
     // object it passes by.
     vec3 invDir = safeInverseDir(ray.dir);
     uint count = instanceCount();
+#if RAYLAB_SHARED_MESH_TRANSFORM && !RAYLAB_COUNT_TRAVERSAL
+    // Every mesh is placed by the same transform, which instance 0 carries whatever it is
+    // (geometry_types.glsl): the ray is moved into the meshes' object space and sheared for the
+    // triangle test once, not once per object it meets (bench/mesh_rays.md). The values are those
+    // each object would compute, so the hits are too.
+    float sharedDt;
+    Ray sharedRay = objectRay(instanceAt(0u), ray, sharedDt);
+    TriangleRay sharedTriangleRay = triangleRay(sharedRay);
+#endif
     for (uint i = 0u; i < count; ++i) {
         if (instanceInfo(i).x != INSTANCE_MESH) continue;
         RL_COUNT_BOX();
         if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) < 0.0f) continue;
-#if RAYLAB_SMALL_MESHES && !RAYLAB_COUNT_TRAVERSAL
+#if RAYLAB_SHARED_MESH_TRANSFORM && !RAYLAB_COUNT_TRAVERSAL
+        if (sharedDt < rec.t && intersectTriangles(sharedTriangleRay, sharedDt, i, instanceTriangleRange(i).x,
+                                                   instanceTriangleRange(i).y, anyHit, rec))
+            found = true;
+#elif RAYLAB_SMALL_MESHES && !RAYLAB_COUNT_TRAVERSAL
         // A few triangles: tested straight after the world box, without the mesh BVH's root read,
         // box test and walk (bench/mesh_rays.md). The heat views count the BVH's own tests.
         GpuInstance inst = instanceAt(i);

@@ -31,7 +31,9 @@ const uint INSTANCE_SPHERE = 0u;
 const uint INSTANCE_MESH = 1u;
 
 // An object in the top-level BVH: a world-space sphere, or a mesh placed by an affine transform
-// (rows of the 3×4 matrices). Moving an object changes only this record and the top level.
+// (rows of the 3×4 matrices). Moving an object changes only this record and the top level. A
+// sphere's rows hold the first mesh's transform (a sphere needs none), so instance 0 always holds
+// a mesh's: with RAYLAB_SHARED_MESH_TRANSFORM every mesh's.
 struct GpuInstance {
     vec4 worldToObject0;
     vec4 worldToObject1;

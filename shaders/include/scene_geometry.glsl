@@ -43,6 +43,7 @@ uint instanceCount() { return uint(instances.length()); }
 uvec4 instanceInfo(uint i) { return instances[i].info; }
 vec3 instanceWorldMin(uint i) { return instances[i].worldMin.xyz; }
 vec3 instanceWorldMax(uint i) { return instances[i].worldMax.xyz; }
+uvec2 instanceTriangleRange(uint i) { return floatBitsToUint(vec2(instances[i].worldMin.w, instances[i].worldMax.w)); }
 uint sphereCount() { return uint(spheres.length()); }
 
 #if RAYLAB_COUNT_TRAVERSAL

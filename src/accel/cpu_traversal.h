@@ -25,6 +25,10 @@ inline uint instanceCount() { return uint(cpuTraversal.geometry->instances.size(
 inline uvec4 instanceInfo(uint i) { return cpuTraversal.geometry->instances[i].info; }
 inline vec3 instanceWorldMin(uint i) { return vec3(cpuTraversal.geometry->instances[i].worldMin); }
 inline vec3 instanceWorldMax(uint i) { return vec3(cpuTraversal.geometry->instances[i].worldMax); }
+inline uvec2 instanceTriangleRange(uint i) {
+    const GpuInstance& inst = cpuTraversal.geometry->instances[i];
+    return uvec2(instanceFirstTriangle(inst), instanceTriangleCount(inst));
+}
 inline uint sphereCount() { return uint(cpuTraversal.geometry->spheres.size()); }
 
 } // namespace raylab::glsl

@@ -124,9 +124,21 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
     for (const BvhNode& n : top.nodes) g.topNodes.push_back(gpuNode(n, 0u, 0u));
     g.instances.clear();
     for (std::uint32_t i : top.order) g.instances.push_back(objects[i]);
-    // Each sphere knows its instance, so the linear top level can loop over spheres directly.
-    for (std::size_t i = 0; i < g.instances.size(); ++i)
-        if (g.instances[i].info.x == glsl::INSTANCE_SPHERE) g.spheres[g.instances[i].info.y].info.y = unsigned(i);
+    // Each sphere knows its instance, so the linear top level can loop over spheres directly, and
+    // holds the first mesh's transform, so instance 0 holds a mesh's (geometry_types.glsl).
+    const glsl::GpuInstance* firstMesh = objects.size() > scene.spheres.size() ? &objects[scene.spheres.size()] : nullptr;
+    for (std::size_t i = 0; i < g.instances.size(); ++i) {
+        glsl::GpuInstance& inst = g.instances[i];
+        if (inst.info.x != glsl::INSTANCE_SPHERE) continue;
+        g.spheres[inst.info.y].info.y = unsigned(i);
+        if (firstMesh == nullptr) continue;
+        inst.worldToObject0 = firstMesh->worldToObject0;
+        inst.worldToObject1 = firstMesh->worldToObject1;
+        inst.worldToObject2 = firstMesh->worldToObject2;
+        inst.objectToWorld0 = firstMesh->objectToWorld0;
+        inst.objectToWorld1 = firstMesh->objectToWorld1;
+        inst.objectToWorld2 = firstMesh->objectToWorld2;
+    }
     g.topSahCost = top.sahCost();
     g.maxDepth = std::max(g.maxDepth, top.depth);
     g.topBuildSeconds = secondsSince(start);

@@ -190,7 +190,9 @@ void PathTracer::updateSettings(const Scene& scene) {
 
 void PathTracer::updateTransforms(const Scene& scene) {
     gpuScene_.updateTransforms(scene, origin_);
-    reset();
+    // The variant follows the transforms (whether every mesh shares one): looked up again, and
+    // the image reset.
+    updateSettings(scene);
 }
 
 void PathTracer::reset() {

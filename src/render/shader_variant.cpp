@@ -20,6 +20,8 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.linearTopLevel = scene.spheres.size() + scene.meshes.size() <= kLinearTopLevelMax;
     f.smallMeshes = f.meshes;
     for (const Mesh& m : scene.meshes) f.smallMeshes &= m.triangles.size() <= kSmallMeshMax;
+    f.sharedMeshTransform = f.smallMeshes && f.linearTopLevel;
+    for (const Mesh& m : scene.meshes) f.sharedMeshTransform &= m.transform == scene.meshes.front().transform;
     f.showMipLevel = f.textures && scene.render.showMipLevel != 0;
     f.nee = scene.render.nee;
     f.generalBsdf = false;

@@ -334,6 +334,46 @@ TEST_F(BvhGpuTest, LinearTopLevelMatchesBruteForceWithAndWithoutMeshes) {
 }
 
 
+// Small meshes all placed by one transform (RAYLAB_SHARED_MESH_TRANSFORM): the tracer moves a ray
+// into their space once, by instance 0's rows, which a sphere holds when it comes first in the top
+// level. The same records as the brute force, and as every mesh's own transform would give.
+TEST_F(BvhGpuTest, MeshesSharingOneTransformMatchBruteForceWhateverInstanceComesFirst) {
+    Scene scene = randomScene(12, 9, 5, 12);
+    for (Mesh& m : scene.meshes) m.transform = scene.meshes[0].transform;
+    GpuScene gpu;
+    gpu.upload(scene);
+    const SceneGeometry& g = gpu.geometry();
+    ASSERT_EQ(g.instances[0].info.x, glsl::INSTANCE_SPHERE) << "seed chosen so that a sphere is instance 0";
+    const glsl::GpuInstance* mesh = nullptr;
+    for (const glsl::GpuInstance& inst : g.instances)
+        if (inst.info.x == glsl::INSTANCE_MESH) mesh = &inst;
+    ASSERT_NE(mesh, nullptr);
+    for (const glsl::GpuInstance& inst : g.instances) {
+        EXPECT_EQ(inst.worldToObject0, mesh->worldToObject0);
+        EXPECT_EQ(inst.worldToObject2, mesh->worldToObject2);
+        EXPECT_EQ(inst.objectToWorld1, mesh->objectToWorld1);
+    }
+    const ShaderDefines defines = {{"RAYLAB_FEATURES_SPECIALISED", "1"}, {"RAYLAB_FEATURE_SPHERES", "1"},
+                                   {"RAYLAB_FEATURE_MESHES", "1"},       {"RAYLAB_TOP_LEVEL_LINEAR", "1"},
+                                   {"RAYLAB_SMALL_MESHES", "1"},         {"RAYLAB_SHARED_MESH_TRANSFORM", "1"}};
+    const std::vector<test::TestRay> rays = randomRays(79, 16000);
+    const std::vector<test::GpuTraceResult> results = test::gpuTrace(gpu, rays, defines);
+    int meshHits = 0, mismatch = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const glsl::Ray ray(glm::vec3(rays[i].origin), glm::vec3(rays[i].dir));
+        const Reference ref = bruteForce(g, scene, ray, glsl::FLOAT_MAX, false);
+        ASSERT_EQ(results[i].t >= 0.0f, ref.hit) << "ray " << i;
+        if (ref.hit) {
+            meshHits += g.instances[ref.rec.instance].info.x == glsl::INSTANCE_MESH;
+            mismatch += results[i].instance != ref.rec.instance || results[i].primitive != ref.rec.primitive;
+        }
+        ASSERT_EQ(results[i].occluded, bruteForce(g, scene, ray, rays[i].dir.w, true).hit) << "ray " << i;
+    }
+    EXPECT_GT(meshHits, 100);
+    EXPECT_EQ(mismatch, 0);
+}
+
+
 TEST_F(BvhGpuTest, HugeCoordinatesThroughTheGpuBvhHaveNoMissesAndNoNan) {
     // The scene and rays of IntersectionStress.HugeCoordinatesThroughTheBvh* (unit spheres and
     // triangles up to 10^6 from the origin, placed by coordinates or translations) through the

@@ -31,7 +31,11 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     s.meshes.push_back(Mesh{});
     s.meshes[0].normals.push_back(glm::vec3(0, 0, 1));
     s.camera.aperture = 0.1f;
-    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes");
+    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes+one-transform");
+    s.meshes.push_back(s.meshes[0]);
+    s.meshes[1].transform.translation.x = 1.0f;
+    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes")
+        << "meshes placed by different transforms";
     for (int i = 0; i < 20; ++i) s.spheres.push_back(Sphere{});
     EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof") << "many objects: top-level BVH";
     const ShaderDefines d = on(featureDefines(sceneFeatures(spheres)));
@@ -79,6 +83,7 @@ TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore
     expected.emplace_back("RAYLAB_FEATURE_TEXTURES", "1");
     if (f.linearTopLevel) expected.emplace_back("RAYLAB_TOP_LEVEL_LINEAR", "1");
     if (f.linearTopLevel && f.smallMeshes) expected.emplace_back("RAYLAB_SMALL_MESHES", "1");
+    if (f.sharedMeshTransform) expected.emplace_back("RAYLAB_SHARED_MESH_TRANSFORM", "1");
     if (f.nee) expected.emplace_back("RAYLAB_NEE", "1");
     if (f.generalBsdf) expected.emplace_back("RAYLAB_GENERAL_BSDF", "1");
     EXPECT_EQ(on(featureDefines(f)), expected);
