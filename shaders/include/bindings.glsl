@@ -14,6 +14,7 @@
 #define BINDING_INSTANCE_TEXELS 7
 #define BINDING_TRIANGLE_TEXELS 8
 #define BINDING_TEXTURE_TEXELS 9      // texture unit: every texture's texels, RGBA32UI (scene_textures.glsl)
+#define BINDING_MATERIAL_TEXELS 10    // texture unit: the materials' records, RGBA32UI (scene_data.glsl)
 
 // The tracer's storage buffers (shaders/include/scene_data.glsl, scene_geometry.glsl,
 // scene_textures.glsl; filled by src/render/gpu_scene.cpp and path_tracer.cpp).

@@ -445,7 +445,7 @@ bool pathStep(inout PathState st, inout Sampler smp, inout uint rays) {
 #endif
         return true;
     }
-    GpuMaterial m = materials[hit.material];
+    GpuMaterial m = materialAt(hit.material);
 #if RAYLAB_STAGE == RAYLAB_STAGE_PRIMARY
     // render.stage primary: the flat albedo of the first hit is the whole estimate (beta is 1).
     RAYLAB_ADD_RADIANCE(st.radiance, bounce, st.beta * m.albedo.rgb);

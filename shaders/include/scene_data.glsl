@@ -10,6 +10,19 @@
 layout(rgba32f, binding = BINDING_ACCUM_IMAGE) uniform image2D uAccum;   // running mean, rgb; a = 1
 layout(std430, binding = BINDING_SPHERES) readonly buffer SphereBuffer { GpuSphere spheres[]; };
 layout(std430, binding = BINDING_MATERIALS) readonly buffer MaterialBuffer { GpuMaterial materials[]; };
+layout(binding = BINDING_MATERIAL_TEXELS) uniform usamplerBuffer materialTexels;   // the same buffer's bits
+
+// A hit's material: the three vec4s every bounce reads through the texel view, one fetch gathering
+// eight lanes where the storage-buffer load walks them one by one (bench/mesh_rays.md); the texture
+// fields, which only textured variants read, from the buffer.
+GpuMaterial materialAt(uint i) {
+    GpuMaterial m = materials[i];
+    int b = int(MATERIAL_TEXELS * i);
+    m.albedo = uintBitsToFloat(texelFetch(materialTexels, b));
+    m.emission = uintBitsToFloat(texelFetch(materialTexels, b + 1));
+    m.f0Ior = uintBitsToFloat(texelFetch(materialTexels, b + 2));
+    return m;
+}
 layout(std430, binding = BINDING_COUNTERS) buffer CounterBuffer {
     uint nonFiniteSamples;   // samples that were NaN or Inf and were replaced by 0
     uint raysTraced;         // ray casts this pass (camera and bounce rays)

@@ -29,6 +29,7 @@ struct GpuMaterial {
     uint unused0;
     uint unused1;
 };
+const uint MATERIAL_TEXELS = 6u;   // RGBA32UI texels a material record spans
 
 // An emissive sphere, for next-event estimation.
 struct GpuLight {

@@ -26,6 +26,7 @@ static_assert(sizeof(glsl::GpuMaterial) == 96);
 static_assert(offsetof(glsl::GpuMaterial, f0Ior) == 32 && offsetof(glsl::GpuMaterial, albedoTexture) == 48);
 static_assert(offsetof(glsl::GpuMaterial, emissionTexture) == 64 && offsetof(glsl::GpuMaterial, normalScale) == 72);
 static_assert(offsetof(glsl::GpuMaterial, occlusionTexture) == 80);
+static_assert(sizeof(glsl::GpuMaterial) == 16 * glsl::MATERIAL_TEXELS && offsetof(glsl::GpuMaterial, emission) == 16);
 // The geometry records are vec4s only, so their std430 layout is their C++ layout.
 static_assert(sizeof(glsl::GpuBvhNode) == 32 && sizeof(glsl::GpuInstance) == 144 && sizeof(glsl::GpuTriangle) == 64);
 static_assert(sizeof(glsl::GpuBvhNode) == 16 * glsl::BVH_NODE_TEXELS && sizeof(glsl::GpuInstance) == 16 * glsl::INSTANCE_TEXELS &&
@@ -78,6 +79,7 @@ GpuScene::GpuScene() {
     glCreateTextures(GL_TEXTURE_BUFFER, 4, geometryTexels_);
     glCreateBuffers(2, textureBuffers_);
     glCreateTextures(GL_TEXTURE_BUFFER, 1, &textureTexels_);
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &materialTexels_);
     glCreateBuffers(1, &triangleLightBuffer_);
     glCreateBuffers(1, &lightAliasBuffer_);
     glCreateBuffers(1, &triangleLightIndexBuffer_);
@@ -96,6 +98,7 @@ GpuScene::~GpuScene() {
     glDeleteTextures(4, geometryTexels_);
     glDeleteBuffers(2, textureBuffers_);
     glDeleteTextures(1, &textureTexels_);
+    glDeleteTextures(1, &materialTexels_);
     glDeleteBuffers(1, &triangleLightBuffer_);
     glDeleteBuffers(1, &lightAliasBuffer_);
     glDeleteBuffers(1, &triangleLightIndexBuffer_);
@@ -152,6 +155,7 @@ void GpuScene::uploadMaterials(const Scene& scene) {
     for (const Material& m : scene.materials)
         materialRadiance_.push_back(lightRadiance(m));
     uploadBuffer(materialBuffer_, std::move(materials));
+    attachTexels(materialTexels_, materialBuffer_, "the scene's materials need");   // the buffer was re-specified
 
     // Per texture where its levels start in the texel array (upload() puts the levels there in
     // this order).
@@ -241,6 +245,7 @@ void GpuScene::bind() const {
     for (int i = 0; i < 5; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGeometryBindings[i], geometryBuffers_[i]);
     for (int i = 0; i < 4; ++i) glBindTextureUnit(kGeometryTexelBindings[i], geometryTexels_[i]);
     glBindTextureUnit(BINDING_TEXTURE_TEXELS, textureTexels_);
+    glBindTextureUnit(BINDING_MATERIAL_TEXELS, materialTexels_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_INFO, textureBuffers_[1]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHTS, triangleLightBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_LIGHT_ALIAS, lightAliasBuffer_);

@@ -68,6 +68,7 @@ private:
     unsigned geometryTexels_[4] = {};
     void attachGeometryTexels(int view);
     unsigned textureTexels_ = 0;   // texture-buffer view of textureBuffers_[0] (scene_textures.glsl)
+    unsigned materialTexels_ = 0;  // texture-buffer view of materialBuffer_ (scene_data.glsl materialAt)
     void uploadTopLevel(const Scene& scene, const glm::dvec3& origin);
     SceneGeometry relativeTop_;   // spheres, instances and top nodes as uploaded (mesh data stays in geometry_)
     unsigned triangleLightBuffer_ = 0;   // emissive triangles

@@ -40,10 +40,11 @@ static_assert(pairwiseDistinct(std::array{BINDING_SPHERES, BINDING_MATERIALS, BI
                                           BINDING_TRIANGLE_LIGHTS, BINDING_TRIANGLE_LIGHT_INDEX,
                                           BINDING_BSDF_SAMPLES}));
 static_assert(BINDING_TEST_INPUT != BINDING_TEST_OUTPUT);
-// The tracer's texture units: the sky map, the geometry's and the textures' texel views (the accumulation
-// texture is the display pass's, a program of its own).
+// The tracer's texture units: the sky map, the texel views of the geometry, the textures and the
+// materials (the accumulation texture is the display pass's, a program of its own).
 static_assert(pairwiseDistinct(std::array{BINDING_SKY_MAP_TEXTURE, BINDING_TOP_NODE_TEXELS, BINDING_MESH_NODE_TEXELS,
-                                          BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS, BINDING_TEXTURE_TEXELS}),
+                                          BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS, BINDING_TEXTURE_TEXELS,
+                                          BINDING_MATERIAL_TEXELS}),
               "two tracer texture units coincide");
 
 // `binding = 3` in a layout, or a glBind* call whose point is a number.
