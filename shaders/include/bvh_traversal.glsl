@@ -190,8 +190,8 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
         RL_COUNT_BOX();
         if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) < 0.0f) continue;
 #if RAYLAB_SHARED_MESH_TRANSFORM && !RAYLAB_COUNT_TRAVERSAL
-        if (sharedDt < rec.t && intersectTriangles(sharedTriangleRay, sharedDt, i, instanceTriangleRange(i).x,
-                                                   instanceTriangleRange(i).y, anyHit, rec))
+        uvec2 range = instanceTriangleRange(i);   // first triangle, count
+        if (sharedDt < rec.t && intersectTriangles(sharedTriangleRay, sharedDt, i, range.x, range.y, anyHit, rec))
             found = true;
 #elif RAYLAB_SMALL_MESHES && !RAYLAB_COUNT_TRAVERSAL
         // A few triangles: tested straight after the world box, without the mesh BVH's root read,
