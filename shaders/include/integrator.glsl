@@ -16,6 +16,7 @@
 #include "scene_intersect.glsl"
 #include "features.glsl"
 #include "bsdf_lobes.glsl"
+#include "russian_roulette.glsl"
 // The path inspector's RAYLAB_RECORD hooks: empty unless its variant defines RAYLAB_INSPECT_PATHS.
 #include "path_record.glsl"
 #include "light_selection.glsl"
@@ -371,25 +372,14 @@ BsdfSample sampleScattering(ShadingPoint sp, int bounce, inout Sampler smp) {
                       LOBE_DIFFUSE, false);
 }
 
-// Russian roulette (pbrt-v3 §13.7): the path survives with q = its largest throughput component,
-// at most 0.95 (pbrt-v3's cap), and is divided by q so the estimate stays unbiased. pbrt-v3's and
-// pbrt-v4's PathIntegrator::Li take q of beta·etaScale, and pbrt-v4 has no cap.
-bool survivesRoulette(int bounce, inout vec3 beta, bool delta, inout Sampler smp) {
-    float q = min(max(beta.r, max(beta.g, beta.b)), 0.95f);
-    bool survived = !(sample1D(smp, sampleDim(bounce, SAMPLE_BOUNCE_ROULETTE)) >= q);   // a NaN q survives (the NaN guard counts it)
-    RAYLAB_RECORD(recordRoulette(bounce, q, survived));
-    if (!survived) return false;
-    beta /= q;
-    RAYLAB_RECORD(recordThroughput(bounce, beta, delta));
-    return true;
-}
-
 // A camera path between bounces (Kajiya 1986): the ray it follows next, its radiance so far, and
 // beta, the path throughput: the product of f·|cosθ|/pdf over the bounces so far.
 struct PathState {
     Ray ray;
     vec3 radiance;
     vec3 beta;
+    float survival;         // Russian roulette: the product of the survival probabilities so far
+    float rouletteNumber;   // and the path's one number, -1 until its first roulette
     PrevBounce prev;
     int bounce;
 #if RAYLAB_FEATURE_TEXTURES
@@ -405,6 +395,8 @@ PathState pathStart(Ray ray) {
     st.ray = ray;
     st.radiance = vec3(0.0f);
     st.beta = vec3(1.0f);
+    st.survival = 1.0f;
+    st.rouletteNumber = -1.0f;
     st.prev = PrevBounce(0.0f, true, vec3(0.0f));
     st.bounce = 0;
 #if RAYLAB_FEATURE_TEXTURES
@@ -412,6 +404,20 @@ PathState pathStart(Ray ray) {
     st.coneSpread = params.camPixelSpread;
 #endif
     return st;
+}
+
+// Russian roulette (russian_roulette.glsl): the path's one roulette number, drawn at its first
+// roulette (the independent sampler's stream gives a new number at every call), against the
+// product of its survival probabilities so far; a survivor's throughput is divided by this q.
+bool survivesRoulette(int bounce, inout PathState st, bool delta, inout Sampler smp) {
+    if (st.rouletteNumber < 0.0f) st.rouletteNumber = sample1D(smp, SAMPLE_DIM_ROULETTE);
+    float q = rouletteProbability(st.beta);
+    bool survived = rouletteSurvives(st.rouletteNumber, q, st.survival);
+    RAYLAB_RECORD(recordRoulette(bounce, q, survived));
+    if (!survived) return false;
+    st.beta /= q;
+    RAYLAB_RECORD(recordThroughput(bounce, st.beta, delta));
+    return true;
 }
 
 // One bounce of a camera path: its ray's hit, the emission found there, the light sample and the
@@ -491,7 +497,7 @@ bool pathStep(inout PathState st, inout Sampler smp, inout uint rays) {
 #endif
     st.prev = PrevBounce(bs.pdf, bs.delta, hit.position);
     RAYLAB_RECORD(recordThroughput(bounce, st.beta, bs.delta));
-    if (bounce + 1 >= params.rrDepth && !survivesRoulette(bounce, st.beta, bs.delta, smp)) return true;
+    if (bounce + 1 >= params.rrDepth && !survivesRoulette(bounce, st, bs.delta, smp)) return true;
     st.ray = spawnRay(hit, dir);
     st.bounce = bounce + 1;
     return false;

@@ -19,11 +19,15 @@ const uint SAMPLE_BOUNCE_BSDF = 0u;          // 2: BSDF direction
 const uint SAMPLE_BOUNCE_LOBE = 2u;          // 1: lobe choice
 const uint SAMPLE_BOUNCE_LIGHT_CHOICE = 3u;  // 1: which light next-event estimation samples
 const uint SAMPLE_BOUNCE_LIGHT = 4u;         // 2: point on that light
-const uint SAMPLE_BOUNCE_ROULETTE = 6u;      // 1: Russian roulette (offset 7 is unused)
+const uint SAMPLE_BOUNCE_ROULETTE = 6u;      // 1: bounce 0's is Russian roulette's (below); offset 7 is unused
 
 RL_FN uint sampleDim(int bounce, uint offset) {
     return SAMPLE_DIM_BOUNCE + uint(bounce) * SAMPLE_DIMS_PER_BOUNCE + offset;
 }
+
+// Russian roulette takes one number per path, compared at every bounce with the product of the
+// survival probabilities (russian_roulette.glsl): bounce 0's roulette slot; later bounces leave theirs unused.
+const uint SAMPLE_DIM_ROULETTE = SAMPLE_DIM_BOUNCE + SAMPLE_BOUNCE_ROULETTE;
 
 // The top 24 bits as a float in [0, 1), as rngNextFloat.
 RL_FN float sampleUnitFloat(uint bits) { return float(bits >> 8u) * (1.0f / 16777216.0f); }

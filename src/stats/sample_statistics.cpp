@@ -25,4 +25,11 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
     return sxy / sxx;
 }
 
+double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
+    std::vector<double> lx, ly;
+    for (double v : x) lx.push_back(std::log(v));
+    for (double v : y) ly.push_back(std::log(v));
+    return slope(lx, ly);
+}
+
 } // namespace raylab::stats

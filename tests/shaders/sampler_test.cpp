@@ -3,6 +3,8 @@
 // and zsobol spreads the error of neighbouring pixels apart (blue noise across the screen).
 #include "shaders/include/sampler.glsl"
 
+#include "stats/sample_statistics.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include <vector>
 
 using namespace raylab::glsl;
+namespace stats = raylab::stats;
 
 namespace {
 
@@ -56,19 +59,6 @@ double meanDiscrepancy(Kind kind, uint dim, uint n, int pixels) {
         sum += l2StarDiscrepancy(pts);
     }
     return sum / pixels;
-}
-
-// Least-squares slope of log y against log x.
-double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
-    double mx = 0, my = 0;
-    for (size_t i = 0; i < x.size(); ++i) mx += std::log(x[i]), my += std::log(y[i]);
-    mx /= double(x.size()), my /= double(y.size());
-    double sxy = 0, sxx = 0;
-    for (size_t i = 0; i < x.size(); ++i) {
-        sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
-        sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
-    }
-    return sxy / sxx;
 }
 
 // RMSE over `pixels` independent pixels (seeds) of the n-sample estimate of ∫∫ f over the square.
@@ -211,7 +201,7 @@ TEST(Sampler, SobolConvergesFasterThanMonteCarloOnASmoothIntegrand) {
     for (Kind kind : kKinds) {
         std::vector<double> errors;
         for (double n : ns) errors.push_back(rmse(kind, sampleDim(0, SAMPLE_BOUNCE_BSDF), uint(n), 256, f, exact));
-        const double slope = logLogSlope(ns, errors);
+        const double slope = stats::logLogSlope(ns, errors);
         std::printf("%s: RMSE slope %.3f\n", name(kind), slope);
         if (kind == Kind::Independent) EXPECT_NEAR(slope, -0.5, 0.1);
         else EXPECT_LT(slope, kind == Kind::Stratified ? -0.8 : -1.2) << name(kind);
