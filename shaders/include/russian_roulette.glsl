@@ -7,8 +7,8 @@
 // step function of one well-stratified dimension instead of a product of coins from dimensions
 // the sampler keeps independent (sampler.glsl's padded blocks), so its variance falls as fast as
 // a one-dimensional integral's (bench/samplers.md, "Russian roulette from one number"). u has
-// 24 bits, so a bounce whose Q is below 2^-24 survives with 2^-24 rather than Q, as a coin's q
-// was rounded to 2^-24 before: a bias of at most 2^-24 of the radiance per bounce.
+// 24 bits, so a bounce whose Q is below 2^-24 survives with 2^-24 rather than Q, as a per-bounce
+// coin's q would be rounded to 2^-24: a bias of at most 2^-24 of the radiance per bounce.
 #ifndef RAYLAB_RUSSIAN_ROULETTE_GLSL
 #define RAYLAB_RUSSIAN_ROULETTE_GLSL
 #include "compat.glsl"

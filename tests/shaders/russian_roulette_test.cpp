@@ -48,6 +48,12 @@ double furnacePath(const Furnace& f, const std::function<float(int)>& number, bo
     return radiance;
 }
 
+// The sobol number a furnace path of `pixel` and sample s reads at `bounce` (bounce 0's slot is
+// SAMPLE_DIM_ROULETTE, the one-number roulette's; the others are the per-bounce coins' slots).
+float sobolRouletteNumber(uvec2 pixel, uint s, uint seed, int bounce) {
+    return sobolSample1D(pixel, s, sampleDim(bounce, SAMPLE_BOUNCE_ROULETTE), seed);
+}
+
 } // namespace
 
 TEST(RussianRoulette, OneNumberPerPathIsUnbiasedWithPathDependentProbabilities) {
@@ -96,9 +102,7 @@ TEST(RussianRoulette, SobolPathLengthsAreStratifiedInEachPixel) {
         for (uint px = 0; px < 8; ++px) {
             std::vector<int> alive(size_t(f.maxBounces + 2), 0);
             for (uint s = 0; s < n; ++s) {
-                const auto number = [&](int bounce) {
-                    return sobolSample1D(uvec2(px, 5u), s, bounce == 0 ? SAMPLE_DIM_ROULETTE : sampleDim(bounce, SAMPLE_BOUNCE_ROULETTE), 3u);
-                };
+                const auto number = [&](int bounce) { return sobolRouletteNumber(uvec2(px, 5u), s, 3u, bounce); };
                 // The path's length from its radiance: 0.875 for the three bounces before roulette,
                 // then 0.5 for each bounce after (beta is 1 after each survival).
                 const double L = furnacePath(f, number, oneNumber);
@@ -135,8 +139,7 @@ TEST(RussianRoulette, SobolClosedFurnaceConvergesAsAOneDimensionalIntegral) {
                 double sum = 0.0;
                 for (uint s = 0; s < n; ++s) {
                     const auto number = [&](int bounce) {
-                        return sobolSample1D(uvec2(px % 8u, px / 8u), s,
-                                             bounce == 0 ? SAMPLE_DIM_ROULETTE : sampleDim(bounce, SAMPLE_BOUNCE_ROULETTE), 1u);
+                        return sobolRouletteNumber(uvec2(px % 8u, px / 8u), s, 1u, bounce);
                     };
                     sum += furnacePath(f, number, oneNumber);
                 }
