@@ -12,10 +12,10 @@ RL_NAMESPACE_BEGIN
 // dimension means the same thing on every path. 2D pairs start on even offsets and a bounce is
 // two whole blocks of four, so sobol draws each pair from one 4D Sobol block.
 const uint SAMPLE_DIM_PIXEL = 0u;            // 2: position inside the pixel
-const uint SAMPLE_DIM_LENS = 2u;             // 2: point on the thin lens
+const uint SAMPLE_DIM_LENS = 2u;             // 2: point on the thin lens; bounce 0's BSDF direction without one
 const uint SAMPLE_DIM_BOUNCE = 4u;           // first dimension of bounce 0
 const uint SAMPLE_DIMS_PER_BOUNCE = 8u;
-const uint SAMPLE_BOUNCE_BSDF = 0u;          // 2: BSDF direction
+const uint SAMPLE_BOUNCE_BSDF = 0u;          // 2: BSDF direction (bsdfSampleDim)
 const uint SAMPLE_BOUNCE_LOBE = 2u;          // 1: lobe choice
 const uint SAMPLE_BOUNCE_LIGHT_CHOICE = 3u;  // 1: which light next-event estimation samples
 const uint SAMPLE_BOUNCE_LIGHT = 4u;         // 2: point on that light
@@ -23,6 +23,14 @@ const uint SAMPLE_BOUNCE_ROULETTE = 6u;      // 1: bounce 0's is Russian roulett
 
 RL_FN uint sampleDim(int bounce, uint offset) {
     return SAMPLE_DIM_BOUNCE + uint(bounce) * SAMPLE_DIMS_PER_BOUNCE + offset;
+}
+
+// A pinhole camera (RAYLAB_FEATURE_DOF 0) leaves the lens pair unused, and bounce 0's BSDF
+// direction takes it: the position in the pixel and the first scattered direction are then one 4D
+// Sobol block, stratified jointly instead of pair by pair (bench/samplers.md, "The first bounce
+// in the pixel's block").
+RL_FN uint bsdfSampleDim(int bounce, bool lens) {
+    return bounce == 0 && !lens ? SAMPLE_DIM_LENS : sampleDim(bounce, SAMPLE_BOUNCE_BSDF);
 }
 
 // Russian roulette takes one number per path, compared at every bounce with the product of the

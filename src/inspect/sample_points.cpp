@@ -4,10 +4,10 @@
 
 namespace raylab {
 
-std::uint32_t samplePairDimension(SamplePair pair, int bounce) {
+std::uint32_t samplePairDimension(SamplePair pair, int bounce, bool lens) {
     switch (pair) {
     case SamplePair::Lens: return glsl::SAMPLE_DIM_LENS;
-    case SamplePair::Bsdf: return glsl::sampleDim(bounce, glsl::SAMPLE_BOUNCE_BSDF);
+    case SamplePair::Bsdf: return glsl::bsdfSampleDim(bounce, lens);
     case SamplePair::Light: return glsl::sampleDim(bounce, glsl::SAMPLE_BOUNCE_LIGHT);
     default: return glsl::SAMPLE_DIM_PIXEL;
     }
@@ -15,7 +15,7 @@ std::uint32_t samplePairDimension(SamplePair pair, int bounce) {
 
 std::vector<glm::vec2> samplePoints(const SamplePointsQuery& q) {
     using namespace glsl;
-    const uint dim = samplePairDimension(q.pair, q.bounce);
+    const uint dim = samplePairDimension(q.pair, q.bounce, q.lens);
     const uint count = std::max(q.spp, 1u);
     std::vector<glm::vec2> points;
     points.reserve(q.count);

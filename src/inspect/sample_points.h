@@ -22,12 +22,13 @@ struct SamplePointsQuery {
     std::uint32_t spp = 64;      // render.spp: the strata of stratified, the block of zsobol
     SamplePair pair = SamplePair::Pixel;
     int bounce = 0;              // for Bsdf and Light
+    bool lens = true;            // the tracer's RAYLAB_FEATURE_DOF: without a lens, bounce 0's Bsdf is the lens pair
     std::uint32_t first = 0;     // first sample index of the pixel
     std::uint32_t count = 64;    // samples
 };
 
 // The first dimension of the pair (the second is the next one).
-std::uint32_t samplePairDimension(SamplePair pair, int bounce);
+std::uint32_t samplePairDimension(SamplePair pair, int bounce, bool lens);
 
 // Points in [0, 1)² of samples first … first + count − 1, as the tracer compiled with
 // query.sampler draws them; independent draws its numbers in call order, so its points are the

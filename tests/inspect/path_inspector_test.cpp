@@ -3,8 +3,11 @@
 #include "inspect/path_checks.h"
 #include "inspect/path_export.h"
 #include "inspect/path_inspector.h"
+#include "inspect/sample_points.h"
 #include "shaders/include/bindings.glsl"
+#include "shaders/include/frame.glsl"
 #include "shaders/include/path_record_layout.glsl"
+#include "shaders/include/sampling.glsl"
 #include "shaders/include/sphere.glsl"
 #include "render/path_tracer.h"
 #include "scene/scene_loader.h"
@@ -234,6 +237,47 @@ TEST_F(PathInspectorTest, RecordedPathMatchesACpuComputation) {
     EXPECT_GT(bouncesChecked, 60);
     EXPECT_GT(killed + survived, 10);   // roulette was played and recorded
     expectTermsMultiplyOut(inspector.record(12, 10, 48, 0), "two spheres");
+}
+
+// The first bounce's direction is drawn from the lens pair when the camera has no lens and from
+// bounce 0's own block when it has one (sampler.glsl bsdfSampleDim): the recorded direction is the
+// cosine-weighted direction of that pair's numbers in the recorded shading frame, and not the
+// other pair's.
+TEST_F(PathInspectorTest, FirstBounceTakesTheLensPairOnlyWithoutALens) {
+    for (float aperture : {0.0f, 0.05f}) {
+        Scene scene = parseScene(kTwoSpheres, "two_spheres.json");
+        scene.camera.aperture = aperture;
+        scene.camera.focusDistance = 4.0f;
+        PathInspector inspector;
+        inspector.setScene(scene);
+        const int x = 12, y = 10;
+        int checked = 0, otherPairDiffers = 0;
+        for (const PathRecord& p : inspector.record(x, y, 16, 0)) {
+            ASSERT_FALSE(p.bounces.empty());
+            const BounceRecord& b = p.bounces[0];
+            if (!b.hit || !b.sampled) continue;
+            SamplePointsQuery q;
+            q.sampler = scene.render.sampler;
+            q.pixel = glm::uvec2(x, scene.render.height - 1 - y);
+            q.seed = scene.render.seed;
+            q.spp = std::uint32_t(std::max(scene.render.spp, 1));
+            q.pair = SamplePair::Bsdf;
+            q.bounce = 0;
+            q.first = std::uint32_t(p.sample);
+            q.count = 1;
+            const auto direction = [&](bool lens) {
+                q.lens = lens;
+                const glsl::Frame frame = glsl::frameFromNormal(b.shadingNormal);
+                return glsl::frameToWorld(frame, glsl::sampleCosineHemisphere(samplePoints(q)[0]));
+            };
+            const std::string where = "aperture " + std::to_string(aperture) + " sample " + std::to_string(p.sample);
+            expectNear3(b.sampledDirection, direction(aperture > 0.0f), 1e-4f, where);
+            if (glm::length(direction(aperture == 0.0f) - b.sampledDirection) > 1e-2f) ++otherPairDiffers;
+            ++checked;
+        }
+        EXPECT_EQ(checked, 16) << "aperture " << aperture << ": every camera ray hits and scatters";
+        EXPECT_GE(otherPairDiffers, 15) << "aperture " << aperture;
+    }
 }
 
 // NEE of a constant sky from one sphere: the light sample's terms, computed on the CPU.

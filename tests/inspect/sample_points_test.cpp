@@ -29,7 +29,7 @@ std::vector<glm::vec2> shaderPoints(const ShaderProgram& program, const SamplePo
     program.set("uPixel", glm::ivec2(q.pixel));
     program.set("uSeed", q.seed);
     program.set("uSpp", q.spp);
-    program.set("uDim", samplePairDimension(q.pair, q.bounce));
+    program.set("uDim", samplePairDimension(q.pair, q.bounce, q.lens));
     glDispatchCompute((q.count + 63) / 64, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<glm::vec2> out(q.count);

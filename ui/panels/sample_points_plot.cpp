@@ -38,8 +38,9 @@ void drawSamplePointsPlot(Viewer& viewer, UiState& ui) {
     q.seed = r.seed;
     q.spp = std::uint32_t(std::max(r.spp, 1));
     q.pixel = glm::uvec2(std::uint32_t(std::max(x, 0)), std::uint32_t(std::max(h - 1 - y, 0)));
+    q.lens = viewer.tracer() == nullptr || viewer.tracer()->features().depthOfField;
     q.first = 0;
-    const std::uint32_t dim = samplePairDimension(q.pair, q.bounce);
+    const std::uint32_t dim = samplePairDimension(q.pair, q.bounce, q.lens);
     ImGui::Text("pixel (%d, %d)%s: samples 0-%u, dimensions %u-%u", x, y, in.active() ? "" : " (centre)", q.count - 1,
                 dim, dim + 1);
 
