@@ -359,13 +359,12 @@ bool sampleLd(Hit hit, ShadingPoint sp, SkyParams sky, vec3 beta, int bounce, in
 // A direction from the BSDF. Pure Lambert (f0 0, no glass) takes the short path of the foundation:
 // the same random numbers and f·cos/pdf = ρ exactly, without the general code's cost.
 BsdfSample sampleScattering(ShadingPoint sp, int bounce, inout Sampler smp) {
-    // bsdfSampleDim's choice written with a constant dimension on each side: sobol folds its
-    // matrices only for a known dimension (one call with bounce's cost the default scene 15 % more
-    // instructions per path, bench/samplers.md).
+    // bsdfSampleDim with a constant dimension on each side, as sobol folds its matrices only for a
+    // known one (bench/samplers.md, "The first bounce in the pixel's block").
 #if RAYLAB_FEATURE_DOF
     vec2 u = sample2D(smp, sampleDim(bounce, SAMPLE_BOUNCE_BSDF));
 #else
-    vec2 u = bounce == 0 ? sample2D(smp, SAMPLE_DIM_LENS) : sample2D(smp, sampleDim(bounce, SAMPLE_BOUNCE_BSDF));
+    vec2 u = bounce == 0 ? sample2D(smp, bsdfSampleDim(0, false)) : sample2D(smp, sampleDim(bounce, SAMPLE_BOUNCE_BSDF));
 #endif
 #if RAYLAB_DIFFUSE_SAMPLING == RAYLAB_DIFFUSE_UNIFORM
     if (!bsdfNeedsLobeChoice(sp.bsdf)) return bsdfSample(sp.bsdf, sp.wo, vec3(u.x, u.y, 0.0f));   // the short path is cosine's
