@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 namespace raylab {
 
@@ -73,6 +74,30 @@ double convergenceSlope(const std::vector<Checkpoint>& curve) {
         sxx += x * x;
     }
     return sxx > 0 ? sxy / sxx : 0.0;
+}
+
+std::vector<Checkpoint> meanOverSeeds(std::span<const std::vector<Checkpoint>> curves) {
+    if (curves.empty()) return {};
+    std::vector<Checkpoint> mean(curves.front().size());
+    for (const std::vector<Checkpoint>& c : curves) {
+        if (c.size() != mean.size()) throw std::invalid_argument("meanOverSeeds: curves of different lengths");
+        for (size_t i = 0; i < c.size(); ++i) {
+            if (c[i].spp != curves.front()[i].spp)
+                throw std::invalid_argument("meanOverSeeds: checkpoints at different spp");
+            mean[i].spp = c[i].spp;
+            mean[i].seconds += c[i].seconds;
+            mean[i].error.mse += c[i].error.mse;
+            mean[i].error.relMse += c[i].error.relMse;
+        }
+    }
+    const double n = double(curves.size());
+    for (Checkpoint& p : mean) {
+        p.seconds /= n;
+        p.error.mse /= n;
+        p.error.relMse /= n;
+        p.error.rmse = std::sqrt(p.error.mse);
+    }
+    return mean;
 }
 
 TimeToErrorGoal timeToErrorGoal(const std::vector<Checkpoint>& raylab, double raylabStartup,

@@ -32,6 +32,12 @@ double efficiency(const Checkpoint& c);
 // Least-squares slope of log RMSE against log spp (−0.5 for an unbiased estimator).
 double convergenceSlope(const std::vector<Checkpoint>& curve);
 
+// Several seeds' curves of one renderer as one: at each checkpoint the mean of their MSEs, RMSE its
+// root, and the mean of their times. The expected MSE is what a convergence rate and a time to
+// error describe; one seed's log–log slope scatters by ±0.1 at 96×54 (bench/samplers.md). Throws
+// std::invalid_argument when the curves' checkpoints differ.
+std::vector<Checkpoint> meanOverSeeds(std::span<const std::vector<Checkpoint>> curves);
+
 // The time-to-error goal at one error level: raylab's time to reach it, its start-up included, is
 // at most 1/goal of the peer's whole run (issue 13). Both curves reach the level: the ratio is
 // measured. One does not: its time lies past its last checkpoint, so the ratio is a bound, and

@@ -80,7 +80,9 @@ std::string cpuModel() {
     return "unknown CPU";
 }
 
-void writePlots(const fs::path& dir, const std::string& scene, const std::vector<std::string>& renderers) {
+// One line per renderer; seeds[i] is the CSV's seed column of the line to draw ("mean" or "1").
+void writePlots(const fs::path& dir, const std::string& scene, const std::vector<std::string>& renderers,
+                const std::vector<std::string>& seeds) {
     const fs::path script = dir / (scene + ".gp");
     std::ofstream gp(script);
     gp << "set terminal pngcairo size 900,380 font ',10' noenhanced\n"   // scene names keep their '_'
@@ -93,7 +95,8 @@ void writePlots(const fs::path& dir, const std::string& scene, const std::vector
     auto lines = [&](int xColumn) {
         for (size_t i = 0; i < renderers.size(); ++i)
             gp << (i ? ", " : "") << "'" << (dir / "convergence.csv").string() << "' using (strcol(1) eq '" << scene
-               << "' && strcol(2) eq '" << renderers[i] << "' && $7 > 0 ? $" << xColumn
+               << "' && strcol(2) eq '" << renderers[i] << "' && strcol(3) eq '" << seeds[i] << "' && $7 > 0 ? $"
+               << xColumn
                << " : 1/0):7 with linespoints title '" << renderers[i] << "'";
     };
     lines(5);
@@ -269,10 +272,14 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 runCycles(script, 1, o.threads, 1, work);
                 // Each point is a separate Blender run whose time jitters: the point's time is
                 // the median of peerTimingRuns runs, its error that of the first.
+                std::vector<std::vector<Checkpoint>> raylabSeeds;
+                for (const Curve& r : curves)
+                    if (r.renderer == "raylab") raylabSeeds.push_back(r.points);
+                const std::vector<Checkpoint> raylabMean = meanOverSeeds(raylabSeeds);
                 Curve c{"cycles", 1, {}};
                 for (int spp = 1; spp <= mode.peerExtendSpp; spp *= 2) {
                     if (spp > mode.peerMaxSpp &&
-                        !peerCurveUndecided(curves.front().points, c.points, kGoalLevels, imageMean(reference.mean),
+                        !peerCurveUndecided(raylabMean, c.points, kGoalLevels, imageMean(reference.mean),
                                             imageMean(peerReference.mean)))
                         break;
                     const CyclesRun r = runCycles(script, spp, o.threads, 1, work);
@@ -307,32 +314,62 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
             }
         }
 
+        // One row per renderer: its seeds' mean curve (meanOverSeeds), with the range of the seeds'
+        // own slopes beside the slope when there are several; the CSV has every seed and the mean.
         const double refMean = imageMean(reference.mean);
-        for (const Curve& c : curves) {
-            for (const Checkpoint& p : c.points)
-                csv << s.name << "," << c.renderer << "," << c.seed << "," << p.spp << "," << fmt("%.6g", p.seconds)
-                    << "," << fmt("%.6g", p.error.mse) << "," << fmt("%.6g", p.error.rmse) << ","
-                    << fmt("%.6g", p.error.relMse) << "\n";
-            if (c.seed != 1) continue;   // the table shows seed 1; the CSV has every seed
-            const Checkpoint& last = c.points.back();
+        std::vector<std::string> renderers;   // in the order they ran: raylab, its variants, Cycles
+        for (const Curve& c : curves)
+            if (std::find(renderers.begin(), renderers.end(), c.renderer) == renderers.end())
+                renderers.push_back(c.renderer);
+        std::vector<std::vector<Checkpoint>> means;
+        std::vector<std::string> plotted;   // the CSV seed column each plot line reads
+        for (const std::string& r : renderers) {
+            std::vector<std::vector<Checkpoint>> seeds;
+            for (const Curve& c : curves)
+                if (c.renderer == r) seeds.push_back(c.points);
+            means.push_back(meanOverSeeds(seeds));
+            plotted.push_back(seeds.size() > 1 ? "mean" : "1");
+        }
+        const auto csvRows = [&](const std::string& renderer, const std::string& seed, const std::vector<Checkpoint>& pts) {
+            for (const Checkpoint& p : pts)
+                csv << s.name << "," << renderer << "," << seed << "," << p.spp << "," << fmt("%.6g", p.seconds) << ","
+                    << fmt("%.6g", p.error.mse) << "," << fmt("%.6g", p.error.rmse) << "," << fmt("%.6g", p.error.relMse)
+                    << "\n";
+        };
+        for (const Curve& c : curves) csvRows(c.renderer, std::to_string(c.seed), c.points);
+        for (size_t k = 0; k < renderers.size(); ++k) {
+            double slopeMin = 0.0, slopeMax = 0.0;
+            int seedCount = 0;
+            for (const Curve& c : curves) {
+                if (c.renderer != renderers[k]) continue;
+                const double slope = convergenceSlope(c.points);
+                slopeMin = seedCount ? std::min(slopeMin, slope) : slope;
+                slopeMax = seedCount ? std::max(slopeMax, slope) : slope;
+                ++seedCount;
+            }
+            if (seedCount > 1) csvRows(renderers[k], "mean", means[k]);
+            const Checkpoint& last = means[k].back();
             const bool exact = last.error.rmse < 1e-7;
-            summary << "| " << s.name << " | " << c.renderer << " | "
-                    << (c.renderer == "cycles" ? peerReference.description : reference.description) << " | "
+            summary << "| " << s.name << " | " << renderers[k] << " | "
+                    << (renderers[k] == "cycles" ? peerReference.description : reference.description) << " | "
                     << last.spp << " | " << fmt("%.3f", last.seconds) << " | " << fmt("%.3g", last.error.rmse) << " | "
                     << fmt("%.3g", last.error.relMse) << " | "
-                    << (exact ? std::string("exact") : fmt("%.2f", convergenceSlope(c.points))) << " | "
-                    << (exact ? std::string("∞ (zero variance)") : fmt("%.4g", efficiency(last)));
+                    << (exact ? std::string("exact")
+                              : fmt("%.2f", convergenceSlope(means[k])) +
+                                    (seedCount > 1 ? " (" + fmt("%.2f", slopeMax) + " to " + fmt("%.2f", slopeMin) + ")"
+                                                   : std::string()))
+                    << " | " << (exact ? std::string("∞ (zero variance)") : fmt("%.4g", efficiency(last)));
             for (double l : kLevels) {
-                const double t = exact ? c.points.front().seconds : timeToReach(c.points, l * refMean);
+                const double t = exact ? means[k].front().seconds : timeToReach(means[k], l * refMean);
                 summary << " | " << (t < 0 ? std::string("not reached") : fmt("%.3g", t));
             }
             summary << " |\n";
         }
-        if (runPeer && curves.size() >= 2 && curves.back().renderer == "cycles") {
+        if (runPeer && means.size() >= 2 && renderers.back() == "cycles") {
             // Cycles' time per run = fixed cost (scene sync, BVH build) + per-sample cost: a
             // least-squares line through (spp, seconds) separates them, so ratios can be given
             // both for whole runs and for the sampling work alone.
-            const auto& pts = curves.back().points;
+            const auto& pts = means.back();
             double mx = 0, my = 0, sxy = 0, sxx = 0;
             for (const Checkpoint& p : pts) {
                 mx += double(p.spp);
@@ -354,18 +391,18 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                                        : fmt("%.3g", my) + " s, no cost per sample resolved (the runs' times "
                                                             "jitter more than their sampling adds)")
                    << "; raylab "
-                   << fmt("%.3g", curves.front().points.back().seconds * 1e3 / double(curves.front().points.back().spp))
+                   << fmt("%.3g", means.front().back().seconds * 1e3 / double(means.front().back().spp))
                    << " ms per sample per pixel after a one-off startup of " << fmt("%.3g", startupSeconds)
                    << " s (scene load and shader compile)\n";
             // The goal's levels, raylab's start-up included (the convergence table's times are
             // tracing only).
             for (double l : kGoalLevels) {
-                const TimeToErrorGoal g = timeToErrorGoal(curves.front().points, startupSeconds, curves.back().points,
+                const TimeToErrorGoal g = timeToErrorGoal(means.front(), startupSeconds, means.back(),
                                                           l * refMean, l * imageMean(peerReference.mean), kGoalRatio);
-                const auto& peerPts = curves.back().points;
+                const auto& peerPts = means.back();
                 goals << "| " << s.name << " | " << int(l * 100) << " % | "
                       << (g.raylabSeconds > 0.0 ? fmt("%.3g", g.raylabSeconds)
-                                                : "not in " + std::to_string(curves.front().points.back().spp) + " spp")
+                                                : "not in " + std::to_string(means.front().back().spp) + " spp")
                       << " | "
                       << (g.peerSeconds >= 0.0 ? fmt("%.3g", g.peerSeconds)
                                                : "not in " + std::to_string(peerPts.back().spp) + " spp (" +
@@ -395,10 +432,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
             }
         }
         csv.flush();
-        std::vector<std::string> renderers;
-        for (const Curve& c : curves)
-            if (c.seed == 1) renderers.push_back(c.renderer);
-        if (curves.front().points.back().error.rmse > 0.0) writePlots(outDir, s.name, renderers);
+        if (means.front().back().error.rmse > 0.0) writePlots(outDir, s.name, renderers, plotted);
     }
 
     const std::time_t now = std::time(nullptr);
@@ -426,7 +460,14 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                        (mode.peerTimingRuns > 1 ? " (median of " + std::to_string(mode.peerTimingRuns) + " runs)"
                                                 : std::string(" (one run per point)"))
                      : "not run: " + (peerWanted ? peerWhy : std::string("--peer off")))
-       << "\n- slope: log–log slope of RMSE against spp (−0.5 when unbiased); efficiency at the last checkpoint\n\n"
+       << (mode.seeds > 1
+               ? "\n- seeds: raylab renders each curve with seeds 1 … " + std::to_string(mode.seeds) +
+                     "; its rows, times to error and goal take the seeds' mean MSE at each checkpoint (RMSE its "
+                     "root, time their mean); Cycles' curve is one seed"
+               : std::string())
+       << "\n- slope: log–log slope of RMSE against spp (−0.5 when unbiased)"
+       << (mode.seeds > 1 ? ", in brackets the range of the seeds' own slopes" : "")
+       << "; efficiency at the last checkpoint\n\n"
        << summary.str();
     if (!ratios.str().empty()) md << "\n## raylab and Cycles\n\n" << ratios.str();
     if (!goals.str().empty())

@@ -103,6 +103,30 @@ TEST(BenchConvergence, TimeToReachTakesTheCheapestRunThatGetsThere) {
     EXPECT_LE(timeToReach(curve, 0.6), timeToReach(curve, 0.25));
 }
 
+TEST(BenchConvergence, MeanOverSeedsAveragesMseNotRmse) {
+    // Two seeds at RMSE 1/√spp and 3/√spp: the mean MSE is 5/spp, so the RMSE is √5/√spp (the mean
+    // of the RMSEs, 2/√spp, would understate it) and the slope stays −0.5; times are averaged.
+    std::vector<std::vector<Checkpoint>> seeds = {sqrtCurve(64, 0.01, 1.0), sqrtCurve(64, 0.03, 3.0)};
+    for (auto& c : seeds)
+        for (Checkpoint& p : c) p.error.mse = p.error.rmse * p.error.rmse;
+    const std::vector<Checkpoint> mean = meanOverSeeds(seeds);
+    ASSERT_EQ(mean.size(), seeds[0].size());
+    for (const Checkpoint& p : mean) {
+        EXPECT_NEAR(p.error.mse, 5.0 / double(p.spp), 1e-12);
+        EXPECT_NEAR(p.error.rmse, std::sqrt(5.0 / double(p.spp)), 1e-12);
+        EXPECT_NEAR(p.seconds, 0.02 * double(p.spp), 1e-12);
+    }
+    EXPECT_NEAR(convergenceSlope(mean), -0.5, 1e-9);
+    // A lone seed is its own mean; curves that do not share their checkpoints cannot be averaged.
+    const std::vector<Checkpoint> one = meanOverSeeds(std::span(seeds).first(1));
+    EXPECT_NEAR(one.back().error.rmse, seeds[0].back().error.rmse, 1e-12);
+    seeds[1].pop_back();
+    EXPECT_THROW(meanOverSeeds(seeds), std::invalid_argument);
+    seeds[1] = sqrtCurve(64, 0.03, 3.0);
+    seeds[1][2].spp = 5;
+    EXPECT_THROW(meanOverSeeds(seeds), std::invalid_argument);
+}
+
 TEST(BenchConvergence, TimeToErrorGoalIsARatioWhenBothReachAndABoundOtherwise) {
     // raylab: RMSE = 1/sqrt(spp) at 1 ms per spp up to 1024 spp, 0.05 s start-up. Peer: the same
     // RMSE at 10 ms per spp up to 64 spp (separate runs).
@@ -485,13 +509,18 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     EXPECT_NE(csv.str().find("scene,renderer,seed,spp,seconds,mse,rmse,relmse"), std::string::npos);
     EXPECT_NE(csv.str().find("cf,raylab,2,64,"), std::string::npos) << csv.str();
     EXPECT_NE(md.str().find("| cf | raylab | analytic [1, 1, 1] | 64 |"), std::string::npos) << md.str();
+    // Two seeds: the CSV adds their mean curve, the row gives the seeds' slope range, the plot draws
+    // the mean.
+    EXPECT_NE(csv.str().find("cf,raylab,mean,64,"), std::string::npos) << csv.str();
+    EXPECT_NE(md.str().find("- seeds: raylab renders each curve with seeds 1 … 2"), std::string::npos) << md.str();
+    EXPECT_NE(md.str().find(" to -"), std::string::npos) << md.str();
     // A variant is one more curve of the same scene against the same reference, in the CSV, the
     // table and the plot script.
     EXPECT_NE(csv.str().find("cf,raylab:rpp2,2,64,"), std::string::npos) << csv.str();
     EXPECT_NE(md.str().find("| cf | raylab:rpp2 | analytic [1, 1, 1] | 64 |"), std::string::npos) << md.str();
     std::stringstream gp;
     gp << std::ifstream(dir / "out" / "quick" / "cf.gp").rdbuf();
-    EXPECT_NE(gp.str().find("strcol(2) eq 'raylab:rpp2'"), std::string::npos) << gp.str();
+    EXPECT_NE(gp.str().find("strcol(2) eq 'raylab:rpp2' && strcol(3) eq 'mean'"), std::string::npos) << gp.str();
     EXPECT_NE(md.str().find("- command: `"), std::string::npos);
     EXPECT_NE(md.str().find("--peer off"), std::string::npos);
     // The figures name what made them: the GL renderer and how long the run took.
