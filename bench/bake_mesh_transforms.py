@@ -57,9 +57,8 @@ def main():
             if k.endswith("_texture") and isinstance(v, str) and not os.path.isabs(v):
                 m[k] = os.path.join(base, v)
     for obj in scene.get("objects", []):
-        for k in ("file",):
-            if isinstance(obj.get(k), str) and not os.path.isabs(obj[k]):
-                obj[k] = os.path.join(base, obj[k])
+        if isinstance(obj.get("file"), str) and not os.path.isabs(obj["file"]):
+            obj["file"] = os.path.join(base, obj["file"])
         bake(obj)
     with open(dst, "w") as f:
         json.dump(scene, f)

@@ -33,9 +33,8 @@ double efficiency(const Checkpoint& c);
 double convergenceSlope(const std::vector<Checkpoint>& curve);
 
 // Several seeds' curves of one renderer as one: at each checkpoint the mean of their MSEs, RMSE its
-// root, and the mean of their times. The expected MSE is what a convergence rate and a time to
-// error describe; one seed's log–log slope scatters by ±0.1 at 96×54 (bench/samplers.md). Throws
-// std::invalid_argument when the curves' checkpoints differ.
+// root, and the mean of their times, since the expected MSE is what a convergence rate and a time
+// to error describe (bench/samplers.md). Throws std::invalid_argument when the checkpoints differ.
 std::vector<Checkpoint> meanOverSeeds(std::span<const std::vector<Checkpoint>> curves);
 
 // The time-to-error goal at one error level: raylab's time to reach it, its start-up included, is

@@ -56,6 +56,14 @@ struct Curve {
     std::vector<Checkpoint> points;
 };
 
+// One renderer's curves, one per seed, in the order they ran.
+std::vector<std::vector<Checkpoint>> seedCurves(const std::vector<Curve>& curves, const std::string& renderer) {
+    std::vector<std::vector<Checkpoint>> out;
+    for (const Curve& c : curves)
+        if (c.renderer == renderer) out.push_back(c.points);
+    return out;
+}
+
 // Relative error levels for "time to reach": RMSE as a fraction of the reference's mean.
 constexpr double kLevels[] = {0.10, 0.05, 0.02};
 // The time-to-error goal: at these levels, Cycles' run takes at least kGoalRatio × raylab's.
@@ -130,6 +138,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         if (mode.peerExtendSpp < mode.peerMaxSpp)
             throw std::runtime_error("modes." + o.mode + ".peer_extend_spp must be at least peer_max_spp");
         if (mode.peerTimingRuns < 1) throw std::runtime_error("modes." + o.mode + ".peer_timing_runs must be at least 1");
+        if (mode.seeds < 1) throw std::runtime_error("modes." + o.mode + ".seeds must be at least 1");
         for (const auto& s : j.at("scenes")) {
             SuiteScene e;
             e.name = s.at("name");
@@ -272,10 +281,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 runCycles(script, 1, o.threads, 1, work);
                 // Each point is a separate Blender run whose time jitters: the point's time is
                 // the median of peerTimingRuns runs, its error that of the first.
-                std::vector<std::vector<Checkpoint>> raylabSeeds;
-                for (const Curve& r : curves)
-                    if (r.renderer == "raylab") raylabSeeds.push_back(r.points);
-                const std::vector<Checkpoint> raylabMean = meanOverSeeds(raylabSeeds);
+                const std::vector<Checkpoint> raylabMean = meanOverSeeds(seedCurves(curves, "raylab"));
                 Curve c{"cycles", 1, {}};
                 for (int spp = 1; spp <= mode.peerExtendSpp; spp *= 2) {
                     if (spp > mode.peerMaxSpp &&
@@ -324,9 +330,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         std::vector<std::vector<Checkpoint>> means;
         std::vector<std::string> plotted;   // the CSV seed column each plot line reads
         for (const std::string& r : renderers) {
-            std::vector<std::vector<Checkpoint>> seeds;
-            for (const Curve& c : curves)
-                if (c.renderer == r) seeds.push_back(c.points);
+            const std::vector<std::vector<Checkpoint>> seeds = seedCurves(curves, r);
             means.push_back(meanOverSeeds(seeds));
             plotted.push_back(seeds.size() > 1 ? "mean" : "1");
         }
@@ -338,16 +342,11 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         };
         for (const Curve& c : curves) csvRows(c.renderer, std::to_string(c.seed), c.points);
         for (size_t k = 0; k < renderers.size(); ++k) {
-            double slopeMin = 0.0, slopeMax = 0.0;
-            int seedCount = 0;
-            for (const Curve& c : curves) {
-                if (c.renderer != renderers[k]) continue;
-                const double slope = convergenceSlope(c.points);
-                slopeMin = seedCount ? std::min(slopeMin, slope) : slope;
-                slopeMax = seedCount ? std::max(slopeMax, slope) : slope;
-                ++seedCount;
-            }
-            if (seedCount > 1) csvRows(renderers[k], "mean", means[k]);
+            std::vector<double> slopes;
+            for (const std::vector<Checkpoint>& seed : seedCurves(curves, renderers[k]))
+                slopes.push_back(convergenceSlope(seed));
+            const auto [slopeMin, slopeMax] = std::minmax_element(slopes.begin(), slopes.end());
+            if (slopes.size() > 1) csvRows(renderers[k], "mean", means[k]);
             const Checkpoint& last = means[k].back();
             const bool exact = last.error.rmse < 1e-7;
             summary << "| " << s.name << " | " << renderers[k] << " | "
@@ -356,8 +355,9 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     << fmt("%.3g", last.error.relMse) << " | "
                     << (exact ? std::string("exact")
                               : fmt("%.2f", convergenceSlope(means[k])) +
-                                    (seedCount > 1 ? " (" + fmt("%.2f", slopeMax) + " to " + fmt("%.2f", slopeMin) + ")"
-                                                   : std::string()))
+                                    (slopes.size() > 1
+                                         ? " (" + fmt("%.2f", *slopeMax) + " to " + fmt("%.2f", *slopeMin) + ")"
+                                         : std::string()))
                     << " | " << (exact ? std::string("∞ (zero variance)") : fmt("%.4g", efficiency(last)));
             for (double l : kLevels) {
                 const double t = exact ? means[k].front().seconds : timeToReach(means[k], l * refMean);

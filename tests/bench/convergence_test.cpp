@@ -529,36 +529,34 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
 }
 
 TEST(BenchConvergenceCli, BadSuiteNamesTheFileAndTheKey) {
-    // peer_timing_runs is how many Blender runs give each Cycles point its median time: zero
-    // would leave a point with no time, so the suite is refused before anything runs.
     const fs::path dir = scratch();
-    std::ofstream(dir / "bad_suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, "seeds": 1,
-        "reference_spp": 4, "reference_batches": 2, "peer_max_spp": 1, "peer_timing_runs": 0}},
-        "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
     const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
                             "' convergence --suite '" + (dir / "bad_suite.json").string() + "' --out '" +
                             (dir / "bad_out").string() + "' --peer off > '" + (dir / "bad_log.txt").string() + "' 2>&1";
-    const int raw = std::system(cmd.c_str());
-    std::stringstream log;
-    log << std::ifstream(dir / "bad_log.txt").rdbuf();
-    ASSERT_TRUE(WIFEXITED(raw));
-    EXPECT_EQ(WEXITSTATUS(raw), 1) << log.str();
-    EXPECT_NE(log.str().find("bad_suite.json: error: modes.quick.peer_timing_runs must be at least 1"), std::string::npos)
-        << log.str();
-    EXPECT_FALSE(fs::exists(dir / "bad_out" / "quick" / "summary.md"));
+    // A quick mode with `keys` on a one-scene suite is refused before anything runs: exit 1, the
+    // file and the key path in the message, no summary written.
+    const auto refused = [&](const std::string& keys, const std::string& message) {
+        SCOPED_TRACE(keys);
+        std::ofstream(dir / "bad_suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, )" << keys
+                                              << R"(, "reference_spp": 4, "reference_batches": 2}},
+            "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
+        const int raw = std::system(cmd.c_str());
+        std::stringstream log;
+        log << std::ifstream(dir / "bad_log.txt").rdbuf();
+        ASSERT_TRUE(WIFEXITED(raw));
+        EXPECT_EQ(WEXITSTATUS(raw), 1) << log.str();
+        EXPECT_NE(log.str().find("bad_suite.json: error: " + message), std::string::npos) << log.str();
+        EXPECT_FALSE(fs::exists(dir / "bad_out" / "quick" / "summary.md"));
+    };
+    // peer_timing_runs is how many Blender runs give each Cycles point its median time: zero
+    // would leave a point with no time.
+    refused(R"("seeds": 1, "peer_max_spp": 1, "peer_timing_runs": 0)",
+            "modes.quick.peer_timing_runs must be at least 1");
     // peer_extend_spp is where Cycles' curve may go on to: below peer_max_spp it is refused too.
-    std::ofstream(dir / "bad_suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, "seeds": 1,
-        "reference_spp": 4, "reference_batches": 2, "peer_max_spp": 8, "peer_extend_spp": 4}},
-        "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
-    const int raw2 = std::system(cmd.c_str());
-    ASSERT_TRUE(WIFEXITED(raw2));
-    EXPECT_EQ(WEXITSTATUS(raw2), 1);
-    log.str("");
-    log << std::ifstream(dir / "bad_log.txt").rdbuf();
-    EXPECT_NE(log.str().find("bad_suite.json: error: modes.quick.peer_extend_spp must be at least peer_max_spp"),
-              std::string::npos)
-        << log.str();
-    EXPECT_FALSE(fs::exists(dir / "bad_out" / "quick" / "summary.md"));
+    refused(R"("seeds": 1, "peer_max_spp": 8, "peer_extend_spp": 4)",
+            "modes.quick.peer_extend_spp must be at least peer_max_spp");
+    // seeds is how many raylab curves each row averages: zero would leave a row with no curve.
+    refused(R"("seeds": 0, "peer_max_spp": 1)", "modes.quick.seeds must be at least 1");
 }
 
 TEST(BenchConvergenceCli, RunsThroughEglAndSaysSo) {
