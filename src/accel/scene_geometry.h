@@ -1,7 +1,8 @@
 #pragma once
 // A scene's geometry in the GPU layout of shaders/include/geometry_types.glsl: per-mesh BVHs
 // (built once per mesh, in object space) and a top-level BVH over the objects' world bounds.
-// Moving objects only needs updateTopLevel: the mesh BVHs stay as they are.
+// Moving objects only needs updateTopLevel, unless the meshes' transforms are baked into their
+// vertices (meshesInWorld; render/baked_mesh_transforms.h): then a moved mesh is built again.
 #include "accel/bvh.h"
 #include "scene/scene.h"
 
@@ -20,6 +21,9 @@ struct SceneGeometry {
     std::vector<std::uint32_t> meshRoot;   // per mesh: its root node in meshNodes
     std::vector<Aabb> meshBounds;          // per mesh: object-space bounds
     std::vector<glm::uvec2> meshTriangles; // per mesh: its first triangle in triangles and its count
+    // The meshes' vertices are in world space, their transforms applied (GpuScene with
+    // render/baked_mesh_transforms.h), and every instance is placed by the identity.
+    bool meshesInWorld = false;
     // Top level.
     std::vector<glsl::GpuSphere> spheres;       // world space
     std::vector<glsl::GpuInstance> instances;   // in top-level leaf order

@@ -1,6 +1,7 @@
 #include "render/gpu_scene.h"
 
 #include "io/image_io.h"
+#include "render/baked_mesh_transforms.h"
 #include "render/camera_relative.h"
 #include "render/environment_distribution.h"
 #include "render/light_list.h"
@@ -104,12 +105,25 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &triangleLightIndexBuffer_);
 }
 
-void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
-    geometry_ = buildSceneGeometry(scene);
+SceneGeometry& GpuScene::gpuMeshes() {
+    return geometry_.meshesInWorld ? relativeMeshes_ : geometry_;
+}
+
+void GpuScene::uploadMeshes(const Scene& scene, const glm::dvec3& origin) {
+    // Baked transforms (render/baked_mesh_transforms.h): the CPU's geometry in world space, the
+    // GPU's relative to the origin, both built from the vertices in double.
+    const bool bake = bakesMeshTransforms(scene);
+    geometry_ = buildSceneGeometry(bake ? withMeshTransformsBaked(scene) : scene);
+    geometry_.meshesInWorld = bake;
+    relativeMeshes_ = bake ? buildSceneGeometry(withMeshTransformsBaked(scene, origin)) : SceneGeometry{};
     ++meshBvhBuilds_;
-    uploadBuffer(geometryBuffers_[1], geometry_.meshNodes);
+    uploadBuffer(geometryBuffers_[1], gpuMeshes().meshNodes);
     attachGeometryTexels(1);
-    uploadBuffer(geometryBuffers_[4], geometry_.vertices);
+    uploadBuffer(geometryBuffers_[4], gpuMeshes().vertices);
+}
+
+void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
+    uploadMeshes(scene, origin);
     uploadSkyMap(scene.sky);
     // Textures: all levels of all textures in one texel array; see shaders/include/scene_textures.glsl.
     std::vector<glm::vec4> texels;
@@ -119,7 +133,7 @@ void GpuScene::upload(const Scene& scene, const glm::dvec3& origin) {
     attachTexels(textureTexels_, textureBuffers_[0], "the scene's textures need");
     uploadMaterials(scene);
     uploadTopLevel(scene, origin);   // spheres, instances, top-level BVH and the lights (needs materialRadiance_)
-    uploadBuffer(geometryBuffers_[3], geometry_.triangles);
+    uploadBuffer(geometryBuffers_[3], gpuMeshes().triangles);
     attachGeometryTexels(3);
 }
 
@@ -171,7 +185,14 @@ void GpuScene::uploadMaterials(const Scene& scene) {
 }
 
 void GpuScene::updateTransforms(const Scene& scene, const glm::dvec3& origin) {
-    updateTopLevel(geometry_, scene);
+    if (geometry_.meshesInWorld) {
+        // The transforms (and the origin) are in the vertices: the few triangles are placed again.
+        uploadMeshes(scene, origin);
+        uploadBuffer(geometryBuffers_[3], gpuMeshes().triangles);
+        attachGeometryTexels(3);
+    } else {
+        updateTopLevel(geometry_, scene);
+    }
     ++topLevelUpdates_;
     uploadTopLevel(scene, origin);
 }
@@ -179,16 +200,20 @@ void GpuScene::updateTransforms(const Scene& scene, const glm::dvec3& origin) {
 void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     // The top level again over the camera-relative scene; the meshes' BVHs, triangles and vertices
     // are in object space, the same for both, and are lent to it for the light list.
-    const Scene relative = cameraRelative(scene, origin);
-    relativeTop_.meshRoot = geometry_.meshRoot;
-    relativeTop_.meshBounds = geometry_.meshBounds;
-    relativeTop_.meshTriangles = geometry_.meshTriangles;
+    // Baked meshes are already relative to the origin: they are placed by the identity.
+    Scene relative = cameraRelative(scene, origin);
+    if (geometry_.meshesInWorld)
+        for (Mesh& m : relative.meshes) m.transform = Transform{};
+    SceneGeometry& meshes = gpuMeshes();
+    relativeTop_.meshRoot = meshes.meshRoot;
+    relativeTop_.meshBounds = meshes.meshBounds;
+    relativeTop_.meshTriangles = meshes.meshTriangles;
     updateTopLevel(relativeTop_, relative);
-    std::swap(relativeTop_.triangles, geometry_.triangles);
-    std::swap(relativeTop_.vertices, geometry_.vertices);
+    std::swap(relativeTop_.triangles, meshes.triangles);
+    std::swap(relativeTop_.vertices, meshes.vertices);
     LightList lights = buildLightList(relative, relativeTop_, materialRadiance_);
-    std::swap(relativeTop_.triangles, geometry_.triangles);
-    std::swap(relativeTop_.vertices, geometry_.vertices);
+    std::swap(relativeTop_.triangles, meshes.triangles);
+    std::swap(relativeTop_.vertices, meshes.vertices);
 
     sphereCount_ = int(relativeTop_.spheres.size());
     uploadBuffer(sphereBuffer_, relativeTop_.spheres);

@@ -21,7 +21,8 @@ public:
     GpuScene& operator=(const GpuScene&) = delete;
 
     void upload(const Scene& scene, const glm::dvec3& origin = glm::dvec3(0.0));
-    // Objects moved (transforms, sphere centres) or a new origin: rebuilds only the top-level BVH.
+    // Objects moved (transforms, sphere centres) or a new origin: rebuilds only the top-level BVH,
+    // and the meshes' few triangles where their transforms are baked (render/baked_mesh_transforms.h).
     void updateTransforms(const Scene& scene, const glm::dvec3& origin = glm::dvec3(0.0));
     // Materials' values edited (not which textures they use, nor how many there are): re-uploads
     // the material records and the light list; geometry, BVHs, textures and the sky stay.
@@ -70,6 +71,11 @@ private:
     unsigned textureTexels_ = 0;   // texture-buffer view of textureBuffers_[0] (scene_textures.glsl)
     unsigned materialTexels_ = 0;  // texture-buffer view of materialBuffer_ (scene_data.glsl materialAt)
     void uploadTopLevel(const Scene& scene, const glm::dvec3& origin);
+    // Builds geometry_ and, where the meshes' transforms are baked (bakesMeshTransforms),
+    // relativeMeshes_; uploads the GPU's mesh nodes and vertices (its triangles after the top level).
+    void uploadMeshes(const Scene& scene, const glm::dvec3& origin);
+    SceneGeometry& gpuMeshes();      // the meshes as the GPU holds them
+    SceneGeometry relativeMeshes_;   // baked meshes relative to the origin (empty when not baked)
     SceneGeometry relativeTop_;   // spheres, instances and top nodes as uploaded (mesh data stays in geometry_)
     unsigned triangleLightBuffer_ = 0;   // emissive triangles
     unsigned lightAliasBuffer_ = 0;      // alias table over all lights, by power

@@ -1,5 +1,6 @@
 #include "render/shader_variant.h"
 
+#include "render/baked_mesh_transforms.h"
 #include "render/gpu_scene.h"
 #include "render/light_list.h"
 #include "render/tracer_defines.h"
@@ -20,8 +21,8 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.linearTopLevel = scene.spheres.size() + scene.meshes.size() <= kLinearTopLevelMax;
     f.smallMeshes = f.meshes;
     for (const Mesh& m : scene.meshes) f.smallMeshes &= m.triangles.size() <= kSmallMeshMax;
-    f.sharedMeshTransform = f.smallMeshes && f.linearTopLevel;
-    for (const Mesh& m : scene.meshes) f.sharedMeshTransform &= m.transform == scene.meshes.front().transform;
+    // The GPU scene applies such meshes' transforms to their vertices: all are placed by the identity.
+    f.sharedMeshTransform = bakesMeshTransforms(scene);
     f.showMipLevel = f.textures && scene.render.showMipLevel != 0;
     f.nee = scene.render.nee;
     f.generalBsdf = false;

@@ -34,8 +34,8 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes+one-transform");
     s.meshes.push_back(s.meshes[0]);
     s.meshes[1].transform.translation.x = 1.0f;
-    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes")
-        << "meshes placed by different transforms";
+    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes+one-transform")
+        << "meshes placed by different transforms: baked into their vertices, all placed by the identity";
     for (int i = 0; i < 20; ++i) s.spheres.push_back(Sphere{});
     EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof") << "many objects: top-level BVH";
     const ShaderDefines d = on(featureDefines(sceneFeatures(spheres)));

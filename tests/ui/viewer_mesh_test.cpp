@@ -111,7 +111,7 @@ TEST_F(ViewerMeshTest, AMeshMaterialEditChangesTheImageAndCompilesNothing) {
     EXPECT_NE(viewer->shaderVariant(), variant);
 }
 
-TEST_F(ViewerMeshTest, MovingAMeshKeepsItsBvhAndTheObjectMovesInTheImage) {
+TEST_F(ViewerMeshTest, MovingAMeshPlacesItsBakedTrianglesAgainAndTheObjectMovesInTheImage) {
     viewer->setDebugView(DebugView::ObjectId);
     ASSERT_EQ(viewer->debugView(), DebugView::ObjectId) << viewer->document().lastError();
     const int block = int(viewer->scene().meshes.size()) - 1;   // the tall block
@@ -125,17 +125,18 @@ TEST_F(ViewerMeshTest, MovingAMeshKeepsItsBvhAndTheObjectMovesInTheImage) {
     const std::uint64_t builds = gpu.meshBvhBuilds(), updates = gpu.topLevelUpdates();
     const std::size_t compiled = viewer->tracer()->compiledVariants();
     ASSERT_TRUE(viewer->document().set("objects." + std::to_string(block) + ".transform.translation", "[-200, 0, 0]"));
-    EXPECT_EQ(gpu.meshBvhBuilds(), builds) << "the meshes' BVHs stay";
-    EXPECT_EQ(gpu.topLevelUpdates(), updates + 1) << "only the top level is rebuilt";
-    // The box's meshes shared one transform (RAYLAB_SHARED_MESH_TRANSFORM) and no longer do: the
-    // first move compiles the variant without that feature, once; a drag's later moves compile nothing.
-    EXPECT_EQ(viewer->tracer()->compiledVariants(), compiled + 1);
-    EXPECT_EQ(viewer->shaderVariant().find("one-transform"), std::string::npos) << viewer->shaderVariant();
+    // The box's small meshes have their transforms baked into their vertices
+    // (render/baked_mesh_transforms.h): a move places their few triangles again, keeps the
+    // one-transform variant and compiles nothing.
+    EXPECT_EQ(gpu.meshBvhBuilds(), builds + 1) << "the baked triangles are placed again";
+    EXPECT_EQ(gpu.topLevelUpdates(), updates + 1);
+    EXPECT_EQ(viewer->tracer()->compiledVariants(), compiled) << "the same features: no compile";
+    EXPECT_NE(viewer->shaderVariant().find("one-transform"), std::string::npos) << viewer->shaderVariant();
     ASSERT_TRUE(viewer->document().set("objects." + std::to_string(block) + ".transform.translation", "[-201, 0, 0]"));
     ASSERT_TRUE(viewer->document().set("objects." + std::to_string(block) + ".transform.translation", "[-200, 0, 0]"));
-    EXPECT_EQ(gpu.meshBvhBuilds(), builds) << "the meshes' BVHs stay";
+    EXPECT_EQ(gpu.meshBvhBuilds(), builds + 3);
     EXPECT_EQ(gpu.topLevelUpdates(), updates + 3);
-    EXPECT_EQ(viewer->tracer()->compiledVariants(), compiled + 1) << "the same features: no compile";
+    EXPECT_EQ(viewer->tracer()->compiledVariants(), compiled) << "the same features: no compile";
     EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 0u);
     EXPECT_EQ(viewer->scene().meshes.back().transform.translation, shift);
     // The CPU copy the picking uses moved too.
@@ -167,22 +168,26 @@ TEST_F(ViewerMeshTest, ACameraEditUploadsNoSceneBuffers) {
     EXPECT_GT(change / float(before.rgba.size()), 0.01f) << "the narrower view shows";
 }
 
-TEST_F(ViewerMeshTest, AReloadThatOnlyMovesAMeshKeepsItsBvh) {
+TEST_F(ViewerMeshTest, AReloadThatOnlyMovesAMeshIsATransformUpdate) {
     const auto file = std::filesystem::temp_directory_path() / "raylab_viewer_mesh_reload.json";
     Scene s = viewer->scene();
     std::ofstream(file) << sceneToJson(s).dump();
     ASSERT_TRUE(viewer->openScene(file)) << viewer->document().lastError();
     const auto& gpu = viewer->tracer()->gpuScene();
-    const std::uint64_t builds = gpu.meshBvhBuilds();
+    const std::uint64_t builds = gpu.meshBvhBuilds(), updates = gpu.topLevelUpdates();
     s.meshes.back().transform.translation = glm::vec3(-50.0f, 0.0f, 0.0f);
     std::ofstream(file) << sceneToJson(s).dump();
     ASSERT_TRUE(viewer->openScene(file)) << viewer->document().lastError();
-    EXPECT_EQ(gpu.meshBvhBuilds(), builds);
+    // The box's small meshes are baked (render/baked_mesh_transforms.h): a move places their few
+    // triangles again through the transform update, not a full upload.
+    EXPECT_EQ(gpu.topLevelUpdates(), updates + 1) << "a move: a transform update";
+    EXPECT_EQ(gpu.meshBvhBuilds(), builds + 1) << "the baked small meshes placed again";
     EXPECT_EQ(viewer->scene().meshes.back().transform.translation, glm::vec3(-50.0f, 0.0f, 0.0f));
     s.materials[0].albedo = glm::vec3(0.2f);
     std::ofstream(file) << sceneToJson(s).dump();
     ASSERT_TRUE(viewer->openScene(file)) << viewer->document().lastError();
-    EXPECT_EQ(gpu.meshBvhBuilds(), builds + 1) << "a material changed: a full reload";
+    EXPECT_EQ(gpu.meshBvhBuilds(), builds + 2) << "a material changed: a full reload";
+    EXPECT_EQ(gpu.topLevelUpdates(), updates + 1) << "a full upload, not a transform update";
     std::filesystem::remove(file);
 }
 

@@ -60,7 +60,9 @@ std::optional<Box> objectBounds(const Scene& scene, const SceneGeometry& geometr
     if (!r->mesh) return objectBounds(scene.spheres[std::size_t(r->index)]);
     if (std::size_t(r->index) >= geometry.meshBounds.size()) return std::nullopt;   // geometry of another scene
     const Aabb world = transformedBounds(geometry.meshBounds[std::size_t(r->index)],
-                                         transformMatrix(scene.meshes[std::size_t(r->index)].transform));
+                                         geometry.meshesInWorld
+                                             ? glm::mat4(1.0f)
+                                             : transformMatrix(scene.meshes[std::size_t(r->index)].transform));
     if (world.empty()) return std::nullopt;
     return Box{world.min, world.max};
 }
