@@ -134,6 +134,12 @@ bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector
     return false;
 }
 
+bool curveMissesALevel(const std::vector<Checkpoint>& curve, std::span<const double> levels, double mean) {
+    for (double l : levels)
+        if (timeToReach(curve, l * mean) < 0.0) return true;
+    return false;
+}
+
 PeerMismatch peerMismatch(const Image& raylabReference, const Image& peerReference) {
     PeerMismatch m;
     m.raylabMean = imageMean(raylabReference);

@@ -60,6 +60,11 @@ TimeToErrorGoal timeToErrorGoal(const std::vector<Checkpoint>& raylab, double ra
 bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector<Checkpoint>& peer,
                         std::span<const double> levels, double raylabMean, double peerMean);
 
+// Whether a curve has not reached some goal level (a fraction of its reference's mean `mean`):
+// raylab's curves of a peer scene then go on past max_spp (extend_spp), so that the goal there
+// gets a ratio, or a bound that decides it, instead of "neither reached it".
+bool curveMissesALevel(const std::vector<Checkpoint>& curve, std::span<const double> levels, double mean);
+
 // A peer scene whose two references' means differ by more than this fraction draws another image
 // than raylab's: its times to error compare different integrals, so the summary marks it
 // approximate and leaves it out of the time-to-error goal.

@@ -37,6 +37,10 @@ struct ModeSettings {
     // raylab reached is not reached by Cycles (the goal would get a bound there, not a ratio).
     // "peer_extend_spp" (default: peer_max_spp, no extension).
     int peerExtendSpp = 64;
+    // raylab's curves of a peer scene (every seed, not the variants) are rendered again up to this
+    // when their mean misses a goal level at maxSpp (curveMissesALevel), so that level is decided
+    // where more samples can decide it. "extend_spp" (default: max_spp, no extension).
+    int extendSpp = 512;
 };
 
 struct SuiteScene {
@@ -135,6 +139,9 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         mode.peerReferenceSpp = m.value("peer_reference_spp", mode.referenceSpp);
         mode.peerTimingRuns = m.value("peer_timing_runs", 1);
         mode.peerExtendSpp = m.value("peer_extend_spp", mode.peerMaxSpp);
+        mode.extendSpp = m.value("extend_spp", mode.maxSpp);
+        if (mode.extendSpp < mode.maxSpp)
+            throw std::runtime_error("modes." + o.mode + ".extend_spp must be at least max_spp");
         if (mode.peerExtendSpp < mode.peerMaxSpp)
             throw std::runtime_error("modes." + o.mode + ".peer_extend_spp must be at least peer_max_spp");
         if (mode.peerTimingRuns < 1) throw std::runtime_error("modes." + o.mode + ".peer_timing_runs must be at least 1");
@@ -239,6 +246,21 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     tracer.renderPass(1);
                     curves.push_back({"raylab:" + variantName, seed + 1,
                                       runConvergence(tracer, kRpp, std::uint64_t(mode.maxSpp), reference.mean)});
+                }
+            }
+            // A goal level the seeds' mean misses at maxSpp: every seed again, up to extendSpp
+            // (from the start, the same images up to maxSpp; the variants keep maxSpp).
+            if (s.peer && mode.extendSpp > mode.maxSpp &&
+                curveMissesALevel(meanOverSeeds(seedCurves(curves, "raylab")), kGoalLevels, imageMean(reference.mean))) {
+                std::cerr << "   raylab: a goal level not reached in " << mode.maxSpp << " spp, the seeds again up to "
+                          << mode.extendSpp << "\n";
+                for (Curve& c : curves) {
+                    if (c.renderer != "raylab") continue;
+                    Scene run = scene;
+                    run.render.seed = unsigned(c.seed);
+                    tracer.setScene(run);
+                    tracer.renderPass(1);
+                    c.points = runConvergence(tracer, kRpp, std::uint64_t(mode.extendSpp), reference.mean);
                 }
             }
         } catch (const std::exception& e) {
@@ -393,7 +415,11 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                    << "; raylab "
                    << fmt("%.3g", means.front().back().seconds * 1e3 / double(means.front().back().spp))
                    << " ms per sample per pixel after a one-off startup of " << fmt("%.3g", startupSeconds)
-                   << " s (scene load and shader compile)\n";
+                   << " s (scene load and shader compile); raylab's reference's own noise (its variance of the "
+                      "mean) is "
+                   << fmt("%.1f", 100.0 * imageMean(reference.variance) / means.front().back().error.mse)
+                   << " % of raylab's MSE at " << means.front().back().spp
+                   << " spp (E[MSE] = the curve's variance + the reference's: the curve's tail reads high by that)\n";
             // The goal's levels, raylab's start-up included (the convergence table's times are
             // tracing only).
             for (double l : kGoalLevels) {
@@ -449,7 +475,12 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                      " min built references (cached in the reference folder for later runs)"
                : std::string(" min, every reference read from the cache"))
        << "\n- image: " << mode.width << "×" << mode.height
-       << ", raylab checkpoints at 1, 2, 4 … " << mode.maxSpp << " spp, rpp " << kRpp << ", time = tracing only; Cycles "
+       << ", raylab checkpoints at 1, 2, 4 … " << mode.maxSpp << " spp"
+       << (mode.extendSpp > mode.maxSpp
+               ? " and on up to " + std::to_string(mode.extendSpp) +
+                     " where its seeds' mean has not reached a goal level (a peer scene's curves rendered again)"
+               : std::string())
+       << ", rpp " << kRpp << ", time = tracing only; Cycles "
        << (peerReady ? "3.4 (CPU, " + std::to_string(o.threads) + " threads, no denoising) at 1, 2, 4 … " +
                        std::to_string(mode.peerMaxSpp) + " spp" +
                        (mode.peerExtendSpp > mode.peerMaxSpp

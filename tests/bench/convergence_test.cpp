@@ -177,6 +177,16 @@ TEST(BenchConvergence, PeerCurveGoesOnOnlyWhereRaylabReachedALevelThePeerHasNot)
     EXPECT_FALSE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-3, 0.5), levels, 1.0, 2.0));
 }
 
+TEST(BenchConvergence, RaylabCurveGoesOnWhileItMissesAGoalLevel) {
+    // RMSE = 0.5/sqrt(spp) against a mean of 1: 5 % at 100 spp, 2 % at 625 spp.
+    const double levels[] = {0.05, 0.02};
+    EXPECT_TRUE(curveMissesALevel(sqrtCurve(64, 1e-3, 0.5), levels, 1.0));     // neither
+    EXPECT_TRUE(curveMissesALevel(sqrtCurve(256, 1e-3, 0.5), levels, 1.0));    // 5 % only
+    EXPECT_FALSE(curveMissesALevel(sqrtCurve(1024, 1e-3, 0.5), levels, 1.0));  // both
+    // The levels are of the reference's mean: twice the mean halves the relative error.
+    EXPECT_FALSE(curveMissesALevel(sqrtCurve(256, 1e-3, 0.5), levels, 2.0));
+}
+
 TEST(BenchReference, CachedReferenceIsReusedAndRebuiltWhenItsKeyChanges) {
     const fs::path base = scratch() / "ref";
     fs::remove(base.string() + ".json");
@@ -555,8 +565,41 @@ TEST(BenchConvergenceCli, BadSuiteNamesTheFileAndTheKey) {
     // peer_extend_spp is where Cycles' curve may go on to: below peer_max_spp it is refused too.
     refused(R"("seeds": 1, "peer_max_spp": 8, "peer_extend_spp": 4)",
             "modes.quick.peer_extend_spp must be at least peer_max_spp");
+    // extend_spp is where raylab's curves may go on to: below max_spp it is refused.
+    refused(R"("seeds": 1, "peer_max_spp": 1, "extend_spp": 2)", "modes.quick.extend_spp must be at least max_spp");
     // seeds is how many raylab curves each row averages: zero would leave a row with no curve.
     refused(R"("seeds": 0, "peer_max_spp": 1)", "modes.quick.seeds must be at least 1");
+}
+
+TEST(BenchConvergenceCli, APeerSceneThatMissesAGoalLevelGoesOnToExtendSpp) {
+    // At 8×8 and 4 spp the default scene is far from 2 % of its mean, so with extend_spp 16 its
+    // two seeds are rendered again up to 16 spp; its variant and the analytic furnace, which the
+    // goal does not judge, stop at max_spp.
+    const fs::path dir = scratch() / "extend";
+    fs::create_directories(dir);
+    std::ofstream(dir / "suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, "seeds": 2,
+        "extend_spp": 16, "reference_spp": 4, "reference_batches": 2, "peer_max_spp": 1}},
+        "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5},
+                   {"name": "d", "scene": "scenes/default.json", "peer": true,
+                    "variants": [{"name": "bsdf", "set": ["render.nee=false"]}]}]})";
+    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
+                            "' convergence --suite '" + (dir / "suite.json").string() + "' --out '" +
+                            (dir / "out").string() + "' --references '" + (dir / "refs").string() +
+                            "' --peer off > '" + (dir / "log.txt").string() + "' 2>&1";
+    const int raw = std::system(cmd.c_str());
+    std::stringstream log, csv, md;
+    log << std::ifstream(dir / "log.txt").rdbuf();
+    ASSERT_TRUE(WIFEXITED(raw));
+    ASSERT_EQ(WEXITSTATUS(raw), 0) << log.str();
+    csv << std::ifstream(dir / "out" / "quick" / "convergence.csv").rdbuf();
+    md << std::ifstream(dir / "out" / "quick" / "summary.md").rdbuf();
+    for (const char* row : {"d,raylab,1,16,", "d,raylab,2,16,", "d,raylab,mean,16,", "d,raylab:bsdf,2,4,", "f,raylab,1,4,"})
+        EXPECT_NE(csv.str().find(row), std::string::npos) << row << "\n" << csv.str();
+    for (const char* row : {"d,raylab:bsdf,1,8,", "f,raylab,1,8,"})
+        EXPECT_EQ(csv.str().find(row), std::string::npos) << row << "\n" << csv.str();
+    EXPECT_NE(md.str().find("| d | raylab | mean of 2 raylab renders × 4 spp | 16 |"), std::string::npos) << md.str();
+    EXPECT_NE(md.str().find("and on up to 16 where its seeds' mean has not reached a goal level"), std::string::npos)
+        << md.str();
 }
 
 TEST(BenchConvergenceCli, RunsThroughEglAndSaysSo) {
