@@ -15,6 +15,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -524,6 +525,8 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     EXPECT_NE(csv.str().find("cf,raylab,mean,64,"), std::string::npos) << csv.str();
     EXPECT_NE(md.str().find("- seeds: raylab renders each curve with seeds 1 … 2"), std::string::npos) << md.str();
     EXPECT_NE(md.str().find(" to -"), std::string::npos) << md.str();
+    // The slope in three decimals, so a slope just short of the goal's −0.6 does not round onto it.
+    EXPECT_TRUE(std::regex_search(md.str(), std::regex(R"(\| -[0-9]\.[0-9]{3} \(-)"))) << md.str();
     // A variant is one more curve of the same scene against the same reference, in the CSV, the
     // table and the plot script.
     EXPECT_NE(csv.str().find("cf,raylab:rpp2,2,64,"), std::string::npos) << csv.str();
