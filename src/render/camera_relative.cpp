@@ -3,10 +3,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace raylab {
-namespace {
 
-// scene/transform.cpp's T · Rz · Ry · Rx · S applied to a point, in double.
-glm::dvec3 transformPoint(const Transform& t, const glm::dvec3& p) {
+glm::dvec3 transformPointInDouble(const Transform& t, const glm::dvec3& p) {
     const glm::dmat4 id(1.0);
     const glm::dvec3 deg(t.rotation);
     const glm::dmat4 r = glm::rotate(id, glm::radians(deg.z), glm::dvec3(0, 0, 1)) *
@@ -15,32 +13,34 @@ glm::dvec3 transformPoint(const Transform& t, const glm::dvec3& p) {
     return glm::dvec3(t.translation) + glm::dvec3(r * glm::dvec4(p * glm::dvec3(t.scale), 1.0));
 }
 
-} // namespace
+Scene withoutTextures(const Scene& scene) {
+    Scene out;
+    out.sourcePath = scene.sourcePath;
+    out.camera = scene.camera;
+    out.render = scene.render;
+    out.sky = scene.sky;
+    out.ao = scene.ao;
+    out.materials = scene.materials;
+    out.spheres = scene.spheres;
+    out.meshes = scene.meshes;
+    out.lights = scene.lights;
+    return out;
+}
 
 glm::vec3 relativePoint(const glm::vec3& world, const glm::dvec3& origin) {
     return glm::vec3(glm::dvec3(world) - origin);
 }
 
 Scene cameraRelative(const Scene& scene, const glm::dvec3& origin) {
-    Scene out;
-    out.sourcePath = scene.sourcePath;
-    out.render = scene.render;
-    out.sky = scene.sky;
-    out.materials = scene.materials;
-    out.meshes = scene.meshes;
-    out.camera = scene.camera;
+    Scene out = withoutTextures(scene);
     out.camera.position = relativePoint(scene.camera.position, origin);
     out.camera.lookAt = relativePoint(scene.camera.lookAt, origin);
-    out.spheres.reserve(scene.spheres.size());
-    for (const Sphere& s : scene.spheres) {
-        Sphere r = s;
-        r.center = glm::vec3(transformPoint(s.transform, glm::dvec3(s.center)) - origin);
-        r.radius = s.radius * s.transform.scale.x;
-        r.transform = Transform{};
-        out.spheres.push_back(r);
+    for (Sphere& s : out.spheres) {
+        s.center = glm::vec3(transformPointInDouble(s.transform, glm::dvec3(s.center)) - origin);
+        s.radius *= s.transform.scale.x;
+        s.transform = Transform{};
     }
     for (Mesh& m : out.meshes) m.transform.translation = relativePoint(m.transform.translation, origin);
-    out.lights = scene.lights;
     for (Light& l : out.lights) l.position = relativePoint(l.position, origin);
     return out;
 }

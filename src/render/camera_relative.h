@@ -14,6 +14,13 @@ namespace raylab {
 // geometry and the light list never read them); everything else is copied as it is.
 Scene cameraRelative(const Scene& scene, const glm::dvec3& origin);
 
+// The scene less its textures (the geometry and the light list never read them): what the copies
+// made for the GPU start from (cameraRelative, render/baked_mesh_transforms.h).
+Scene withoutTextures(const Scene& scene);
+
+// scene/transform.cpp's T · Rz · Ry · Rx · S applied to a point, in double.
+glm::dvec3 transformPointInDouble(const Transform& t, const glm::dvec3& p);
+
 // World → camera-relative for one point, in double, rounded once.
 glm::vec3 relativePoint(const glm::vec3& world, const glm::dvec3& origin);
 

@@ -497,6 +497,30 @@ TEST(BenchBlenderExport, MeshesTransformsMaterialsThinLensAndSkyMap) {
     EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
 }
 
+// `raylab-bench [glArgs] convergence` on dir/suite.json, Cycles off, writing into dir: its exit
+// status, its log, and the CSV and summary it wrote.
+struct SuiteRun {
+    int raw = 0;
+    std::string log, csv, md;
+};
+SuiteRun runSuite(const fs::path& dir, const std::string& glArgs = "") {
+    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE + "' " + glArgs +
+                            "convergence --suite '" + (dir / "suite.json").string() + "' --out '" +
+                            (dir / "out").string() + "' --references '" + (dir / "refs").string() +
+                            "' --peer off > '" + (dir / "log.txt").string() + "' 2>&1";
+    SuiteRun r;
+    r.raw = std::system(cmd.c_str());
+    const auto read = [](const fs::path& f) {
+        std::stringstream text;
+        text << std::ifstream(f).rdbuf();
+        return text.str();
+    };
+    r.log = read(dir / "log.txt");
+    r.csv = read(dir / "out" / "quick" / "convergence.csv");
+    r.md = read(dir / "out" / "quick" / "summary.md");
+    return r;
+}
+
 TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     const fs::path dir = scratch();
     {
@@ -506,39 +530,32 @@ TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
                      "scenes": [{"name": "cf", "scene": "scenes/closed_furnace.json", "analytic": 1.0,
                                  "variants": [{"name": "rpp2", "set": ["render.rpp=2"]}]}]})";
     }
-    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
-                            "' convergence --suite '" + (dir / "suite.json").string() + "' --out '" +
-                            (dir / "out").string() + "' --references '" + (dir / "refs").string() +
-                            "' --peer off > '" + (dir / "log.txt").string() + "' 2>&1";
-    const int raw = std::system(cmd.c_str());
-    std::stringstream log, csv, md;
-    log << std::ifstream(dir / "log.txt").rdbuf();
-    ASSERT_TRUE(WIFEXITED(raw));
-    ASSERT_EQ(WEXITSTATUS(raw), 0) << log.str();
-    csv << std::ifstream(dir / "out" / "quick" / "convergence.csv").rdbuf();
-    md << std::ifstream(dir / "out" / "quick" / "summary.md").rdbuf();
-    EXPECT_NE(csv.str().find("scene,renderer,seed,spp,seconds,mse,rmse,relmse"), std::string::npos);
-    EXPECT_NE(csv.str().find("cf,raylab,2,64,"), std::string::npos) << csv.str();
-    EXPECT_NE(md.str().find("| cf | raylab | analytic [1, 1, 1] | 64 |"), std::string::npos) << md.str();
+    const SuiteRun run = runSuite(dir);
+    ASSERT_TRUE(WIFEXITED(run.raw));
+    ASSERT_EQ(WEXITSTATUS(run.raw), 0) << run.log;
+    const std::string &csv = run.csv, &md = run.md;
+    EXPECT_NE(csv.find("scene,renderer,seed,spp,seconds,mse,rmse,relmse"), std::string::npos);
+    EXPECT_NE(csv.find("cf,raylab,2,64,"), std::string::npos) << csv;
+    EXPECT_NE(md.find("| cf | raylab | analytic [1, 1, 1] | 64 |"), std::string::npos) << md;
     // Two seeds: the CSV adds their mean curve, the row gives the seeds' slope range, the plot draws
     // the mean.
-    EXPECT_NE(csv.str().find("cf,raylab,mean,64,"), std::string::npos) << csv.str();
-    EXPECT_NE(md.str().find("- seeds: raylab renders each curve with seeds 1 … 2"), std::string::npos) << md.str();
-    EXPECT_NE(md.str().find(" to -"), std::string::npos) << md.str();
+    EXPECT_NE(csv.find("cf,raylab,mean,64,"), std::string::npos) << csv;
+    EXPECT_NE(md.find("- seeds: raylab renders each curve with seeds 1 … 2"), std::string::npos) << md;
+    EXPECT_NE(md.find(" to -"), std::string::npos) << md;
     // The slope in three decimals, so a slope just short of the goal's −0.6 does not round onto it.
-    EXPECT_TRUE(std::regex_search(md.str(), std::regex(R"(\| -[0-9]\.[0-9]{3} \(-)"))) << md.str();
+    EXPECT_TRUE(std::regex_search(md, std::regex(R"(\| -[0-9]\.[0-9]{3} \(-)"))) << md;
     // A variant is one more curve of the same scene against the same reference, in the CSV, the
     // table and the plot script.
-    EXPECT_NE(csv.str().find("cf,raylab:rpp2,2,64,"), std::string::npos) << csv.str();
-    EXPECT_NE(md.str().find("| cf | raylab:rpp2 | analytic [1, 1, 1] | 64 |"), std::string::npos) << md.str();
+    EXPECT_NE(csv.find("cf,raylab:rpp2,2,64,"), std::string::npos) << csv;
+    EXPECT_NE(md.find("| cf | raylab:rpp2 | analytic [1, 1, 1] | 64 |"), std::string::npos) << md;
     std::stringstream gp;
     gp << std::ifstream(dir / "out" / "quick" / "cf.gp").rdbuf();
     EXPECT_NE(gp.str().find("strcol(2) eq 'raylab:rpp2' && strcol(3) eq 'mean'"), std::string::npos) << gp.str();
-    EXPECT_NE(md.str().find("- command: `"), std::string::npos);
-    EXPECT_NE(md.str().find("--peer off"), std::string::npos);
+    EXPECT_NE(md.find("- command: `"), std::string::npos);
+    EXPECT_NE(md.find("--peer off"), std::string::npos);
     // The figures name what made them: the GL renderer and how long the run took.
-    EXPECT_NE(md.str().find("- GL: osmesa | "), std::string::npos) << md.str();
-    EXPECT_NE(md.str().find("- run time: "), std::string::npos) << md.str();
+    EXPECT_NE(md.find("- GL: osmesa | "), std::string::npos) << md;
+    EXPECT_NE(md.find("- run time: "), std::string::npos) << md;
 }
 
 TEST(BenchConvergenceCli, BadSuiteNamesTheFileAndTheKey) {
@@ -585,24 +602,17 @@ TEST(BenchConvergenceCli, APeerSceneThatMissesAGoalLevelGoesOnToExtendSpp) {
         "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5},
                    {"name": "d", "scene": "scenes/default.json", "peer": true,
                     "variants": [{"name": "bsdf", "set": ["render.nee=false"]}]}]})";
-    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
-                            "' convergence --suite '" + (dir / "suite.json").string() + "' --out '" +
-                            (dir / "out").string() + "' --references '" + (dir / "refs").string() +
-                            "' --peer off > '" + (dir / "log.txt").string() + "' 2>&1";
-    const int raw = std::system(cmd.c_str());
-    std::stringstream log, csv, md;
-    log << std::ifstream(dir / "log.txt").rdbuf();
-    ASSERT_TRUE(WIFEXITED(raw));
-    ASSERT_EQ(WEXITSTATUS(raw), 0) << log.str();
-    csv << std::ifstream(dir / "out" / "quick" / "convergence.csv").rdbuf();
-    md << std::ifstream(dir / "out" / "quick" / "summary.md").rdbuf();
+    const SuiteRun run = runSuite(dir);
+    ASSERT_TRUE(WIFEXITED(run.raw));
+    ASSERT_EQ(WEXITSTATUS(run.raw), 0) << run.log;
+    const std::string &csv = run.csv, &md = run.md;
     for (const char* row : {"d,raylab,1,16,", "d,raylab,2,16,", "d,raylab,mean,16,", "d,raylab:bsdf,2,4,", "f,raylab,1,4,"})
-        EXPECT_NE(csv.str().find(row), std::string::npos) << row << "\n" << csv.str();
+        EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
     for (const char* row : {"d,raylab:bsdf,1,8,", "f,raylab,1,8,"})
-        EXPECT_EQ(csv.str().find(row), std::string::npos) << row << "\n" << csv.str();
-    EXPECT_NE(md.str().find("| d | raylab | mean of 2 raylab renders × 4 spp | 16 |"), std::string::npos) << md.str();
-    EXPECT_NE(md.str().find("and on up to 16 where its seeds' mean has not reached a goal level"), std::string::npos)
-        << md.str();
+        EXPECT_EQ(csv.find(row), std::string::npos) << row << "\n" << csv;
+    EXPECT_NE(md.find("| d | raylab | mean of 2 raylab renders × 4 spp | 16 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("and on up to 16 where its seeds' mean has not reached a goal level"), std::string::npos)
+        << md;
 }
 
 TEST(BenchConvergenceCli, RunsThroughEglAndSaysSo) {
@@ -617,17 +627,10 @@ TEST(BenchConvergenceCli, RunsThroughEglAndSaysSo) {
     std::ofstream(dir / "suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, "seeds": 1,
         "reference_spp": 4, "reference_batches": 2, "peer_max_spp": 1}},
         "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
-    const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
-                            "' --gl egl convergence --suite '" + (dir / "suite.json").string() + "' --out '" +
-                            (dir / "out").string() + "' --references '" + (dir / "refs").string() +
-                            "' --peer off > '" + (dir / "log.txt").string() + "' 2>&1";
-    const int raw = std::system(cmd.c_str());
-    std::stringstream log, md;
-    log << std::ifstream(dir / "log.txt").rdbuf();
-    ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << log.str();
-    md << std::ifstream(dir / "out" / "quick" / "summary.md").rdbuf();
-    EXPECT_NE(md.str().find("- GL: egl-"), std::string::npos) << md.str();
-    EXPECT_NE(md.str().find("| f | raylab | analytic [0.5, 0.5, 0.5] | 4 |"), std::string::npos) << md.str();
+    const SuiteRun run = runSuite(dir, "--gl egl ");
+    ASSERT_TRUE(WIFEXITED(run.raw) && WEXITSTATUS(run.raw) == 0) << run.log;
+    EXPECT_NE(run.md.find("- GL: egl-"), std::string::npos) << run.md;
+    EXPECT_NE(run.md.find("| f | raylab | analytic [0.5, 0.5, 0.5] | 4 |"), std::string::npos) << run.md;
 }
 
 TEST(BenchScalingCli, WritesBothSeriesWithTheCommand) {
