@@ -208,7 +208,13 @@ TEST_F(AnalyticLightsTest, GltfDoubleSidedDecidesTheEmittingSidesUnderEmissionSi
     fs::create_directories(dir);
     test::GltfSpec spec;
     spec.primitiveMaterials = {0, 1};
-    spec.materials = R"([ { "emissiveFactor": [1, 1, 1] }, { "emissiveFactor": [1, 1, 1], "doubleSided": true } ])";
+    // Black bases: the quads only emit. Seen from behind, quad 0's back then shows its emission
+    // alone, not the light it reflects from quad 1, which grazes it in the same plane: zero in exact
+    // arithmetic, 1e-13 once the hit point is interpolated from vertices at z = 0.5 (the scene's
+    // small meshes are baked relative to the camera, render/baked_mesh_transforms.h).
+    spec.materials = R"([ { "emissiveFactor": [1, 1, 1], "pbrMetallicRoughness": { "baseColorFactor": [0, 0, 0, 1] } },
+                          { "emissiveFactor": [1, 1, 1], "doubleSided": true,
+                            "pbrMetallicRoughness": { "baseColorFactor": [0, 0, 0, 1] } } ])";
     test::writeGltf(dir / "quads.gltf", spec);
     auto scene = [&](const std::string& sides, const std::string& camera, std::vector<std::string> set = {}) {
         std::ofstream(dir / "scene.json") << R"({
