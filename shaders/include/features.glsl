@@ -31,7 +31,8 @@
     RL_FEATURE(RAYLAB_EMISSIVE_TRIANGLES, emissiveTriangles, always, "triangle-lights")          \
     RL_FEATURE(RAYLAB_LIGHT_POWER_SELECTION, lightPowerSelection, always, "light-power")         \
     RL_FEATURE(RAYLAB_ANALYTIC_LIGHTS, analyticLights, always, "point-spot-sun")                 \
-    RL_FEATURE(RAYLAB_ONE_SIDED_EMITTERS, oneSidedEmitters, always, "one-sided")
+    RL_FEATURE(RAYLAB_ONE_SIDED_EMITTERS, oneSidedEmitters, always, "one-sided")                 \
+    RL_FEATURE(RAYLAB_ADAPTIVE, adaptive, always, "adaptive")
 
 #define RAYLAB_FEATURES_SPECIALISED 1
 #define RAYLAB_FEATURE_SPHERES 1          // the scene has spheres
@@ -55,6 +56,7 @@
 #define RAYLAB_LIGHT_POWER_SELECTION 1    // with NEE: lights differ in power, picked by power
 #define RAYLAB_ANALYTIC_LIGHTS 1          // the scene has point, spot or distant lights (scene `lights`)
 #define RAYLAB_ONE_SIDED_EMITTERS 1       // some mesh emits on its front side only (emission_sides front)
+#define RAYLAB_ADAPTIVE 0                 // render.adaptive: samples per block as the host plans them (adaptive_sampling.glsl)
 #elif !defined(RAYLAB_FEATURES_SPECIALISED)
 #error "compiled without the scene's feature defines: pass featureDefines() (render/shader_variant.h)"
 #endif

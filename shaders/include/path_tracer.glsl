@@ -7,6 +7,7 @@
 #include "sampler.glsl"
 #include "camera.glsl"
 #include "scene_data.glsl"
+#include "adaptive_sampling.glsl"
 // The viewer's debug views and moments; empty unless the host defines RAYLAB_DEBUG_VIEWS or
 // RAYLAB_DEBUG_MOMENTS. Before the integrator, whose radiance hook it may set.
 #include "debug_views.glsl"
@@ -15,9 +16,9 @@
 #include RAYLAB_EXERCISE_RUNNING_MEAN   // a pupil's runningMean (exercises/README.md)
 #endif
 
-// The sampler of the pass's sample s of a pixel.
-Sampler passSampler(ivec2 pixel, int s) {
-    return samplerCreate(uvec2(pixel), params.sampleStart + uint(s), params.seed, params.sampleCount);
+// The sampler of the pass's sample s of a pixel whose mean holds `start` samples.
+Sampler passSampler(ivec2 pixel, uint start, int s) {
+    return samplerCreate(uvec2(pixel), start + uint(s), params.seed, params.sampleCount);
 }
 
 // A camera ray through a fresh position inside the pixel (box filter), through the lens with DOF.
@@ -38,8 +39,9 @@ Ray cameraSample(CameraBasis cam, ivec2 pixel, inout Sampler smp) {
 #define RAYLAB_MOMENTS
 #endif
 
-// Sample s's radiance L into the pass's sum; a NaN or infinite one is dropped and counted.
-void addSample(vec3 L, int s, ivec2 pixel, inout vec3 sum, inout uint nonFinite RAYLAB_MOMENTS_ARG) {
+// Sample s's radiance L into the pass's sum; a NaN or infinite one is dropped and counted. Returns
+// what was added.
+vec3 addSample(vec3 L, int s, ivec2 pixel, inout vec3 sum, inout uint nonFinite RAYLAB_MOMENTS_ARG) {
 #if RAYLAB_INJECT_NONFINITE
     // Tests only: every RAYLAB_INJECT_NONFINITE-th sample of a row becomes NaN or +Inf.
     uint k = params.sampleStart + uint(s) + uint(pixel.x);
@@ -54,9 +56,20 @@ void addSample(vec3 L, int s, ivec2 pixel, inout vec3 sum, inout uint nonFinite 
         L = vec3(0.0f);
     }
     sum += L;
+    return L;
 }
 
 void tracePixelPass(ivec2 pixel) {
+#if RAYLAB_ADAPTIVE
+    // The host's plan (adaptive_sampling.glsl): this pixel's samples so far, or a pass it sits out;
+    // params.sampleStart is then the draw's offset within the pass.
+    uint planned = imageLoad(uSamplePlan, pixel).r;
+    if (planned == ADAPTIVE_SKIP) return;
+    uint start = planned + params.sampleStart;
+    float sumSquares = 0.0f;
+#else
+    uint start = params.sampleStart;
+#endif
     CameraBasis cam = CameraBasis(params.camOrigin, params.camRight, params.camUp, params.camForward,
                                   params.camTanHalfFovY, params.camAspect);
     vec3 sum = vec3(0.0f);
@@ -67,7 +80,7 @@ void tracePixelPass(ivec2 pixel) {
 #endif
 #if RAYLAB_DEBUG_VIEWS || RAYLAB_INSPECT_PATHS
     for (int s = 0; s < params.rpp; ++s) {
-        Sampler smp = passSampler(pixel, s);
+        Sampler smp = passSampler(pixel, start, s);
         Ray cameraPath = cameraSample(cam, pixel, smp);
         RAYLAB_RECORD_PATH_BEGIN(pixel, s, cameraPath);
 #if RAYLAB_DEBUG_VIEWS
@@ -85,29 +98,42 @@ void tracePixelPass(ivec2 pixel) {
     // as their longest loop: per sample, a batch would wait for its longest path every time. Each
     // sample's radiance and the sum's order are as the plain loop has them.
     int s = 0;
-    Sampler smp = passSampler(pixel, 0);
+    Sampler smp = passSampler(pixel, start, 0);
     PathState path = pathStart(cameraSample(cam, pixel, smp));
     while (s < params.rpp) {
         if (!pathStep(path, smp, rays)) continue;
-        addSample(path.radiance, s, pixel, sum, nonFinite RAYLAB_MOMENTS);
+        vec3 added = addSample(path.radiance, s, pixel, sum, nonFinite RAYLAB_MOMENTS);
+#if RAYLAB_ADAPTIVE
+        sumSquares += adaptiveValue(added) * adaptiveValue(added);
+#endif
         if (++s < params.rpp) {
-            smp = passSampler(pixel, s);
+            smp = passSampler(pixel, start, s);
             path = pathStart(cameraSample(cam, pixel, smp));
         }
     }
 #endif
     // Running mean over all samples: mean_n = mean_m + (sum − k·mean_m) / n, with n = m + k.
 #ifdef RAYLAB_EXERCISE_RUNNING_MEAN
-    vec3 old = params.sampleStart > 0u ? imageLoad(uAccum, pixel).rgb : vec3(0.0f);
-    vec3 mean = runningMean(old, params.sampleStart, sum, uint(params.rpp));
+    vec3 old = start > 0u ? imageLoad(uAccum, pixel).rgb : vec3(0.0f);
+    vec3 mean = runningMean(old, start, sum, uint(params.rpp));
 #else
     vec3 mean = sum / float(params.rpp);
-    if (params.sampleStart > 0u) {
+    if (start > 0u) {
         vec3 old = imageLoad(uAccum, pixel).rgb;
-        mean = old + (sum - float(params.rpp) * old) / float(params.sampleStart + uint(params.rpp));
+        mean = old + (sum - float(params.rpp) * old) / float(start + uint(params.rpp));
     }
 #endif
     imageStore(uAccum, pixel, vec4(mean, 1.0f));
+#if RAYLAB_ADAPTIVE
+    // The second moment and the rays per sample, running means as the image's.
+    vec2 passSums = vec2(sumSquares, float(rays));
+    vec2 moments = passSums / float(params.rpp);
+    if (start > 0u) {
+        vec2 old = imageLoad(uSecondMoment, pixel).rg;
+        moments = old + (passSums - float(params.rpp) * old) / float(start + uint(params.rpp));
+    }
+    imageStore(uSecondMoment, pixel, vec4(moments, 0.0f, 0.0f));
+#endif
     // llvmpipe (gallivm) ends every loop of an invocation once 65535 loop iterations have run in
     // all, silently. A loop of rpp + 1 iterations that stops early shows the budget ran out, so
     // the host can report it and draw fewer samples per invocation (PathTracer::traceBand).

@@ -1,6 +1,7 @@
 #include "render/path_tracer.h"
 
 #include "render/camera_relative.h"
+#include "shaders/include/adaptive_sampling.glsl"
 #include "shaders/include/bindings.glsl"
 #include "shaders/include/camera.glsl"
 #include "shaders/include/fragment_layout.glsl"
@@ -56,6 +57,8 @@ PathTracer::PathTracer(TracerOptions options) : options_(options) {
 
 PathTracer::~PathTracer() {
     glDeleteTextures(1, &accumTexture_);
+    glDeleteTextures(1, &planTexture_);
+    glDeleteTextures(1, &momentTexture_);
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &counterBuffer_);
@@ -97,6 +100,13 @@ void PathTracer::allocateImage(int width, int height) {
     glDeleteTextures(1, &accumTexture_);
     glCreateTextures(GL_TEXTURE_2D, 1, &accumTexture_);
     glTextureStorage2D(accumTexture_, 1, GL_RGBA32F, width, height);
+    glDeleteTextures(1, &planTexture_);
+    glCreateTextures(GL_TEXTURE_2D, 1, &planTexture_);
+    glTextureStorage2D(planTexture_, 1, GL_R32UI, width, height);
+    glDeleteTextures(1, &momentTexture_);
+    glCreateTextures(GL_TEXTURE_2D, 1, &momentTexture_);
+    glTextureStorage2D(momentTexture_, 1, GL_RG32F, width, height);
+    blocks_ = AdaptiveBlocks{width, height};
     stripTiles_ = options_.entry == TracerEntry::Fragment && options_.balanceTiles
                              ? fragmentStripTiles(width, height, rasterThreads())
                              : 0;
@@ -128,6 +138,9 @@ void PathTracer::updateSettings(const Scene& scene) {
     // The feature set may change with any edit (an aperture above 0, glass, a sky that emits):
     // the variant is looked up again, and compiled only when that set was never met.
     features_ = options_.specialise ? sceneFeatures(scene) : allFeatures();
+    // The debug views, the inspector and the exercises trace every pixel alike (their own loops).
+    if (!options_.extraDefines.empty()) features_.adaptive = false;
+    adaptive_ = features_.adaptive;
     program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
     // The variant's search, not the scene's key: the unspecialised tracer always walks the BVH.
     const std::uint64_t flatIterations =
@@ -198,6 +211,11 @@ void PathTracer::updateTransforms(const Scene& scene) {
 void PathTracer::reset() {
     const float zero[4] = {0, 0, 0, 0};
     if (accumTexture_) glClearTexImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, zero);
+    if (momentTexture_) glClearTexImage(momentTexture_, 0, GL_RG, GL_FLOAT, zero);
+    blockSamples_.assign(std::size_t(blocks_.count()), 0);
+    passBlocks_.clear();
+    planned_ = false;
+    totalSamples_ = 0;
     samplesPerPixel_ = 0;
     passes_ = 0;
     nonFinite_ = 0;
@@ -213,6 +231,9 @@ void PathTracer::restoreAccumulation(const Image& image, std::uint64_t samplesPe
         throw std::invalid_argument("PathTracer::restoreAccumulation: the image is " + std::to_string(image.width) +
                                     "x" + std::to_string(image.height) + ", the scene renders " +
                                     std::to_string(width_) + "x" + std::to_string(height_));
+    if (adaptive_)
+        throw std::invalid_argument("PathTracer::restoreAccumulation: an adaptive render (render.adaptive) cannot be "
+                                    "continued from its image: its per-block sample counts are not in it");
     reset();
     // GL stores the bottom row first.
     const size_t row = size_t(width_) * 4;
@@ -234,6 +255,7 @@ void PathTracer::renderPass(int rpp) {
 
 void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
     if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
+    if (adaptive_ && !planned_) planPass();
     for (int done = 0; done < rpp;) {
         const int n = std::min(rpp - done, samplesPerDraw());
         drawBand(y, rows, sampleOffset + done, n);
@@ -242,7 +264,8 @@ void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
 }
 
 void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
-    params_.sampleStart = unsigned(samplesPerPixel_ + std::uint64_t(sampleOffset));
+    // Adaptive: each pixel's count is in the plan, and sampleStart is the draw's offset in the pass.
+    params_.sampleStart = unsigned((adaptive_ ? 0 : samplesPerPixel_) + std::uint64_t(sampleOffset));
     params_.rpp = rpp;
     glNamedBufferSubData(paramsBuffer_, offsetof(glsl::TracerParams, sampleStart),
                          sizeof(params_.sampleStart) + sizeof(params_.rpp), &params_.sampleStart);
@@ -259,6 +282,10 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     const GLuint zeros[3] = {0, 0, 0};
     glNamedBufferSubData(counterBuffer_, 0, sizeof(zeros), zeros);
     glBindImageTexture(BINDING_ACCUM_IMAGE, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    if (adaptive_) {
+        glBindImageTexture(BINDING_SAMPLE_PLAN_IMAGE, planTexture_, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+        glBindImageTexture(BINDING_SECOND_MOMENT_IMAGE, momentTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32F);
+    }
     gpuScene_.bind();
     glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_TRACER_PARAMS_UBO, paramsBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_COUNTERS, counterBuffer_);
@@ -300,8 +327,53 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
 }
 
 void PathTracer::finishPass(int rpp) {
-    samplesPerPixel_ += std::uint64_t(rpp);
     ++passes_;
+    if (!adaptive_) {
+        samplesPerPixel_ += std::uint64_t(rpp);
+        return;
+    }
+    if (!planned_) return;   // no band of this pass was traced
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x)
+            if (passBlocks_[std::size_t(blocks_.blockOf(x, y))]) totalSamples_ += std::uint64_t(rpp);
+    for (std::size_t b = 0; b < blockSamples_.size(); ++b)
+        if (passBlocks_[b]) blockSamples_[b] += std::uint64_t(rpp);
+    samplesPerPixel_ = totalSamples_ / (std::uint64_t(width_) * std::uint64_t(height_));
+    planned_ = false;
+}
+
+void PathTracer::planPass() {
+    const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
+    if (*std::min_element(blockSamples_.begin(), blockSamples_.end()) < kAdaptiveWarmupSamples) {
+        passBlocks_.assign(blockSamples_.size(), 1);
+    } else {
+        // Both images as GL keeps them, bottom row first: the blocks are counted in those rows too.
+        std::vector<float> mean(4 * pixels), moments(2 * pixels);
+        glGetTextureImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, GLsizei(mean.size() * sizeof(float)), mean.data());
+        glGetTextureImage(momentTexture_, 0, GL_RG, GL_FLOAT, GLsizei(moments.size() * sizeof(float)), moments.data());
+        const BlockNoise noise = blockNoise(blocks_, mean, moments);
+        passBlocks_ = activeBlocks(noise.deviation, noise.cost, blockSamples_);
+    }
+    std::vector<GLuint> plan(pixels);
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) {
+            const std::size_t b = std::size_t(blocks_.blockOf(x, y));
+            plan[std::size_t(y) * std::size_t(width_) + std::size_t(x)] =
+                passBlocks_[b] ? GLuint(std::min<std::uint64_t>(blockSamples_[b], glsl::ADAPTIVE_SKIP - 1u))
+                               : glsl::ADAPTIVE_SKIP;
+        }
+    glTextureSubImage2D(planTexture_, 0, 0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, plan.data());
+    planned_ = true;
+}
+
+std::vector<std::uint64_t> PathTracer::pixelSamples() const {
+    std::vector<std::uint64_t> samples(std::size_t(width_) * std::size_t(height_), samplesPerPixel_);
+    if (!adaptive_) return samples;
+    for (int y = 0; y < height_; ++y)   // top row first: GL's row height_ - 1 - y
+        for (int x = 0; x < width_; ++x)
+            samples[std::size_t(y) * std::size_t(width_) + std::size_t(x)] =
+                blockSamples_[std::size_t(blocks_.blockOf(x, height_ - 1 - y))];
+    return samples;
 }
 
 Image PathTracer::readImage() const {

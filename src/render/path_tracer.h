@@ -3,6 +3,7 @@
 // One pass adds rpp samples per pixel to a running mean (float32 RGBA). Needs a current GL 4.5
 // context (see gl/gl_context.h). Both programs, the headless CLI and the viewer, drive this class.
 #include "gl/shader_program.h"
+#include "render/adaptive_sampling.h"
 #include "render/gpu_scene.h"
 #include "render/image.h"
 #include "render/shader_variant.h"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -64,7 +66,8 @@ public:
     void reset();
     // Continues a mean of `samplesPerPixel` samples made with the settings now uploaded (a resumed
     // render): `image` (top row first, as readImage gives it) becomes the accumulation, and the
-    // next pass adds samples from there on. The image's size must be the scene's.
+    // next pass adds samples from there on. The image's size must be the scene's, and the render
+    // not adaptive (its per-block counts and second moments are not in an image).
     void restoreAccumulation(const Image& image, std::uint64_t samplesPerPixel, std::uint64_t passes,
                              std::uint64_t nonFiniteSamples);
     // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them.
@@ -73,13 +76,19 @@ public:
     // sample chunks. traceBand traces samples [spp + sampleOffset, + rpp) of rows [y, y + rows) and
     // adds to the counters; call it for every band of a chunk, chunk after chunk, then finishPass
     // with the pass's total rpp. Bands need the fragment entry (the compute entry traces all rows).
-    // traceBand draws at most samplesPerDraw() samples per pixel at once (below).
+    // traceBand draws at most samplesPerDraw() samples per pixel at once (below). An adaptive
+    // render plans its pass at the pass's first traceBand: only the blocks that take it get samples.
     void traceBand(int y, int rows, int sampleOffset, int rpp);
     void finishPass(int rpp);
     unsigned accumulationTexture() const { return accumTexture_; }   // RGBA32F, bottom row first
     const ShaderProgram& program() const { return *program_; }   // for uniforms of host extensions (after setScene)
 
+    // Samples per pixel; with render.adaptive the mean over the pixels, rounded down.
     std::uint64_t samplesPerPixel() const { return samplesPerPixel_; }
+    // render.adaptive is in effect (the scene asks for it, with sobol or independent, and no debug,
+    // inspection or exercise define is set); then the samples each pixel holds.
+    bool adaptive() const { return adaptive_; }
+    std::vector<std::uint64_t> pixelSamples() const;   // top row first, as readImage
     std::uint64_t passes() const { return passes_; }
     std::uint64_t nonFiniteSamples() const { return nonFinite_; }   // replaced by 0, counted
     std::uint64_t raysTraced() const { return rays_; }
@@ -97,7 +106,7 @@ public:
     // With RAYLAB_COUNT_TRAVERSAL in extraDefines: BVH boxes and triangles tested (else 0).
     std::uint64_t boxTests() const { return boxTests_; }
     std::uint64_t triangleTests() const { return triangleTests_; }
-    std::uint64_t pathsTraced() const { return samplesPerPixel_ * std::uint64_t(width_) * height_; }
+    std::uint64_t pathsTraced() const { return adaptive_ ? totalSamples_ : samplesPerPixel_ * std::uint64_t(width_) * height_; }
     int width() const { return width_; }
     int height() const { return height_; }
 
@@ -117,6 +126,7 @@ public:
 private:
     void allocateImage(int width, int height);
     void drawBand(int y, int rows, int sampleOffset, int rpp);   // one draw of traceBand
+    void planPass();   // render.adaptive: which blocks take the pass (adaptive_sampling.h), uploaded
 
     static ShaderProgram compileVariant(const ShaderDefines& features, const void* self);
 
@@ -127,6 +137,14 @@ private:
     GpuScene gpuScene_;
     glm::dvec3 origin_{0.0};
     unsigned accumTexture_ = 0;
+    unsigned planTexture_ = 0;     // render.adaptive: R32UI, a pixel's samples so far or ADAPTIVE_SKIP
+    unsigned momentTexture_ = 0;   // render.adaptive: RG32F, the running second moment and rays per sample
+    bool adaptive_ = false;
+    AdaptiveBlocks blocks_;
+    std::vector<std::uint64_t> blockSamples_;   // render.adaptive: samples each block holds
+    std::vector<std::uint8_t> passBlocks_;      // the planned pass's blocks (1: takes it)
+    bool planned_ = false;                      // passBlocks_ is the current pass's plan
+    std::uint64_t totalSamples_ = 0;            // render.adaptive: over all pixels
     unsigned framebuffer_ = 0;
     unsigned vertexArray_ = 0;
     unsigned counterBuffer_ = 0;

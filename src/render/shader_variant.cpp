@@ -52,6 +52,9 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.emissiveTriangles = false;
     for (const Mesh& m : scene.meshes) f.emissiveTriangles |= f.nee && meshHasEmissiveTriangle(scene, m);
     f.analyticLights = !scene.lights.empty();
+    // Adaptive pixels take more samples than render.spp, past the sequence stratified and zsobol lay out.
+    f.adaptive = scene.render.adaptive &&
+                 (scene.render.sampler == SamplerKind::Sobol || scene.render.sampler == SamplerKind::Independent);
     f.oneSidedEmitters = false;
     for (const Mesh& m : scene.meshes) f.oneSidedEmitters |= meshHasFrontOnlyTriangle(scene, m);
     return f;

@@ -140,6 +140,14 @@ std::vector<ParamSpec> buildSceneTable() {
              "With nee: combine light and BSDF samples by multiple importance sampling (power heuristic).",
              G::ResetAccumulation),
         [](auto& s) -> auto& { return s.render.mis; });
+    add(spec("render.adaptive", T::Bool, kAny, kAny, "",
+             "Adaptive sampling: after 16 samples everywhere, each pass goes only to the 4x4 pixel blocks whose "
+             "noise per sample held, over the root of their rays per sample, is at least the image's mean, so blocks "
+             "end with samples in proportion to noise / sqrt(cost), the spreading with the least image MSE for the "
+             "time spent; render.spp is then the mean over the pixels. Needs render.sampler sobol or independent "
+             "(bench/adaptive_sampling.md).",
+             G::RecompileShader),
+        [](auto& s) -> auto& { return s.render.adaptive; });
     add(spec("render.exposure", T::Float, atLeast(-20), atMost(20), "EV stops",
              "Display value = linear value x 2^exposure (PNG only).", G::Redisplay),
         [](auto& s) -> auto& { return s.render.exposure; });

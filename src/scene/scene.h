@@ -64,6 +64,7 @@ struct RenderSettings {
     std::uint32_t seed = 1;      // sampler seed: same seed, same image bit for bit
     bool nee = true;             // next-event estimation: sample emissive spheres and the sky
     bool mis = true;             // with nee: weight light and BSDF samples by the power heuristic
+    bool adaptive = false;       // samples per pixel block by its noise (render/adaptive_sampling.h)
     float exposure = 0.0f;       // EV stops: display value = linear × 2^exposure
     ToneMap toneMap = ToneMap::AcesFit;
     int showMipLevel = 0;        // 1: textured surfaces show their mip level as colours (debug)

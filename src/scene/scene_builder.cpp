@@ -454,6 +454,13 @@ void buildScene(const Json& root, Scene& scene) {
         else readMembers(root[name], top.key(name), sceneParameters(), section, scene);
     }
     readSkyMap(root, scene);
+    // An adaptive pixel takes more samples than render.spp, past the sequence stratified and zsobol
+    // lay out for each pixel.
+    if (scene.render.adaptive && scene.render.sampler != SamplerKind::Sobol &&
+        scene.render.sampler != SamplerKind::Independent)
+        fail(top.key("render").key("adaptive"),
+             "adaptive sampling needs render.sampler sobol or independent: stratified and zsobol lay out render.spp "
+             "samples per pixel, and an adaptive pixel takes more");
 
     // Materials: a name -> properties map. Kept sorted by name so the order does not depend on the file.
     std::vector<Material> materials;

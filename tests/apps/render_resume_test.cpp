@@ -87,6 +87,7 @@ TEST(RenderResume, RefusesAnotherSceneOrSettingsAndLeavesTheFileAlone) {
         {"scenes/furnace.json --width 12 --height 8 --set render.max_bounces=3 --spp 4", "raylab:settings_hash differs"},
         {kScene + " --spp 1", "holds 2 spp already"},
         {kScene + " --spp 4 --tracer compute", "raylab:tracer"},
+        {kScene + " --spp 4 --set render.adaptive=true", "render.adaptive is true"},
     };
     for (const Case& c : cases) {
         const CliRun r = render(c.args + " --resume " + quoted(exr));

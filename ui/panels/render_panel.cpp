@@ -1,6 +1,7 @@
 // Render panel: files (open, save, screenshot, export), pause/resume/reset, resolution scale, every
 // render.* key of the parameter table except the display ones (camera panel), and the estimator:
-// sampler, next-event estimation, MIS, its switchable stages and the sample points of a pixel.
+// sampler, next-event estimation, MIS, adaptive sampling, its switchable stages and the sample points
+// of a pixel.
 #include "panels/panels.h"
 
 #include "app/actions.h"
@@ -17,7 +18,7 @@ namespace raylab::ui {
 namespace {
 
 bool isEstimatorKey(const ParamSpec& p) {
-    return p.key == "render.sampler" || p.key == "render.nee" || p.key == "render.mis" ||
+    return p.key == "render.sampler" || p.key == "render.nee" || p.key == "render.mis" || p.key == "render.adaptive" ||
            std::ranges::find(kEstimatorStageKeys, p.key) != std::end(kEstimatorStageKeys);
 }
 
@@ -31,6 +32,7 @@ std::string estimatorLabel(const Scene& scene) {
             for (const EnumName& n : p.enumNames)
                 if (n.value == int(r.sampler) && !n.alias) sampler = std::string(n.name);
     std::string label = sampler + " sampler, " + (!r.nee ? "BSDF sampling only" : r.mis ? "NEE + MIS" : "NEE without MIS");
+    if (r.adaptive) label += ", adaptive";
     const auto defaults = estimatorStages(Scene{});
     const auto stages = estimatorStages(scene);
     for (std::size_t i = 0; i < stages.size(); ++i)

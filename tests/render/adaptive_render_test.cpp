@@ -1,0 +1,131 @@
+// render.adaptive on the GPU (OSMesa): a furnace, with no variance, renders as without it bit for
+// bit; the Cornell box at equal samples has a lower error against a long reference, with its
+// samples in the box rather than the black background; a seed gives one image; a resumed render
+// and a sampler without an open-ended sequence are refused.
+#include "render/path_tracer.h"
+#include "render_helpers.h"
+#include "support/gl_test.h"
+#include "support/scene_errors.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+
+using namespace raylab;
+
+namespace {
+
+class AdaptiveRenderTest : public test::GlTest {};
+
+struct Rendered {
+    Image image;
+    std::vector<std::uint64_t> samples;   // per pixel, top row first
+    std::uint64_t paths = 0;
+    bool adaptive = false;
+};
+
+Rendered renderWith(const Scene& scene) {
+    PathTracer tracer;
+    tracer.setScene(scene);
+    renderProgressively(tracer, scene.render);
+    return {tracer.readImage(), tracer.pixelSamples(), tracer.pathsTraced(), tracer.adaptive()};
+}
+
+Scene cornell(std::vector<std::string> overrides) {
+    overrides.insert(overrides.begin(), {"render.width=32", "render.height=18", "render.rpp=8"});
+    return loadScene(test::scenePath("cornell_box.json"), overrides);
+}
+
+double mse(const Image& a, const Image& b) {
+    const double r = test::rmse(a, b);
+    return r * r;
+}
+
+} // namespace
+
+TEST_F(AdaptiveRenderTest, AFurnaceRendersAsWithoutIt) {
+    // Every pixel is exactly 0.5 whatever the samples: no block is noisier than another, so every
+    // block takes every pass and the samples are the same ones.
+    const std::vector<std::string> size = {"render.width=20", "render.height=12", "render.spp=64", "render.rpp=8"};
+    std::vector<std::string> on = size;
+    on.push_back("render.adaptive=true");
+    const Rendered plain = renderWith(loadScene(test::scenePath("furnace.json"), size));
+    const Rendered adaptive = renderWith(loadScene(test::scenePath("furnace.json"), on));
+    ASSERT_TRUE(adaptive.adaptive);
+    ASSERT_FALSE(plain.adaptive);
+    EXPECT_EQ(adaptive.image.rgba, plain.image.rgba);
+    EXPECT_EQ(adaptive.samples, std::vector<std::uint64_t>(20 * 12, 64));
+    EXPECT_EQ(adaptive.paths, plain.paths);
+}
+
+TEST_F(AdaptiveRenderTest, TheCornellBoxHasLessErrorAtEqualSamplesWithThemWhereItsNoiseIs) {
+    // 32 × 18 pixels, a mean of 128 samples per pixel, seeds 1–4, against 2048 evenly spread
+    // samples of seed 99. The background (a third of the image, black, no variance) takes little
+    // beyond the warm-up, so the box's noisy blocks get more: the mean MSE over the seeds must fall
+    // by at least a third (bench/adaptive_sampling.md sizes the ceiling at equal samples at 3.75×
+    // on 4 × 4 blocks of the 96 × 54 image; spreading for equal time, by rays per sample, gives up
+    // some of it). Fixed seeds: the figures are deterministic.
+    const Image reference = test::render(cornell({"render.spp=2048", "render.seed=99"}));
+    double plainMse = 0.0, adaptiveMse = 0.0;
+    for (int seed = 1; seed <= 4; ++seed) {
+        const std::string s = "render.seed=" + std::to_string(seed);
+        const Rendered plain = renderWith(cornell({"render.spp=128", s}));
+        const Rendered adaptive = renderWith(cornell({"render.spp=128", s, "render.adaptive=true"}));
+        plainMse += mse(plain.image, reference) / 4.0;
+        adaptiveMse += mse(adaptive.image, reference) / 4.0;
+        // The same samples in all: the mean per pixel reaches 128, and overshoots by less than a pass.
+        EXPECT_GE(adaptive.paths, std::uint64_t(128 * 32 * 18));
+        EXPECT_LT(adaptive.paths, std::uint64_t(136 * 32 * 18));
+        // The top-left corner sees the black background (no variance, one ray a sample): a third of
+        // the mean or less; the noisiest blocks (the lamp's edge, the ceiling by it) over twice it.
+        const std::uint64_t corner = adaptive.samples[0];
+        const std::uint64_t most = *std::max_element(adaptive.samples.begin(), adaptive.samples.end());
+        EXPECT_LE(3 * corner, 128u) << "seed " << seed;
+        EXPECT_GT(most, 2 * 128u) << "seed " << seed;
+    }
+    std::printf("Cornell box 32x18, 128 spp, MSE evenly %.4g, adaptive %.4g (%.2fx)\n", plainMse, adaptiveMse,
+                plainMse / adaptiveMse);
+    EXPECT_LT(adaptiveMse, plainMse * 2.0 / 3.0);
+}
+
+TEST_F(AdaptiveRenderTest, OneSeedGivesOneImage) {
+    const Scene scene = cornell({"render.spp=48", "render.adaptive=true", "render.seed=7"});
+    const Rendered a = renderWith(scene);
+    const Rendered b = renderWith(scene);
+    EXPECT_EQ(a.image.rgba, b.image.rgba);
+    EXPECT_EQ(a.samples, b.samples);
+    EXPECT_NE(std::adjacent_find(a.samples.begin(), a.samples.end(), std::not_equal_to<>()), a.samples.end())
+        << "the blocks should hold different counts";
+}
+
+TEST_F(AdaptiveRenderTest, AnAdaptiveRenderIsNotContinuedFromItsImage) {
+    const Scene scene = cornell({"render.spp=16", "render.adaptive=true"});
+    PathTracer tracer;
+    tracer.setScene(scene);
+    tracer.renderPass(16);
+    const Image image = tracer.readImage();
+    EXPECT_THROW(tracer.restoreAccumulation(image, 16, 1, 0), std::invalid_argument);
+}
+
+TEST_F(AdaptiveRenderTest, DebugVariantsTraceEveryPixelAlike) {
+    TracerOptions options;
+    options.extraDefines = {{tracerDefine("RAYLAB_COUNT_TRAVERSAL"), "1"}};
+    PathTracer tracer(options);
+    tracer.setScene(cornell({"render.spp=16", "render.adaptive=true"}));
+    EXPECT_FALSE(tracer.adaptive());
+}
+
+TEST(AdaptiveSceneTest, NeedsASamplerWhoseSequenceGoesOn) {
+    const std::string text = R"({
+  "render": { "adaptive": true,
+              "sampler": "stratified" },
+  "objects": [ { "type": "sphere" } ]
+})";
+    const std::string message = test::sceneErrorOf(text);
+    EXPECT_NE(message.find("test.json:2:"), std::string::npos) << message;
+    EXPECT_NE(message.find("render.adaptive"), std::string::npos) << message;
+    EXPECT_NE(message.find("sobol or independent"), std::string::npos) << message;
+    EXPECT_EQ(test::sceneErrorOf(text, {"render.sampler=sobol"}), "<no error>");
+    EXPECT_NE(test::sceneErrorOf(text, {"render.sampler=zsobol"}).find("sobol or independent"), std::string::npos);
+}

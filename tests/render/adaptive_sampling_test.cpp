@@ -1,0 +1,133 @@
+// The planning of per-pixel adaptive sampling (render/adaptive_sampling.h), without GL: warm-up,
+// the fixed point n ∝ s/√c that minimises the image's MSE in a given time, the floor that keeps
+// every block sampled, and the per-block noise and cost read from the running mean and moments.
+#include "render/adaptive_sampling.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+using namespace raylab;
+
+namespace {
+
+// Passes of rpp samples each, as PathTracer::finishPass counts them; cost 1 per sample unless given.
+std::vector<std::uint64_t> simulate(const std::vector<double>& deviation, int passes, std::uint64_t rpp,
+                                    std::vector<double> cost = {}) {
+    if (cost.empty()) cost.assign(deviation.size(), 1.0);
+    std::vector<std::uint64_t> n(deviation.size(), 0);
+    for (int p = 0; p < passes; ++p) {
+        const std::vector<std::uint8_t> active = activeBlocks(deviation, cost, n);
+        for (std::size_t b = 0; b < n.size(); ++b)
+            if (active[b]) n[b] += rpp;
+    }
+    return n;
+}
+
+double imageMse(const std::vector<double>& s, const std::vector<std::uint64_t>& n) {
+    double sum = 0.0;
+    for (std::size_t b = 0; b < s.size(); ++b) sum += s[b] * s[b] / double(n[b]);
+    return sum / double(s.size());
+}
+
+} // namespace
+
+TEST(AdaptiveSampling, EveryBlockTakesThePassUntilEachHoldsTheWarmUp) {
+    const std::vector<double> s = {0.0, 5.0, 1.0};
+    const std::vector<std::uint64_t> below = {kAdaptiveWarmupSamples, kAdaptiveWarmupSamples - 1, 100};
+    const std::vector<double> c(3, 1.0);
+    EXPECT_EQ(activeBlocks(s, c, below), std::vector<std::uint8_t>({1, 1, 1}));
+    const std::vector<std::uint64_t> after = {kAdaptiveWarmupSamples, kAdaptiveWarmupSamples, kAdaptiveWarmupSamples};
+    EXPECT_EQ(activeBlocks(s, c, after), std::vector<std::uint8_t>({0, 1, 0}));
+}
+
+TEST(AdaptiveSampling, BlocksAlikeAllTakeThePass) {
+    // No variance anywhere (a furnace), and equal noise per sample held: every block, every pass.
+    EXPECT_EQ(activeBlocks(std::vector<double>(5, 0.0), std::vector<double>(5, 3.0), std::vector<std::uint64_t>(5, 64)),
+              std::vector<std::uint8_t>(5, 1));
+    EXPECT_EQ(activeBlocks(std::vector<double>{0.3, 0.6, 0.9}, std::vector<double>(3, 2.0),
+                           std::vector<std::uint64_t>{32, 64, 96}),
+              std::vector<std::uint8_t>(3, 1));
+}
+
+TEST(AdaptiveSampling, BlocksEndWithSamplesInProportionToTheirNoiseAndTheLeastMse) {
+    // Deviations over two decades. After the passes, n/s is alike across the blocks (within two
+    // passes' samples of the largest block's share), and the image's MSE, mean s²/n, is within 2 %
+    // of the least any spreading of the same total reaches, (mean s)² / (total / blocks), where
+    // spreading the total evenly would give mean(s²) / (total / blocks), 2.6 times that.
+    const std::vector<double> s = {0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 0.3};
+    const std::uint64_t rpp = 4;
+    const std::vector<std::uint64_t> n = simulate(s, 4000, rpp);
+    const double total = double(std::accumulate(n.begin(), n.end(), std::uint64_t(0)));
+    const double perBlock = total / double(s.size());
+    const double meanS = std::accumulate(s.begin(), s.end(), 0.0) / double(s.size());
+    double meanS2 = 0.0;
+    for (double v : s) meanS2 += v * v / double(s.size());
+    const double best = meanS * meanS / perBlock;
+    const double even = meanS2 / perBlock;
+    EXPECT_GT(even / best, 2.5);
+    EXPECT_LT(imageMse(s, n) / best, 1.02);
+    // Each block's share of the samples is its share of the deviations (the floor, 5 % of the
+    // mean, lifts block 0's 0.1 to 0.12), within 10 % and two passes' samples.
+    std::vector<double> floored(s);
+    for (double& v : floored) v = std::max(v, kAdaptiveDeviationFloor * meanS);
+    const double sumFloored = std::accumulate(floored.begin(), floored.end(), 0.0);
+    for (std::size_t b = 0; b < s.size(); ++b) {
+        const double expected = floored[b] / sumFloored;
+        EXPECT_NEAR(double(n[b]) / total, expected, 0.1 * expected + 2.0 * double(rpp) / total) << "block " << b;
+    }
+}
+
+TEST(AdaptiveSampling, ADearerBlockTakesFewerSamplesForTheSameNoise) {
+    // Equal noise, one block four times as dear per sample (rays): for the least MSE in a given
+    // time, n ∝ s/√c, so the cheap block ends with twice the samples; without the cost they would
+    // be equal.
+    const std::vector<std::uint64_t> n = simulate({1.0, 1.0}, 2000, 4, {1.0, 4.0});
+    EXPECT_NEAR(double(n[0]) / double(n[1]), 2.0, 0.1);
+    const std::vector<std::uint64_t> same = simulate({1.0, 1.0}, 2000, 4);
+    EXPECT_EQ(same[0], same[1]);
+}
+
+TEST(AdaptiveSampling, ABlockWithoutVarianceStillTakesSamplesAtTheFloor) {
+    // Block 0's first samples all agreed: it goes on at the floor's rate, so a rare bright path
+    // there is not missed for good; block 1 takes the rest.
+    // Its floored deviation is 5 % of the mean deviation, 0.5, against block 1's 1: n0/n1 → 0.025.
+    const std::vector<std::uint64_t> n = simulate({0.0, 1.0}, 2000, 4);
+    EXPECT_GT(n[0], kAdaptiveWarmupSamples);
+    const double expected = kAdaptiveDeviationFloor * 0.5 / 1.0;
+    EXPECT_NEAR(double(n[0]) / double(n[1]), expected, 0.5 * expected);
+}
+
+TEST(AdaptiveSampling, BlockNoiseIsTheRootOfItsPixelsMeanVarianceAndItsMeanRays) {
+    // 5 × 5 pixels: blocks of 4 × 4, so 2 × 2 blocks, the right and top ones cut off. Pixel (x, y)
+    // has mean value m = x + y (grey), second moment m² + (x + 1)·0.01, so its variance is
+    // (x + 1)·0.01, and y + 1 rays per sample; one pixel's float rounding gives a slightly negative
+    // variance, counted as 0.
+    const AdaptiveBlocks blocks{5, 5};
+    ASSERT_EQ(blocks.count(), 4);
+    EXPECT_EQ(blocks.blockOf(4, 0), 1);
+    EXPECT_EQ(blocks.blockOf(0, 4), 2);
+    std::vector<float> mean(4 * 25), moments(2 * 25);
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 5; ++x) {
+            const std::size_t i = std::size_t(y * 5 + x);
+            const float m = float(x + y);
+            mean[4 * i] = mean[4 * i + 1] = mean[4 * i + 2] = m;
+            moments[2 * i] = m * m + float(x + 1) * 0.01f;
+            moments[2 * i + 1] = float(y + 1);
+        }
+    moments[2 * 24] = 64.0f - 1e-3f;   // pixel (4, 4), m = 8: variance −0.001 → 0
+    const BlockNoise noise = blockNoise(blocks, mean, moments);
+    ASSERT_EQ(noise.deviation.size(), 4u);
+    EXPECT_NEAR(noise.deviation[0], std::sqrt(0.025), 1e-4);   // x 0–3: (1 + 2 + 3 + 4)/4 · 0.01
+    EXPECT_NEAR(noise.deviation[1], std::sqrt(0.05), 1e-4);    // x 4 alone
+    EXPECT_NEAR(noise.deviation[2], std::sqrt(0.025), 1e-4);   // y 4, x 0–3
+    EXPECT_NEAR(noise.deviation[3], 0.0, 1e-6);                // (4, 4) alone, clamped
+    EXPECT_DOUBLE_EQ(noise.cost[0], 2.5);                      // y 0–3: rays 1–4
+    EXPECT_DOUBLE_EQ(noise.cost[3], 5.0);
+    EXPECT_THROW(blockNoise(blocks, mean, std::vector<float>(49)), std::invalid_argument);
+}
