@@ -8,7 +8,7 @@
 #define BINDING_ACCUM_IMAGE 0          // image unit: the running mean, RGBA32F (tracer)
 #define BINDING_ACCUM_TEXTURE 0        // texture unit: the running mean, read by the display pass
 #define BINDING_SAMPLE_PLAN_IMAGE 1    // image unit: render.adaptive's plan, R32UI (adaptive_sampling.glsl)
-#define BINDING_SECOND_MOMENT_IMAGE 2  // image unit: render.adaptive's second moment and rays per sample, RG32F
+#define BINDING_ADAPTIVE_HALF_IMAGE 2  // image unit: render.adaptive's half mean and rays per sample, RGBA32F
 #define BINDING_SKY_MAP_TEXTURE 4      // texture unit: sky.map (1×1 black without)
 // Texture units: texture-buffer views of geometry buffers, RGBA32UI (scene_geometry.glsl).
 #define BINDING_TOP_NODE_TEXELS 5

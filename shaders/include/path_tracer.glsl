@@ -66,7 +66,7 @@ void tracePixelPass(ivec2 pixel) {
     uint planned = imageLoad(uSamplePlan, pixel).r;
     if (planned == ADAPTIVE_SKIP) return;
     uint start = planned + params.sampleStart;
-    float sumSquares = 0.0f;
+    vec3 sumHalf = vec3(0.0f);
 #else
     uint start = params.sampleStart;
 #endif
@@ -104,7 +104,7 @@ void tracePixelPass(ivec2 pixel) {
         if (!pathStep(path, smp, rays)) continue;
         vec3 added = addSample(path.radiance, s, pixel, sum, nonFinite RAYLAB_MOMENTS);
 #if RAYLAB_ADAPTIVE
-        sumSquares += adaptiveValue(added) * adaptiveValue(added);
+        if (adaptiveInHalf(start + uint(s))) sumHalf += added;
 #endif
         if (++s < params.rpp) {
             smp = passSampler(pixel, start, s);
@@ -125,14 +125,14 @@ void tracePixelPass(ivec2 pixel) {
 #endif
     imageStore(uAccum, pixel, vec4(mean, 1.0f));
 #if RAYLAB_ADAPTIVE
-    // The second moment and the rays per sample, running means as the image's.
-    vec2 passSums = vec2(sumSquares, float(rays));
-    vec2 moments = passSums / float(params.rpp);
-    if (start > 0u) {
-        vec2 old = imageLoad(uSecondMoment, pixel).rg;
-        moments = old + (passSums - float(params.rpp) * old) / float(start + uint(params.rpp));
-    }
-    imageStore(uSecondMoment, pixel, vec4(moments, 0.0f, 0.0f));
+    // The half's mean and the rays per sample, running means as the image's.
+    uint end = start + uint(params.rpp);
+    uint halfBefore = adaptiveHalfCount(start), halfAfter = adaptiveHalfCount(end);
+    vec4 stored = start > 0u ? imageLoad(uAdaptiveHalf, pixel) : vec4(0.0f);
+    vec3 halfMean = halfAfter == 0u ? vec3(0.0f)
+                  : stored.rgb + (sumHalf - float(halfAfter - halfBefore) * stored.rgb) / float(halfAfter);
+    float raysPerSample = stored.a + (float(rays) - float(params.rpp) * stored.a) / float(end);
+    imageStore(uAdaptiveHalf, pixel, vec4(halfMean, raysPerSample));
 #endif
     // llvmpipe (gallivm) ends every loop of an invocation once 65535 loop iterations have run in
     // all, silently. A loop of rpp + 1 iterations that stops early shows the budget ran out, so

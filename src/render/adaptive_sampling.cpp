@@ -9,34 +9,46 @@
 
 namespace raylab {
 
+static_assert(kAdaptiveWarmupSamples >= 2 * glsl::ADAPTIVE_HALF_RUN,
+              "the first decision needs samples in the half and in the other half");
+
 int AdaptiveBlocks::columns() const { return (width + glsl::FRAGMENT_BLOCK - 1) / glsl::FRAGMENT_BLOCK; }
 int AdaptiveBlocks::rows() const { return (height + glsl::FRAGMENT_BLOCK - 1) / glsl::FRAGMENT_BLOCK; }
 int AdaptiveBlocks::blockOf(int x, int y) const {
     return (y / glsl::FRAGMENT_BLOCK) * columns() + x / glsl::FRAGMENT_BLOCK;
 }
+int AdaptiveBlocks::pixelsIn(int block) const {
+    const int x = (block % columns()) * glsl::FRAGMENT_BLOCK, y = (block / columns()) * glsl::FRAGMENT_BLOCK;
+    return std::min(glsl::FRAGMENT_BLOCK, width - x) * std::min(glsl::FRAGMENT_BLOCK, height - y);
+}
 
-BlockNoise blockNoise(const AdaptiveBlocks& blocks, std::span<const float> meanRgba, std::span<const float> moments) {
+BlockNoise blockNoise(const AdaptiveBlocks& blocks, std::span<const float> meanRgba, std::span<const float> halfRgba,
+                      std::span<const std::uint64_t> samples) {
     const std::size_t pixels = std::size_t(blocks.width) * std::size_t(blocks.height);
-    if (meanRgba.size() != 4 * pixels || moments.size() != 2 * pixels)
+    if (meanRgba.size() != 4 * pixels || halfRgba.size() != 4 * pixels)
         throw std::invalid_argument("blockNoise: the images are not the blocks' size");
     const std::size_t n = std::size_t(blocks.count());
-    std::vector<double> variance(n, 0.0), rays(n, 0.0);
-    std::vector<int> count(n, 0);
+    if (samples.size() != n) throw std::invalid_argument("blockNoise: one sample count per block");
+    std::vector<double> difference(n, 0.0), rays(n, 0.0);
     for (int y = 0; y < blocks.height; ++y)
         for (int x = 0; x < blocks.width; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(blocks.width) + std::size_t(x);
-            const double v = glsl::adaptiveValue(glm::vec3(meanRgba[4 * i], meanRgba[4 * i + 1], meanRgba[4 * i + 2]));
-            const double var = double(moments[2 * i]) - v * v;
             const std::size_t b = std::size_t(blocks.blockOf(x, y));
-            variance[b] += std::isfinite(var) ? std::max(var, 0.0) : 0.0;
-            rays[b] += std::isfinite(moments[2 * i + 1]) ? double(moments[2 * i + 1]) : 0.0;
-            ++count[b];
+            for (std::size_t c = 0; c < 3; ++c) {
+                const double d = double(meanRgba[4 * i + c]) - double(halfRgba[4 * i + c]);
+                if (std::isfinite(d)) difference[b] += d * d / 3.0;
+            }
+            if (std::isfinite(halfRgba[4 * i + 3])) rays[b] += double(halfRgba[4 * i + 3]);
         }
-    BlockNoise noise{std::vector<double>(n), std::vector<double>(n)};
+    BlockNoise noise{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
     for (std::size_t b = 0; b < n; ++b) {
-        const double pixelsIn = double(std::max(count[b], 1));
-        noise.deviation[b] = std::sqrt(variance[b] / pixelsIn);
+        const double pixelsIn = double(blocks.pixelsIn(int(b)));
         noise.cost[b] = rays[b] / pixelsIn;
+        const std::uint64_t all = samples[b];
+        const std::uint64_t half = glsl::adaptiveHalfCount(unsigned(std::min<std::uint64_t>(all, 0xffffffffu)));
+        if (half == 0 || half >= all) continue;   // no second set to compare with yet
+        const double meanError2 = difference[b] / pixelsIn * double(half) / double(all - half);
+        noise.deviation[b] = std::sqrt(double(all) * meanError2);
     }
     return noise;
 }
@@ -66,6 +78,16 @@ std::vector<std::uint8_t> activeBlocks(std::span<const double> deviation, std::s
     if (std::find(active.begin(), active.end(), 1) == active.end())   // rounding: the largest ratio takes it
         active[std::size_t(std::max_element(ratio.begin(), ratio.end()) - ratio.begin())] = 1;
     return active;
+}
+
+std::uint64_t passScale(const AdaptiveBlocks& blocks, std::span<const std::uint8_t> active) {
+    if (active.size() != std::size_t(blocks.count())) throw std::invalid_argument("passScale: one flag per block");
+    std::uint64_t activePixels = 0;
+    for (std::size_t b = 0; b < active.size(); ++b)
+        if (active[b]) activePixels += std::uint64_t(blocks.pixelsIn(int(b)));
+    if (activePixels == 0) return 1;
+    const std::uint64_t pixels = std::uint64_t(blocks.width) * std::uint64_t(blocks.height);
+    return std::clamp<std::uint64_t>(pixels / activePixels, 1, kAdaptiveMaxPassScale);
 }
 
 } // namespace raylab

@@ -9,8 +9,9 @@
 
 namespace raylab {
 
-// Every block takes every pass until each holds this many samples, so each pixel's variance is
-// estimated from at least this many before the first decision.
+// Every block takes every pass until each holds this many samples, so that each pixel's error is
+// estimated from at least this many (its half and the other half, ADAPTIVE_HALF_RUN each) before
+// the first decision.
 constexpr std::uint64_t kAdaptiveWarmupSamples = 16;
 // A block's deviation counts as at least this share of the mean block's, so that a block whose
 // first samples happened to agree (a rare bright path not met yet) still gets samples, at a lower rate.
@@ -24,26 +25,38 @@ struct AdaptiveBlocks {
     int rows() const;
     int count() const { return columns() * rows(); }
     int blockOf(int x, int y) const;   // the block of pixel (x, y)
+    int pixelsIn(int block) const;      // FRAGMENT_BLOCK² but at the cut-off edges
 };
 
-// Per block: its noise per sample, the root of its pixels' mean sample variance E[v²] − E[v]² with v
-// the mean of R, G and B (adaptiveValue), and its cost, its pixels' mean rays per sample; from the
-// running mean (RGBA per pixel) and the tracer's running moments (per pixel: the second moment of
-// v, then rays per sample), both in the same row order.
+// Per block: its noise per sample and its cost, its pixels' mean rays per sample. The noise is the
+// deviation per sample that would leave the block's mean with the error it has: the root of n
+// times the error² of the mean, estimated as the mean over its pixels and R, G, B of (all − half)²
+// scaled by h/(n − h), h the half's samples (adaptive_sampling.glsl; for independent samples
+// E[(all − half)²] = σ²·(n − h)/(n·h)). From the running mean (RGBA per pixel), the tracer's half
+// image (the half's mean, then rays per sample) in the same row order, and each block's samples.
 struct BlockNoise {
     std::vector<double> deviation;
     std::vector<double> cost;
 };
-BlockNoise blockNoise(const AdaptiveBlocks& blocks, std::span<const float> meanRgba, std::span<const float> moments);
+BlockNoise blockNoise(const AdaptiveBlocks& blocks, std::span<const float> meanRgba, std::span<const float> halfRgba,
+                      std::span<const std::uint64_t> samples);
 
-// Which blocks take the next pass (1) and which sit it out (0), from each block's deviation s, its
-// cost c (rays per sample, at least 1) and the samples n it holds. While a block holds fewer than
+// Which blocks take the next pass (1) and which sit it out (0), from each block's deviation s (as
+// blockNoise gives it: e·√n, e the estimated error of its mean), its cost c (rays per sample, at
+// least 1) and the samples n it holds. While a block holds fewer than
 // kAdaptiveWarmupSamples, all take it. Then a block takes it when s/(n·√c) (s floored at
 // kAdaptiveDeviationFloor of the mean s) is at least the mean of that over the blocks: the image's
-// MSE is the mean of s²/n, so per unit of time a sample lowers it most where s²/(n²·c) is largest,
+// MSE is the mean of e² = s²/n, so per unit of time a sample lowers it most where s²/(n²·c) is largest,
 // and at the fixed point n ∝ s/√c, the spreading that minimises the MSE for the time spent
 // (minimise Σ s²/n with Σ n·c fixed). At least one block always takes the pass.
 std::vector<std::uint8_t> activeBlocks(std::span<const double> deviation, std::span<const double> cost,
                                        std::span<const std::uint64_t> samples);
+
+// A pass that only some blocks take would be a pass's fixed costs (its draws, the plan's read-back)
+// for less work: those blocks take the pass's samples this many times over, the image's pixels
+// over the active ones rounded down, at most kAdaptiveMaxPassScale, so that a pass traces nearly as
+// many samples as an even one and never more.
+constexpr std::uint64_t kAdaptiveMaxPassScale = 8;
+std::uint64_t passScale(const AdaptiveBlocks& blocks, std::span<const std::uint8_t> active);
 
 } // namespace raylab

@@ -58,7 +58,7 @@ PathTracer::PathTracer(TracerOptions options) : options_(options) {
 PathTracer::~PathTracer() {
     glDeleteTextures(1, &accumTexture_);
     glDeleteTextures(1, &planTexture_);
-    glDeleteTextures(1, &momentTexture_);
+    glDeleteTextures(1, &halfTexture_);
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &counterBuffer_);
@@ -100,12 +100,10 @@ void PathTracer::allocateImage(int width, int height) {
     glDeleteTextures(1, &accumTexture_);
     glCreateTextures(GL_TEXTURE_2D, 1, &accumTexture_);
     glTextureStorage2D(accumTexture_, 1, GL_RGBA32F, width, height);
+    // render.adaptive's images follow the size; allocateAdaptiveImages makes them when needed.
     glDeleteTextures(1, &planTexture_);
-    glCreateTextures(GL_TEXTURE_2D, 1, &planTexture_);
-    glTextureStorage2D(planTexture_, 1, GL_R32UI, width, height);
-    glDeleteTextures(1, &momentTexture_);
-    glCreateTextures(GL_TEXTURE_2D, 1, &momentTexture_);
-    glTextureStorage2D(momentTexture_, 1, GL_RG32F, width, height);
+    glDeleteTextures(1, &halfTexture_);
+    planTexture_ = halfTexture_ = 0;
     blocks_ = AdaptiveBlocks{width, height};
     stripTiles_ = options_.entry == TracerEntry::Fragment && options_.balanceTiles
                              ? fragmentStripTiles(width, height, rasterThreads())
@@ -117,6 +115,14 @@ void PathTracer::allocateImage(int width, int height) {
     glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, std::max(height, strip.y));
     width_ = width;
     height_ = height;
+}
+
+void PathTracer::allocateAdaptiveImages() {
+    if (!adaptive_ || planTexture_) return;
+    glCreateTextures(GL_TEXTURE_2D, 1, &planTexture_);
+    glTextureStorage2D(planTexture_, 1, GL_R32UI, width_, height_);
+    glCreateTextures(GL_TEXTURE_2D, 1, &halfTexture_);
+    glTextureStorage2D(halfTexture_, 1, GL_RGBA32F, width_, height_);
 }
 
 void PathTracer::setScene(const Scene& scene) {
@@ -141,6 +147,7 @@ void PathTracer::updateSettings(const Scene& scene) {
     // The debug views, the inspector and the exercises trace every pixel alike (their own loops).
     if (!options_.extraDefines.empty()) features_.adaptive = false;
     adaptive_ = features_.adaptive;
+    allocateAdaptiveImages();
     program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
     // The variant's search, not the scene's key: the unspecialised tracer always walks the BVH.
     const std::uint64_t flatIterations =
@@ -211,11 +218,10 @@ void PathTracer::updateTransforms(const Scene& scene) {
 void PathTracer::reset() {
     const float zero[4] = {0, 0, 0, 0};
     if (accumTexture_) glClearTexImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, zero);
-    if (momentTexture_) glClearTexImage(momentTexture_, 0, GL_RG, GL_FLOAT, zero);
+    if (halfTexture_) glClearTexImage(halfTexture_, 0, GL_RGBA, GL_FLOAT, zero);
     blockSamples_.assign(std::size_t(blocks_.count()), 0);
     passBlocks_.clear();
     planned_ = false;
-    totalSamples_ = 0;
     samplesPerPixel_ = 0;
     passes_ = 0;
     nonFinite_ = 0;
@@ -249,6 +255,10 @@ void PathTracer::restoreAccumulation(const Image& image, std::uint64_t samplesPe
 
 void PathTracer::renderPass(int rpp) {
     if (rpp <= 0) rpp = defaultRpp_;
+    if (adaptive_) {
+        if (!planned_) planPass();
+        rpp *= int(passScale(blocks_, passBlocks_));
+    }
     traceBand(0, height_, 0, rpp);
     finishPass(rpp);
 }
@@ -284,7 +294,7 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     glBindImageTexture(BINDING_ACCUM_IMAGE, accumTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     if (adaptive_) {
         glBindImageTexture(BINDING_SAMPLE_PLAN_IMAGE, planTexture_, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-        glBindImageTexture(BINDING_SECOND_MOMENT_IMAGE, momentTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32F);
+        glBindImageTexture(BINDING_ADAPTIVE_HALF_IMAGE, halfTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     }
     gpuScene_.bind();
     glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_TRACER_PARAMS_UBO, paramsBuffer_);
@@ -333,12 +343,9 @@ void PathTracer::finishPass(int rpp) {
         return;
     }
     if (!planned_) return;   // no band of this pass was traced
-    for (int y = 0; y < height_; ++y)
-        for (int x = 0; x < width_; ++x)
-            if (passBlocks_[std::size_t(blocks_.blockOf(x, y))]) totalSamples_ += std::uint64_t(rpp);
     for (std::size_t b = 0; b < blockSamples_.size(); ++b)
         if (passBlocks_[b]) blockSamples_[b] += std::uint64_t(rpp);
-    samplesPerPixel_ = totalSamples_ / (std::uint64_t(width_) * std::uint64_t(height_));
+    samplesPerPixel_ = pathsTraced() / (std::uint64_t(width_) * std::uint64_t(height_));
     planned_ = false;
 }
 
@@ -347,11 +354,7 @@ void PathTracer::planPass() {
     if (*std::min_element(blockSamples_.begin(), blockSamples_.end()) < kAdaptiveWarmupSamples) {
         passBlocks_.assign(blockSamples_.size(), 1);
     } else {
-        // Both images as GL keeps them, bottom row first: the blocks are counted in those rows too.
-        std::vector<float> mean(4 * pixels), moments(2 * pixels);
-        glGetTextureImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, GLsizei(mean.size() * sizeof(float)), mean.data());
-        glGetTextureImage(momentTexture_, 0, GL_RG, GL_FLOAT, GLsizei(moments.size() * sizeof(float)), moments.data());
-        const BlockNoise noise = blockNoise(blocks_, mean, moments);
+        const BlockNoise noise = adaptiveNoise();
         passBlocks_ = activeBlocks(noise.deviation, noise.cost, blockSamples_);
     }
     std::vector<GLuint> plan(pixels);
@@ -364,6 +367,24 @@ void PathTracer::planPass() {
         }
     glTextureSubImage2D(planTexture_, 0, 0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, plan.data());
     planned_ = true;
+}
+
+BlockNoise PathTracer::adaptiveNoise() const {
+    if (!adaptive_) throw std::logic_error("PathTracer::adaptiveNoise: not an adaptive render");
+    // Both images as GL keeps them, bottom row first: the blocks are counted in those rows too.
+    const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
+    std::vector<float> mean(4 * pixels), half(4 * pixels);
+    glGetTextureImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, GLsizei(mean.size() * sizeof(float)), mean.data());
+    glGetTextureImage(halfTexture_, 0, GL_RGBA, GL_FLOAT, GLsizei(half.size() * sizeof(float)), half.data());
+    return blockNoise(blocks_, mean, half, blockSamples_);
+}
+
+std::uint64_t PathTracer::pathsTraced() const {
+    if (!adaptive_) return samplesPerPixel_ * std::uint64_t(width_) * std::uint64_t(height_);
+    std::uint64_t paths = 0;
+    for (std::size_t b = 0; b < blockSamples_.size(); ++b)
+        paths += blockSamples_[b] * std::uint64_t(blocks_.pixelsIn(int(b)));
+    return paths;
 }
 
 std::vector<std::uint64_t> PathTracer::pixelSamples() const {

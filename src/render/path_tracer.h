@@ -67,10 +67,11 @@ public:
     // Continues a mean of `samplesPerPixel` samples made with the settings now uploaded (a resumed
     // render): `image` (top row first, as readImage gives it) becomes the accumulation, and the
     // next pass adds samples from there on. The image's size must be the scene's, and the render
-    // not adaptive (its per-block counts and second moments are not in an image).
+    // not adaptive (its per-block counts and half means are not in an image).
     void restoreAccumulation(const Image& image, std::uint64_t samplesPerPixel, std::uint64_t passes,
                              std::uint64_t nonFiniteSamples);
-    // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them.
+    // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them; an
+    // adaptive render gives the blocks that take the pass passScale(...) times rpp (adaptive_sampling.h).
     void renderPass(int rpp = 0);
     // Time slicing for interactive use (the viewer): one pass may be traced as horizontal bands and
     // sample chunks. traceBand traces samples [spp + sampleOffset, + rpp) of rows [y, y + rows) and
@@ -89,6 +90,11 @@ public:
     // inspection or exercise define is set); then the samples each pixel holds.
     bool adaptive() const { return adaptive_; }
     std::vector<std::uint64_t> pixelSamples() const;   // top row first, as readImage
+    // render.adaptive: each block's noise and cost as the next plan reads them (blockNoise), its
+    // blocks in GL's rows (bottom first); blockSamples() the samples each holds.
+    BlockNoise adaptiveNoise() const;
+    const std::vector<std::uint64_t>& blockSamples() const { return blockSamples_; }
+    const AdaptiveBlocks& adaptiveBlocks() const { return blocks_; }
     std::uint64_t passes() const { return passes_; }
     std::uint64_t nonFiniteSamples() const { return nonFinite_; }   // replaced by 0, counted
     std::uint64_t raysTraced() const { return rays_; }
@@ -106,7 +112,7 @@ public:
     // With RAYLAB_COUNT_TRAVERSAL in extraDefines: BVH boxes and triangles tested (else 0).
     std::uint64_t boxTests() const { return boxTests_; }
     std::uint64_t triangleTests() const { return triangleTests_; }
-    std::uint64_t pathsTraced() const { return adaptive_ ? totalSamples_ : samplesPerPixel_ * std::uint64_t(width_) * height_; }
+    std::uint64_t pathsTraced() const;   // camera paths over all pixels
     int width() const { return width_; }
     int height() const { return height_; }
 
@@ -126,6 +132,7 @@ public:
 private:
     void allocateImage(int width, int height);
     void drawBand(int y, int rows, int sampleOffset, int rpp);   // one draw of traceBand
+    void allocateAdaptiveImages();   // render.adaptive's plan and half images, once it is in effect
     void planPass();   // render.adaptive: which blocks take the pass (adaptive_sampling.h), uploaded
 
     static ShaderProgram compileVariant(const ShaderDefines& features, const void* self);
@@ -138,13 +145,12 @@ private:
     glm::dvec3 origin_{0.0};
     unsigned accumTexture_ = 0;
     unsigned planTexture_ = 0;     // render.adaptive: R32UI, a pixel's samples so far or ADAPTIVE_SKIP
-    unsigned momentTexture_ = 0;   // render.adaptive: RG32F, the running second moment and rays per sample
+    unsigned halfTexture_ = 0;     // render.adaptive: RGBA32F, the half's running mean and rays per sample
     bool adaptive_ = false;
     AdaptiveBlocks blocks_;
     std::vector<std::uint64_t> blockSamples_;   // render.adaptive: samples each block holds
     std::vector<std::uint8_t> passBlocks_;      // the planned pass's blocks (1: takes it)
     bool planned_ = false;                      // passBlocks_ is the current pass's plan
-    std::uint64_t totalSamples_ = 0;            // render.adaptive: over all pixels
     unsigned framebuffer_ = 0;
     unsigned vertexArray_ = 0;
     unsigned counterBuffer_ = 0;

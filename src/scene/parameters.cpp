@@ -141,11 +141,11 @@ std::vector<ParamSpec> buildSceneTable() {
              G::ResetAccumulation),
         [](auto& s) -> auto& { return s.render.mis; });
     add(spec("render.adaptive", T::Bool, kAny, kAny, "",
-             "Adaptive sampling: after 16 samples everywhere, each pass goes only to the 4x4 pixel blocks whose "
-             "noise per sample held, over the root of their rays per sample, is at least the image's mean, so blocks "
-             "end with samples in proportion to noise / sqrt(cost), the spreading with the least image MSE for the "
-             "time spent; render.spp is then the mean over the pixels. Needs render.sampler sobol or independent "
-             "(bench/adaptive_sampling.md).",
+             "Adaptive sampling: after a warm-up pass or two everywhere, each pass goes only to the pixel blocks "
+             "whose estimated error (all samples' mean against half of them), over the root of their samples and "
+             "rays per sample, is at least the image's mean, and they take its samples several times over, so that "
+             "each sample goes where it lowers the image's MSE most for its time; render.spp is then the mean over "
+             "the pixels. Needs render.sampler sobol or independent (bench/adaptive_sampling.md).",
              G::RecompileShader),
         [](auto& s) -> auto& { return s.render.adaptive; });
     add(spec("render.exposure", T::Float, atLeast(-20), atMost(20), "EV stops",

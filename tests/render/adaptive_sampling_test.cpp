@@ -1,14 +1,17 @@
 // The planning of per-pixel adaptive sampling (render/adaptive_sampling.h), without GL: warm-up,
 // the fixed point n ∝ s/√c that minimises the image's MSE in a given time, the floor that keeps
-// every block sampled, and the per-block noise and cost read from the running mean and moments.
+// every block sampled, the error estimate from all samples against half of them, and the pass scale.
 #include "render/adaptive_sampling.h"
+#include "shaders/include/adaptive_sampling.glsl"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
+#include <random>
 #include <vector>
 
 using namespace raylab;
@@ -102,32 +105,104 @@ TEST(AdaptiveSampling, ABlockWithoutVarianceStillTakesSamplesAtTheFloor) {
     EXPECT_NEAR(double(n[0]) / double(n[1]), expected, 0.5 * expected);
 }
 
-TEST(AdaptiveSampling, BlockNoiseIsTheRootOfItsPixelsMeanVarianceAndItsMeanRays) {
+TEST(AdaptiveSampling, TheHalfIsEveryOtherRunOfSamples) {
+    // adaptiveHalfCount counts what adaptiveInHalf picks; runs of ADAPTIVE_HALF_RUN alternate.
+    unsigned counted = 0;
+    for (unsigned n = 0; n < 200; ++n) {
+        EXPECT_EQ(glsl::adaptiveHalfCount(n), counted) << n;
+        counted += glsl::adaptiveInHalf(n) ? 1u : 0u;
+    }
+    EXPECT_TRUE(glsl::adaptiveInHalf(0));
+    EXPECT_TRUE(glsl::adaptiveInHalf(glsl::ADAPTIVE_HALF_RUN - 1));
+    EXPECT_FALSE(glsl::adaptiveInHalf(glsl::ADAPTIVE_HALF_RUN));
+    EXPECT_EQ(glsl::adaptiveHalfCount(2 * glsl::ADAPTIVE_HALF_RUN * 5), glsl::ADAPTIVE_HALF_RUN * 5);
+}
+
+TEST(AdaptiveSampling, AllAgainstHalfEstimatesTheVarianceOfTheMean) {
+    // Independent samples of variance 4 (normal, mean 1): the estimate n·(all − half)²·h/(n − h)
+    // averaged over 20 000 pixels is σ² = 4, for n a whole number of half-and-other pairs (48) and
+    // not (40: h = 24, n − h = 16). Its standard error is σ²·√2/√20000 = 0.04, so 4 ± 0.2 is five
+    // of them; fixed seed.
+    std::mt19937 rng(12345);
+    std::normal_distribution<double> normal(1.0, 2.0);
+    for (const unsigned n : {48u, 40u}) {
+        const AdaptiveBlocks blocks{1, 1};
+        double sum = 0.0;
+        const int pixels = 20000;
+        for (int p = 0; p < pixels; ++p) {
+            double all = 0.0, half = 0.0;
+            for (unsigned i = 0; i < n; ++i) {
+                const double v = normal(rng);
+                all += v;
+                if (glsl::adaptiveInHalf(i)) half += v;
+            }
+            all /= double(n);
+            half /= double(glsl::adaptiveHalfCount(n));
+            const std::vector<float> mean = {float(all), float(all), float(all), 1.0f};
+            const std::vector<float> halfImage = {float(half), float(half), float(half), 1.0f};
+            const std::vector<std::uint64_t> samples = {n};
+            const double s = blockNoise(blocks, mean, halfImage, samples).deviation[0];
+            sum += s * s;
+        }
+        EXPECT_NEAR(sum / pixels, 4.0, 0.2) << n << " samples";
+    }
+}
+
+TEST(AdaptiveSampling, BlockNoiseComesFromItsPixelsAllAgainstHalfAndItsMeanRays) {
     // 5 × 5 pixels: blocks of 4 × 4, so 2 × 2 blocks, the right and top ones cut off. Pixel (x, y)
-    // has mean value m = x + y (grey), second moment m² + (x + 1)·0.01, so its variance is
-    // (x + 1)·0.01, and y + 1 rays per sample; one pixel's float rounding gives a slightly negative
-    // variance, counted as 0.
+    // has mean m = x + y (grey) and a half mean m − 0.1·(x + 1), so (all − half)² = 0.01·(x + 1)²,
+    // and y + 1 rays per sample. The blocks hold 32, 32, 24 and 16 samples (h = 16, 16, 16, 8:
+    // h/(n − h) = 1, 1, 2, 1); pixel (4, 4)'s red half is not finite, counted as no difference.
     const AdaptiveBlocks blocks{5, 5};
     ASSERT_EQ(blocks.count(), 4);
     EXPECT_EQ(blocks.blockOf(4, 0), 1);
     EXPECT_EQ(blocks.blockOf(0, 4), 2);
-    std::vector<float> mean(4 * 25), moments(2 * 25);
+    EXPECT_EQ(blocks.pixelsIn(0), 16);
+    EXPECT_EQ(blocks.pixelsIn(1), 4);
+    EXPECT_EQ(blocks.pixelsIn(3), 1);
+    std::vector<float> mean(4 * 25), half(4 * 25);
     for (int y = 0; y < 5; ++y)
         for (int x = 0; x < 5; ++x) {
             const std::size_t i = std::size_t(y * 5 + x);
             const float m = float(x + y);
-            mean[4 * i] = mean[4 * i + 1] = mean[4 * i + 2] = m;
-            moments[2 * i] = m * m + float(x + 1) * 0.01f;
-            moments[2 * i + 1] = float(y + 1);
+            for (std::size_t c = 0; c < 3; ++c) {
+                mean[4 * i + c] = m;
+                half[4 * i + c] = m - 0.1f * float(x + 1);
+            }
+            half[4 * i + 3] = float(y + 1);
         }
-    moments[2 * 24] = 64.0f - 1e-3f;   // pixel (4, 4), m = 8: variance −0.001 → 0
-    const BlockNoise noise = blockNoise(blocks, mean, moments);
+    half[4 * 24] = std::numeric_limits<float>::quiet_NaN();
+    const std::vector<std::uint64_t> samples = {32, 32, 24, 16};
+    const BlockNoise noise = blockNoise(blocks, mean, half, samples);
     ASSERT_EQ(noise.deviation.size(), 4u);
-    EXPECT_NEAR(noise.deviation[0], std::sqrt(0.025), 1e-4);   // x 0–3: (1 + 2 + 3 + 4)/4 · 0.01
-    EXPECT_NEAR(noise.deviation[1], std::sqrt(0.05), 1e-4);    // x 4 alone
-    EXPECT_NEAR(noise.deviation[2], std::sqrt(0.025), 1e-4);   // y 4, x 0–3
-    EXPECT_NEAR(noise.deviation[3], 0.0, 1e-6);                // (4, 4) alone, clamped
+    EXPECT_NEAR(noise.deviation[0], std::sqrt(32 * 0.075), 1e-4);   // x 0–3: 0.01·(1 + 4 + 9 + 16)/4
+    EXPECT_NEAR(noise.deviation[1], std::sqrt(32 * 0.25), 1e-4);    // x 4 alone
+    EXPECT_NEAR(noise.deviation[2], std::sqrt(24 * 0.075 * 2), 1e-4);
+    EXPECT_NEAR(noise.deviation[3], std::sqrt(16 * 0.25 * 2 / 3), 1e-4);   // green and blue only
     EXPECT_DOUBLE_EQ(noise.cost[0], 2.5);                      // y 0–3: rays 1–4
     EXPECT_DOUBLE_EQ(noise.cost[3], 5.0);
-    EXPECT_THROW(blockNoise(blocks, mean, std::vector<float>(49)), std::invalid_argument);
+    // Before the other half holds a sample there is nothing to compare: no noise yet.
+    EXPECT_EQ(blockNoise(blocks, mean, half, std::vector<std::uint64_t>{8, 8, 8, 8}).deviation,
+              std::vector<double>(4, 0.0));
+    EXPECT_THROW(blockNoise(blocks, mean, std::vector<float>(49), samples), std::invalid_argument);
+    EXPECT_THROW(blockNoise(blocks, mean, half, std::vector<std::uint64_t>(3)), std::invalid_argument);
+}
+
+TEST(AdaptiveSampling, APassThatFewBlocksTakeGivesThemMoreSamples) {
+    // 8 × 8 pixels, four blocks; 40 × 4, ten blocks.
+    const AdaptiveBlocks four{8, 8};
+    EXPECT_EQ(passScale(four, std::vector<std::uint8_t>{1, 1, 1, 1}), 1u);
+    EXPECT_EQ(passScale(four, std::vector<std::uint8_t>{1, 1, 1, 0}), 1u);   // 64/48, rounded down
+    EXPECT_EQ(passScale(four, std::vector<std::uint8_t>{1, 0, 1, 0}), 2u);
+    EXPECT_EQ(passScale(four, std::vector<std::uint8_t>{0, 0, 0, 1}), 4u);
+    EXPECT_EQ(passScale(four, std::vector<std::uint8_t>{0, 0, 0, 0}), 1u);
+    const AdaptiveBlocks ten{40, 4};
+    std::vector<std::uint8_t> one(10, 0);
+    one[3] = 1;
+    EXPECT_EQ(passScale(ten, one), kAdaptiveMaxPassScale);
+    // A cut-off block counts its pixels: of 5 × 5, the corner pixel's block alone gives 25, the
+    // full block 25/16.
+    EXPECT_EQ(passScale(AdaptiveBlocks{5, 5}, std::vector<std::uint8_t>{0, 0, 0, 1}), kAdaptiveMaxPassScale);
+    EXPECT_EQ(passScale(AdaptiveBlocks{5, 5}, std::vector<std::uint8_t>{1, 0, 0, 0}), 1u);
+    EXPECT_THROW(passScale(four, std::vector<std::uint8_t>(3, 1)), std::invalid_argument);
 }
