@@ -15,8 +15,8 @@ const uint ADAPTIVE_SKIP = 0xffffffffu;   // a plan texel: the pixel's block sit
 // The half: samples whose index lies in an even run of ADAPTIVE_HALF_RUN. Comparing all samples'
 // mean with the half's estimates the error of the mean (Cycles' adaptive sampling compares all
 // with every other sample): for independent samples E[(all − half)²]·h/(n − h) is the variance of
-// the mean, h the half's samples. Runs of 8 rather than every other sample: that one lost the Veach
-// scene's rare light paths on one seed of four (bench/adaptive_sampling.md, second version).
+// the mean, h the half's samples. Runs of 8 rather than every other sample: bench/adaptive_sampling.md,
+// "Second version", compares the two.
 const uint ADAPTIVE_HALF_RUN = 8u;
 RL_FN bool adaptiveInHalf(uint index) { return (index & ADAPTIVE_HALF_RUN) == 0u; }
 // Samples of the half among indices [0, n).
