@@ -1,5 +1,6 @@
 // render.adaptive on the GPU (OSMesa): a furnace, with no variance, renders as without it bit for
-// bit; the error the tracer's half image estimates is the error against a reference; the Cornell
+// bit; the error the tracer's half image estimates is the error against a reference; a pass gives
+// the blocks that take it their pass scale of samples; the Cornell
 // box at equal samples has a lower error against a long reference, with its
 // samples in the box rather than the black background; a seed gives one image; a resumed render
 // and a sampler without an open-ended sequence are refused.
@@ -127,6 +128,28 @@ TEST_F(AdaptiveRenderTest, TheEstimatedErrorOfTheMeanIsItsErrorAgainstAReference
                 measured, estimated / measured);
     EXPECT_GT(estimated / measured, 0.75);
     EXPECT_LT(estimated / measured, 1.33);
+}
+
+TEST_F(AdaptiveRenderTest, APassGivesItsBlocksTheirPassScaleOfSamples) {
+    // After the warm-up, a pass of rpp 8 that only some blocks take gives each of them
+    // passScale × 8 samples (adaptive_sampling.h), so the pass traces nearly as many paths as an
+    // even one and never more.
+    PathTracer tracer;
+    tracer.setScene(cornell({"render.spp=64", "render.adaptive=true"}));
+    tracer.renderPass(16);
+    for (int pass = 0; pass < 3; ++pass) {
+        const std::vector<std::uint64_t> before = tracer.blockSamples();
+        const std::uint64_t pathsBefore = tracer.pathsTraced();
+        tracer.renderPass(8);
+        const std::vector<std::uint64_t>& after = tracer.blockSamples();
+        std::vector<std::uint8_t> active(before.size());
+        for (std::size_t b = 0; b < before.size(); ++b) active[b] = after[b] > before[b] ? 1 : 0;
+        const std::uint64_t scale = passScale(tracer.adaptiveBlocks(), active);
+        EXPECT_GT(scale, 1u) << "pass " << pass << ": the background's blocks should sit it out";
+        for (std::size_t b = 0; b < before.size(); ++b)
+            if (active[b]) EXPECT_EQ(after[b] - before[b], 8 * scale) << "block " << b;
+        EXPECT_LE(tracer.pathsTraced() - pathsBefore, std::uint64_t(8 * 32 * 18));
+    }
 }
 
 TEST_F(AdaptiveRenderTest, OneSeedGivesOneImage) {
