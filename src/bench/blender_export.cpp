@@ -496,6 +496,12 @@ def render_if_asked():
     s.render.threads = int(args.get("--threads", "2"))
     if "--seed" in args:
         s.cycles.seed = int(args["--seed"])
+    if args.get("--adaptive", "0") == "1":
+        # Blender's default sampling: a noise threshold and minimum of 0 are set by Cycles from the
+        # sample count (the properties' own descriptions), so a sweep of samples is a curve.
+        s.cycles.use_adaptive_sampling = True
+        s.cycles.adaptive_threshold = 0.0
+        s.cycles.adaptive_min_samples = 0
     s.render.filepath = args["--output"]
     start = time.perf_counter()
     bpy.ops.render.render(write_still=True)

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -125,6 +126,26 @@ TimeToErrorGoal timeToErrorGoal(const std::vector<Checkpoint>& raylab, double ra
         if (g.ratio < goal) g.verdict = V::NotMet;
     }
     return g;
+}
+
+TimeToErrorGoal timeToErrorGoalAgainstFastest(const std::vector<Checkpoint>& raylab, double raylabStartup,
+                                              std::span<const std::vector<Checkpoint>> peers, double raylabTarget,
+                                              double peerTarget, double goal, size_t* which) {
+    if (peers.empty()) throw std::invalid_argument("timeToErrorGoalAgainstFastest: no peer curve");
+    TimeToErrorGoal best;
+    double bestSeconds = 0.0;
+    for (size_t i = 0; i < peers.size(); ++i) {
+        const TimeToErrorGoal g = timeToErrorGoal(raylab, raylabStartup, peers[i], raylabTarget, peerTarget, goal);
+        const double seconds = g.peerSeconds >= 0.0      ? g.peerSeconds
+                               : peers[i].empty()        ? std::numeric_limits<double>::infinity()
+                                                         : peers[i].back().seconds;
+        if (i == 0 || seconds < bestSeconds) {
+            best = g;
+            bestSeconds = seconds;
+            if (which) *which = i;
+        }
+    }
+    return best;
 }
 
 bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector<Checkpoint>& peer,

@@ -55,6 +55,13 @@ TimeToErrorGoal timeToErrorGoal(const std::vector<Checkpoint>& raylab, double ra
                                 const std::vector<Checkpoint>& peer, double raylabTarget, double peerTarget,
                                 double goal);
 
+// The goal against the fastest of several curves of one peer (Cycles with and without adaptive
+// sampling): the one with the least time to the level, a curve that misses it counting its
+// longest run's time (a lower bound), so the ratio is never flattered. `which` gets its index.
+TimeToErrorGoal timeToErrorGoalAgainstFastest(const std::vector<Checkpoint>& raylab, double raylabStartup,
+                                              std::span<const std::vector<Checkpoint>> peers, double raylabTarget,
+                                              double peerTarget, double goal, size_t* which = nullptr);
+
 // Whether a peer's curve should go on past its planned last point: at some goal level raylab's
 // curve reached, the peer's has not, so the goal would get only a bound there.
 bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector<Checkpoint>& peer,

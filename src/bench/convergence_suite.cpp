@@ -41,6 +41,10 @@ struct ModeSettings {
     // when their mean misses a goal level at maxSpp (curveMissesALevel), so that level is decided
     // where more samples can decide it. "extend_spp" (default: max_spp, no extension).
     int extendSpp = 512;
+    // A second Cycles curve with its adaptive sampling on (Blender's default), the noise threshold
+    // set by Cycles from each run's sample count; the goal then takes the faster curve at each
+    // level. "peer_adaptive" (default false).
+    bool peerAdaptive = false;
 };
 
 struct SuiteScene {
@@ -55,7 +59,7 @@ struct SuiteScene {
 };
 
 struct Curve {
-    std::string renderer;   // "raylab", "raylab:<variant>" or "cycles"
+    std::string renderer;   // "raylab", "raylab:<variant>", "cycles" or "cycles:adaptive"
     int seed = 0;
     std::vector<Checkpoint> points;
 };
@@ -78,6 +82,9 @@ constexpr double kGoalRatio = 3.0;
 // checkpoints' passes are cut to land on 1, 2, 4 … spp. As many as one draw takes: fewer cost
 // more time per sample (bench/throughput.md).
 constexpr int kRpp = PathTracer::kSamplesPerDraw;
+
+// Cycles' curves: "cycles" and, with peer_adaptive, "cycles:adaptive".
+bool isCycles(const std::string& renderer) { return renderer.rfind("cycles", 0) == 0; }
 
 std::string fmt(const char* f, double v) {
     char buf[64];
@@ -140,6 +147,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         mode.peerTimingRuns = m.value("peer_timing_runs", 1);
         mode.peerExtendSpp = m.value("peer_extend_spp", mode.peerMaxSpp);
         mode.extendSpp = m.value("extend_spp", mode.maxSpp);
+        mode.peerAdaptive = m.value("peer_adaptive", false);
         if (mode.extendSpp < mode.maxSpp)
             throw std::runtime_error("modes." + o.mode + ".extend_spp must be at least max_spp");
         if (mode.peerExtendSpp < mode.peerMaxSpp)
@@ -304,23 +312,27 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 // Each point is a separate Blender run whose time jitters: the point's time is
                 // the median of peerTimingRuns runs, its error that of the first.
                 const std::vector<Checkpoint> raylabMean = meanOverSeeds(seedCurves(curves, "raylab"));
-                Curve c{"cycles", 1, {}};
-                for (int spp = 1; spp <= mode.peerExtendSpp; spp *= 2) {
-                    if (spp > mode.peerMaxSpp &&
-                        !peerCurveUndecided(raylabMean, c.points, kGoalLevels, imageMean(reference.mean),
-                                            imageMean(peerReference.mean)))
-                        break;
-                    const CyclesRun r = runCycles(script, spp, o.threads, 1, work);
-                    std::vector<double> times{r.seconds};
-                    for (int k = 1; k < mode.peerTimingRuns; ++k) times.push_back(runCycles(script, spp, o.threads, 1, work).seconds);
-                    std::sort(times.begin(), times.end());
-                    const double seconds = times[times.size() / 2];
-                    c.points.push_back({std::uint64_t(spp), seconds, imageError(r.image, peerReference.mean)});
-                    std::cerr << "   Cycles " << spp << " spp: " << seconds << " s (median of";
-                    for (double t : times) std::cerr << " " << fmt("%.3f", t);
-                    std::cerr << ")\n";
+                for (const bool adaptive : {false, true}) {
+                    if (adaptive && !mode.peerAdaptive) continue;
+                    Curve c{adaptive ? "cycles:adaptive" : "cycles", 1, {}};
+                    for (int spp = 1; spp <= mode.peerExtendSpp; spp *= 2) {
+                        if (spp > mode.peerMaxSpp &&
+                            !peerCurveUndecided(raylabMean, c.points, kGoalLevels, imageMean(reference.mean),
+                                                imageMean(peerReference.mean)))
+                            break;
+                        const CyclesRun r = runCycles(script, spp, o.threads, 1, work, adaptive);
+                        std::vector<double> times{r.seconds};
+                        for (int k = 1; k < mode.peerTimingRuns; ++k)
+                            times.push_back(runCycles(script, spp, o.threads, 1, work, adaptive).seconds);
+                        std::sort(times.begin(), times.end());
+                        const double seconds = times[times.size() / 2];
+                        c.points.push_back({std::uint64_t(spp), seconds, imageError(r.image, peerReference.mean)});
+                        std::cerr << "   " << c.renderer << " " << spp << " spp: " << seconds << " s (median of";
+                        for (double t : times) std::cerr << " " << fmt("%.3f", t);
+                        std::cerr << ")\n";
+                    }
+                    curves.push_back(c);
                 }
-                curves.push_back(c);
                 mismatch = peerMismatch(reference.mean, peerReference.mean);
                 mismatches.emplace_back(s.name, mismatch);
                 const std::vector<std::string> approximations = blenderExportApproximations(scene);
@@ -345,7 +357,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         // One row per renderer: its seeds' mean curve (meanOverSeeds), with the range of the seeds'
         // own slopes beside the slope when there are several; the CSV has every seed and the mean.
         const double refMean = imageMean(reference.mean);
-        std::vector<std::string> renderers;   // in the order they ran: raylab, its variants, Cycles
+        std::vector<std::string> renderers;   // in the order they ran: raylab, its variants, Cycles' curves
         for (const Curve& c : curves)
             if (std::find(renderers.begin(), renderers.end(), c.renderer) == renderers.end())
                 renderers.push_back(c.renderer);
@@ -373,7 +385,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
             const bool exact = last.error.rmse < 1e-7;
             // The slope in three decimals: the goal's −0.6 is a threshold, and −0.597 is not −0.60.
             summary << "| " << s.name << " | " << renderers[k] << " | "
-                    << (renderers[k] == "cycles" ? peerReference.description : reference.description) << " | "
+                    << (isCycles(renderers[k]) ? peerReference.description : reference.description) << " | "
                     << last.spp << " | " << fmt("%.3f", last.seconds) << " | " << fmt("%.3g", last.error.rmse) << " | "
                     << fmt("%.3g", last.error.relMse) << " | "
                     << (exact ? std::string("exact")
@@ -388,11 +400,20 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
             }
             summary << " |\n";
         }
-        if (runPeer && means.size() >= 2 && renderers.back() == "cycles") {
+        const auto cyclesAt = std::find(renderers.begin(), renderers.end(), "cycles");
+        if (runPeer && cyclesAt != renderers.end()) {
             // Cycles' time per run = fixed cost (scene sync, BVH build) + per-sample cost: a
-            // least-squares line through (spp, seconds) separates them, so ratios can be given
-            // both for whole runs and for the sampling work alone.
-            const auto& pts = means.back();
+            // least-squares line through (spp, seconds) of its curve without adaptive sampling
+            // separates them, so ratios can be given both for whole runs and for the sampling
+            // work alone (the fixed cost is the same with adaptive sampling).
+            const auto& pts = means[size_t(cyclesAt - renderers.begin())];
+            std::vector<std::vector<Checkpoint>> peers;
+            std::vector<std::string> peerNames;
+            for (size_t k = 0; k < renderers.size(); ++k)
+                if (isCycles(renderers[k])) {
+                    peers.push_back(means[k]);
+                    peerNames.push_back(renderers[k]);
+                }
             double mx = 0, my = 0, sxy = 0, sxx = 0;
             for (const Checkpoint& p : pts) {
                 mx += double(p.spp);
@@ -424,9 +445,11 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
             // The goal's levels, raylab's start-up included (the convergence table's times are
             // tracing only).
             for (double l : kGoalLevels) {
-                const TimeToErrorGoal g = timeToErrorGoal(means.front(), startupSeconds, means.back(),
-                                                          l * refMean, l * imageMean(peerReference.mean), kGoalRatio);
-                const auto& peerPts = means.back();
+                size_t fastest = 0;
+                const TimeToErrorGoal g = timeToErrorGoalAgainstFastest(means.front(), startupSeconds, peers, l * refMean,
+                                                                        l * imageMean(peerReference.mean), kGoalRatio,
+                                                                        &fastest);
+                const auto& peerPts = peers[fastest];
                 goals << "| " << s.name << " | " << int(l * 100) << " % | "
                       << (g.raylabSeconds > 0.0 ? fmt("%.3g", g.raylabSeconds)
                                                 : "not in " + std::to_string(means.front().back().spp) + " spp")
@@ -434,7 +457,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                       << (g.peerSeconds >= 0.0 ? fmt("%.3g", g.peerSeconds)
                                                : "not in " + std::to_string(peerPts.back().spp) + " spp (" +
                                                      fmt("%.3g", peerPts.back().seconds) + " s)")
-                      << " | ";
+                      << (peers.size() > 1 ? " (" + peerNames[fastest] + ")" : std::string()) << " | ";
                 using B = TimeToErrorGoal::Bound;
                 goals << (g.bound == B::Exact     ? fmt("%.2f×", g.ratio)
                           : g.bound == B::AtLeast ? fmt("> %.2f×", g.ratio)
@@ -490,12 +513,16 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                             : std::string()) +
                        ", one Blender run per sample count, time = its render call" +
                        (mode.peerTimingRuns > 1 ? " (median of " + std::to_string(mode.peerTimingRuns) + " runs)"
-                                                : std::string(" (one run per point)"))
+                                                : std::string(" (one run per point)")) +
+                       (mode.peerAdaptive ? std::string("; two curves: adaptive sampling off (`cycles`) and on "
+                                                        "(`cycles:adaptive`, Blender's default, noise threshold "
+                                                        "and minimum samples automatic from the run's sample count)")
+                                          : std::string())
                      : "not run: " + (peerWanted ? peerWhy : std::string("--peer off")))
        << (mode.seeds > 1
                ? "\n- seeds: raylab renders each curve with seeds 1 … " + std::to_string(mode.seeds) +
                      "; its rows, times to error and goal take the seeds' mean MSE at each checkpoint (RMSE its "
-                     "root, time their mean); Cycles' curve is one seed"
+                     "root, time their mean); each Cycles curve is one seed"
                : std::string())
        << "\n- slope: log–log slope of RMSE against spp (−0.5 when unbiased)"
        << (mode.seeds > 1 ? ", in brackets the range of the seeds' own slopes" : "")
@@ -508,7 +535,11 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
            << fmt("%.0f", kGoalRatio)
            << "× or more. Where one renderer does not reach the level, its time lies past its last point "
               "and the ratio is a bound; sampling only: Cycles' run less its fitted fixed cost against "
-              "raylab's tracing.\n\n| scene | RMSE ≤ (of the mean) | raylab s | Cycles s | Cycles/raylab | "
+              "raylab's tracing"
+           << (mode.peerAdaptive ? std::string("; Cycles s is its faster curve at that level (named in brackets; "
+                                               "a curve that misses the level counts its longest run)")
+                                 : std::string())
+           << ".\n\n| scene | RMSE ≤ (of the mean) | raylab s | Cycles s | Cycles/raylab | "
               "sampling only | goal |\n|---|---|---|---|---|---|---|\n"
            << goals.str();
     if (!mismatches.empty())

@@ -37,13 +37,16 @@ bool blenderAvailable(std::string* why) {
     return true;
 }
 
-CyclesRun runCycles(const fs::path& script, int samples, int threads, int seed, const fs::path& workDir) {
+CyclesRun runCycles(const fs::path& script, int samples, int threads, int seed, const fs::path& workDir,
+                    bool adaptive) {
     fs::create_directories(workDir);
-    const fs::path out = workDir / ("cycles_" + std::to_string(samples) + "_" + std::to_string(seed) + ".exr");
+    const fs::path out = workDir / ("cycles_" + std::to_string(samples) + "_" + std::to_string(seed) +
+                                    (adaptive ? "_adaptive" : "") + ".exr");
     std::string log;
     const std::string cmd = "blender -b --factory-startup --python " + quote(script.string()) +
                             " -- --samples " + std::to_string(samples) + " --threads " + std::to_string(threads) +
-                            " --seed " + std::to_string(seed) + " --output " + quote(out.string());
+                            " --seed " + std::to_string(seed) + " --adaptive " + (adaptive ? "1" : "0") +
+                            " --output " + quote(out.string());
     const int status = runCommand(cmd, log);
     const auto at = log.find("RAYLAB_RENDER_SECONDS ");
     if (status != 0 || at == std::string::npos || !fs::exists(out))

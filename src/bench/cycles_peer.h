@@ -16,8 +16,9 @@ struct CyclesRun {
 // True when `blender` is on PATH and runs; otherwise false with the reason.
 bool blenderAvailable(std::string* why);
 
-// Throws std::runtime_error with Blender's output tail when the run fails.
+// Throws std::runtime_error with Blender's output tail when the run fails. `adaptive` turns on
+// Cycles' adaptive sampling with its threshold set from `samples` (Blender's default: on).
 CyclesRun runCycles(const std::filesystem::path& script, int samples, int threads, int seed,
-                    const std::filesystem::path& workDir);
+                    const std::filesystem::path& workDir, bool adaptive = false);
 
 } // namespace raylab

@@ -13,8 +13,10 @@
 #include <algorithm>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <regex>
 #include <sstream>
 #include <sys/wait.h>
@@ -163,6 +165,38 @@ TEST(BenchConvergence, TimeToErrorGoalIsARatioWhenBothReachAndABoundOtherwise) {
     EXPECT_EQ(g.verdict, V::Open);
 }
 
+TEST(BenchConvergence, TheGoalTakesThePeersFastestCurveAndAMissedLevelCountsItsLongestRun) {
+    // raylab: RMSE = 1/sqrt(spp), 1 ms per spp, no start-up. Peer curves (Cycles without and with
+    // adaptive sampling): 10 ms per spp to 64 spp, 5 ms per spp to 16 spp, 20 ms per spp to 64.
+    using B = TimeToErrorGoal::Bound;
+    const auto raylab = sqrtCurve(1024, 1e-3);
+    const std::vector<std::vector<Checkpoint>> peers = {sqrtCurve(64, 1e-2), sqrtCurve(16, 5e-3),
+                                                        sqrtCurve(64, 2e-2)};
+    // RMSE 1/4 (16 spp): all three reach it; the second is fastest (0.08 s against 0.016).
+    size_t which = 99;
+    TimeToErrorGoal g = timeToErrorGoalAgainstFastest(raylab, 0.0, peers, 0.25, 0.25, 3.0, &which);
+    EXPECT_EQ(which, 1u);
+    EXPECT_EQ(g.bound, B::Exact);
+    EXPECT_NEAR(g.ratio, 0.08 / 0.016, 1e-9);
+    // RMSE 1/8 (64 spp): the second misses it, its longest run (16 spp, 0.08 s) a lower bound below
+    // the first's 0.64 s, so the ratio is only a bound against it: never flattered by the slower curve.
+    g = timeToErrorGoalAgainstFastest(raylab, 0.0, peers, 0.125, 0.125, 3.0, &which);
+    EXPECT_EQ(which, 1u);
+    EXPECT_EQ(g.bound, B::AtLeast);
+    EXPECT_NEAR(g.ratio, 0.08 / 0.064, 1e-9);
+    // Without the second, the first is fastest and the ratio exact; one curve is its own fastest.
+    const std::vector<std::vector<Checkpoint>> two = {peers[2], peers[0]};
+    g = timeToErrorGoalAgainstFastest(raylab, 0.0, two, 0.125, 0.125, 3.0, &which);
+    EXPECT_EQ(which, 1u);
+    EXPECT_EQ(g.bound, B::Exact);
+    EXPECT_NEAR(g.ratio, 0.64 / 0.064, 1e-9);
+    const TimeToErrorGoal alone = timeToErrorGoalAgainstFastest(raylab, 0.05, std::span(peers).first(1), 0.25, 0.25, 3.0);
+    const TimeToErrorGoal direct = timeToErrorGoal(raylab, 0.05, peers[0], 0.25, 0.25, 3.0);
+    EXPECT_EQ(alone.ratio, direct.ratio);
+    EXPECT_EQ(alone.verdict, direct.verdict);
+    EXPECT_THROW(timeToErrorGoalAgainstFastest(raylab, 0.0, {}, 0.25, 0.25, 3.0), std::invalid_argument);
+}
+
 TEST(BenchConvergence, PeerCurveGoesOnOnlyWhereRaylabReachedALevelThePeerHasNot) {
     // RMSE = scale/sqrt(spp) against a mean of 1; levels 5 % and 2 %.
     const double levels[] = {0.05, 0.02};
@@ -226,6 +260,40 @@ TEST(BenchBlenderExport, ScriptRebuildsTheSceneInBlenderCoordinatesAndIsValidPyt
     writeBlenderScript(scene, file);
     const std::string cmd = "python3 -c \"import ast,sys; ast.parse(open(sys.argv[1]).read())\" '" + file.string() + "'";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << "the exported script is not valid Python";
+}
+
+TEST(BenchBlenderExport, TheRenderDriverTurnsOnCyclesAdaptiveSamplingOnlyWhenAsked) {
+    // The script's render_if_asked, run under python3 against a stand-in for Blender's scene: the
+    // settings it leaves for each command line (Blender itself is not needed by the tests).
+    const fs::path file = scratch() / "driver.py";
+    writeBlenderScript(loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/default.json"), file);
+    const fs::path probe = scratch() / "driver_probe.py";
+    std::ofstream(probe) << R"(import ast, sys, time, types
+tree = ast.parse(open(sys.argv[1]).read())
+driver = next(f for f in tree.body if isinstance(f, ast.FunctionDef) and f.name == "render_if_asked")
+scene = types.SimpleNamespace(cycles=types.SimpleNamespace(use_adaptive_sampling=False, adaptive_threshold=0.01,
+                              adaptive_min_samples=7), render=types.SimpleNamespace())
+bpy = types.SimpleNamespace(context=types.SimpleNamespace(scene=scene),
+                            ops=types.SimpleNamespace(render=types.SimpleNamespace(render=lambda **k: None)))
+space = {"bpy": bpy, "sys": sys, "time": time}
+exec(compile(ast.Module(body=[driver], type_ignores=[]), "driver", "exec"), space)
+sys.argv = ["blender", "--", "--samples", "32", "--threads", "2", "--seed", "5"] + sys.argv[2:] + ["--output", "x.exr"]
+space["render_if_asked"]()
+c = scene.cycles
+print("samples", c.samples, "adaptive", c.use_adaptive_sampling, c.adaptive_threshold, c.adaptive_min_samples)
+)";
+    const auto run = [&](const std::string& extra) {
+        const std::string cmd = "python3 '" + probe.string() + "' '" + file.string() + "' " + extra + " 2>&1";
+        std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
+        std::string out;
+        for (int c; (c = std::fgetc(pipe.get())) != EOF;) out += char(c);
+        return out;
+    };
+    // Off unless asked (raylab's own curve is the even one), on with a threshold and minimum that
+    // Cycles sets from the sample count when asked.
+    EXPECT_NE(run("").find("samples 32 adaptive False 0.01 7"), std::string::npos) << run("");
+    EXPECT_NE(run("--adaptive 0").find("samples 32 adaptive False 0.01 7"), std::string::npos) << run("--adaptive 0");
+    EXPECT_NE(run("--adaptive 1").find("samples 32 adaptive True 0.0 0"), std::string::npos) << run("--adaptive 1");
 }
 
 TEST(BenchBlenderExport, PointSpotAndDistantLightsBecomePointSpotAndSun) {

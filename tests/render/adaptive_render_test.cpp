@@ -146,8 +146,11 @@ TEST_F(AdaptiveRenderTest, APassGivesItsBlocksTheirPassScaleOfSamples) {
         for (std::size_t b = 0; b < before.size(); ++b) active[b] = after[b] > before[b] ? 1 : 0;
         const std::uint64_t scale = passScale(tracer.adaptiveBlocks(), active);
         EXPECT_GT(scale, 1u) << "pass " << pass << ": the background's blocks should sit it out";
-        for (std::size_t b = 0; b < before.size(); ++b)
-            if (active[b]) EXPECT_EQ(after[b] - before[b], 8 * scale) << "block " << b;
+        for (std::size_t b = 0; b < before.size(); ++b) {
+            if (active[b]) {
+                EXPECT_EQ(after[b] - before[b], 8 * scale) << "block " << b;
+            }
+        }
         EXPECT_LE(tracer.pathsTraced() - pathsBefore, std::uint64_t(8 * 32 * 18));
     }
 }
