@@ -41,8 +41,9 @@ struct ModeSettings {
     // when their mean misses a goal level at maxSpp (curveMissesALevel), so that level is decided
     // where more samples can decide it. "extend_spp" (default: max_spp, no extension).
     int extendSpp = 512;
-    // A second Cycles curve with its adaptive sampling on (Blender's default), the noise threshold
-    // set by Cycles from each run's sample count; the goal then takes the faster curve at each
+    // A second Cycles curve with its adaptive sampling on (as Blender starts), the noise threshold
+    // left to Cycles (0: set from each run's sample count; Blender's own default is 0.01 at 4096
+    // samples, bench/cycles_adaptive_threshold.py); the goal then takes the faster curve at each
     // level. "peer_adaptive" (default false).
     bool peerAdaptive = false;
 };
@@ -515,8 +516,8 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                        (mode.peerTimingRuns > 1 ? " (median of " + std::to_string(mode.peerTimingRuns) + " runs)"
                                                 : std::string(" (one run per point)")) +
                        (mode.peerAdaptive ? std::string("; two curves: adaptive sampling off (`cycles`) and on "
-                                                        "(`cycles:adaptive`, Blender's default, noise threshold "
-                                                        "and minimum samples automatic from the run's sample count)")
+                                                        "(`cycles:adaptive`, noise threshold and minimum samples 0: "
+                                                        "Cycles sets them from the run's sample count)")
                                           : std::string())
                      : "not run: " + (peerWanted ? peerWhy : std::string("--peer off")))
        << (mode.seeds > 1

@@ -17,7 +17,7 @@ struct CyclesRun {
 bool blenderAvailable(std::string* why);
 
 // Throws std::runtime_error with Blender's output tail when the run fails. `adaptive` turns on
-// Cycles' adaptive sampling with its threshold set from `samples` (Blender's default: on).
+// Cycles' adaptive sampling (on as Blender starts) with its threshold set from `samples`.
 CyclesRun runCycles(const std::filesystem::path& script, int samples, int threads, int seed,
                     const std::filesystem::path& workDir, bool adaptive = false);
 
