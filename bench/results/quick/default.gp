@@ -7,7 +7,7 @@ set key bottom left
 set multiplot layout 1,2 title 'default: RMSE against time and samples'
 set xlabel 'seconds'
 set ylabel 'RMSE'
-plot 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'raylab' && strcol(3) eq 'mean' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab', 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'cycles' && strcol(3) eq '1' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'cycles'
+plot 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'raylab' && strcol(3) eq 'mean' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab', 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'cycles' && strcol(3) eq '1' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'cycles', 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'cycles:adaptive' && strcol(3) eq '1' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'cycles:adaptive'
 set xlabel 'samples per pixel'
-plot 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'raylab' && strcol(3) eq 'mean' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab', 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'cycles' && strcol(3) eq '1' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'cycles'
+plot 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'raylab' && strcol(3) eq 'mean' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab', 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'cycles' && strcol(3) eq '1' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'cycles', 'bench/results/quick/convergence.csv' using (strcol(1) eq 'default' && strcol(2) eq 'cycles:adaptive' && strcol(3) eq '1' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'cycles:adaptive'
 unset multiplot
