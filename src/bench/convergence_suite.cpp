@@ -43,7 +43,7 @@ struct ModeSettings {
     int extendSpp = 512;
     // A second Cycles curve with its adaptive sampling on (as Blender starts), the noise threshold
     // left to Cycles (0: set from each run's sample count; Blender's own default is 0.01 at 4096
-    // samples, bench/cycles_adaptive_threshold.py); the goal then takes the faster curve at each
+    // samples, bench/adaptive_sampling.md); the goal then takes the faster curve at each
     // level. "peer_adaptive" (default false).
     bool peerAdaptive = false;
 };
