@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <stdexcept>
 #include <system_error>
 
@@ -485,6 +486,11 @@ def settings(width, height, max_bounces, seed):
     s.render.image_settings.file_format = "OPEN_EXR"
     s.render.image_settings.color_depth = "32"
 
+)PY";
+
+// The script's last part: a headless run's arguments (after "--") and the render call. Apart, so
+// that a reference keyed by the scene's part (blenderSceneText) outlives changes to how it is run.
+const char* kDriver = R"PY(
 def render_if_asked():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     if not argv:
@@ -496,17 +502,18 @@ def render_if_asked():
     s.render.threads = int(args.get("--threads", "2"))
     if "--seed" in args:
         s.cycles.seed = int(args["--seed"])
-    if args.get("--adaptive", "0") == "1":
-        # Blender's default sampling: a noise threshold and minimum of 0 are set by Cycles from the
-        # sample count (the properties' own descriptions), so a sweep of samples is a curve.
+    if "--adaptive-threshold" in args:
+        # Adaptive sampling, on as Blender starts, at this noise threshold (0: Cycles sets it from
+        # the sample count); the minimum number of samples is left to Cycles (0).
         s.cycles.use_adaptive_sampling = True
-        s.cycles.adaptive_threshold = 0.0
+        s.cycles.adaptive_threshold = float(args["--adaptive-threshold"])
         s.cycles.adaptive_min_samples = 0
     s.render.filepath = args["--output"]
     start = time.perf_counter()
     bpy.ops.render.render(write_still=True)
     print("RAYLAB_RENDER_SECONDS %.6f" % (time.perf_counter() - start), flush=True)
 
+render_if_asked()
 )PY";
 
 bool hasTexture(const Material& m) {
@@ -672,8 +679,15 @@ std::string blenderScript(const Scene& scene, const fs::path& embeddedDir) {
        << num(c.fovY);
     if (c.aperture > 0.0f) py << ", aperture=" << num(c.aperture) << ", focus_distance=" << num(c.focusDistance);
     py << ")\n";
-    py << "render_if_asked()\n";
+    py << kDriver;
     return py.str();
+}
+
+std::string blenderSceneText(std::string script) {
+    const std::string_view driver = kDriver;
+    if (script.size() >= driver.size() && script.compare(script.size() - driver.size(), driver.size(), driver) == 0)
+        script.resize(script.size() - driver.size());
+    return script;
 }
 
 std::vector<std::string> blenderExportApproximations(const Scene& scene) {

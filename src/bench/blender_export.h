@@ -6,10 +6,12 @@
 // transmission, plus Emission, every texture slot through Image Texture nodes (the mapping and
 // its known mismatches are commented in the script's material()); constant / gradient / map skies
 // → World; the same camera, thin lens included (aperture → f-stop); box pixel filter, bounces, no
-// denoising, no clamping, no adaptive sampling.
+// denoising, no clamping, no adaptive sampling unless asked.
 //   blender --python scene.py                     opens the scene in Blender
 //   blender -b --factory-startup --python scene.py -- --samples 64 --output out.exr --threads 2
-// renders headless and prints "RAYLAB_RENDER_SECONDS <s>" (the time of the render call alone).
+// renders headless and prints "RAYLAB_RENDER_SECONDS <s>" (the time of the render call alone);
+// "--seed N" sets Cycles' seed, "--adaptive-threshold T" turns adaptive sampling on at noise
+// threshold T (0: Cycles sets it from the sample count).
 // raylab is y-up, Blender z-up: (x, y, z) → (x, −z, y), a rotation, so handedness is kept.
 #include "scene/scene.h"
 
@@ -22,6 +24,10 @@ namespace raylab {
 // embeddedDir: where writeBlenderScript puts the images decoded from glTF files (the script names
 // them there); scene-file images are named by absolute path, resolved as the loader does.
 std::string blenderScript(const Scene& scene, const std::filesystem::path& embeddedDir = "blender_textures");
+
+// The script without its driver (the headless run's arguments and render call, at its end): what
+// a cached Cycles reference is keyed by, so changing how runs are driven keeps the references.
+std::string blenderSceneText(std::string script);
 
 // How the script names texture `index` of the scene.
 struct BlenderTexture {

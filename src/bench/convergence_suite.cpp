@@ -4,10 +4,9 @@
 #include "bench/convergence.h"
 #include "bench/cycles_peer.h"
 #include "bench/reference.h"
+#include "bench/suite_file.h"
 #include "render/path_tracer.h"
 #include "scene/scene_loader.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -22,42 +21,6 @@
 namespace raylab {
 namespace fs = std::filesystem;
 namespace {
-
-struct ModeSettings {
-    int width = 96, height = 54, maxSpp = 512, seeds = 1, referenceSpp = 4096, referenceBatches = 4,
-        peerMaxSpp = 64;
-    // Cycles' reference needs only to be long against Cycles' own curve (peerMaxSpp), and Cycles
-    // costs several times raylab per sample here: "peer_reference_spp" (default: reference_spp).
-    int peerReferenceSpp = 4096;
-    // Blender runs per Cycles point; the point's time is their median. One run's time jitters by
-    // up to ±0.5 s here (measured: 1.5 s for 1 spp, 0.65 s for 2 spp), so a fair comparison wants
-    // three; a quick look can take one. "peer_timing_runs" (default 1).
-    int peerTimingRuns = 1;
-    // Cycles' curve goes on past peerMaxSpp, doubling up to this, only while a goal level that
-    // raylab reached is not reached by Cycles (the goal would get a bound there, not a ratio).
-    // "peer_extend_spp" (default: peer_max_spp, no extension).
-    int peerExtendSpp = 64;
-    // raylab's curves of a peer scene (every seed, not the variants) are rendered again up to this
-    // when their mean misses a goal level at maxSpp (curveMissesALevel), so that level is decided
-    // where more samples can decide it. "extend_spp" (default: max_spp, no extension).
-    int extendSpp = 512;
-    // A second Cycles curve with its adaptive sampling on (as Blender starts), the noise threshold
-    // left to Cycles (0: set from each run's sample count; Blender's own default is 0.01 at 4096
-    // samples, bench/adaptive_sampling.md); the goal then takes the faster curve at each
-    // level. "peer_adaptive" (default false).
-    bool peerAdaptive = false;
-};
-
-struct SuiteScene {
-    std::string name;
-    fs::path scene;
-    bool analytic = false;
-    glm::vec3 analyticValue{0.0f};
-    bool peer = false;
-    // Extra raylab curves of the same scene against the same reference, each a list of --set
-    // overrides (e.g. NEE off / NEE without MIS / MIS): efficiency of estimators at equal time.
-    std::vector<std::pair<std::string, std::vector<std::string>>> variants;
-};
 
 struct Curve {
     std::string renderer;   // "raylab", "raylab:<variant>", "cycles" or "cycles:adaptive"
@@ -83,14 +46,24 @@ constexpr double kGoalRatio = 3.0;
 // checkpoints' passes are cut to land on 1, 2, 4 … spp. As many as one draw takes: fewer cost
 // more time per sample (bench/throughput.md).
 constexpr int kRpp = PathTracer::kSamplesPerDraw;
+// Blender's starting Max Samples with adaptive sampling on: the cap of the cycles:adaptive runs,
+// whose spp column is therefore this cap, not the samples a pixel took.
+constexpr int kCyclesStartingMaxSamples = 4096;
+constexpr const char* kCyclesThresholdCurve = "cycles:adaptive";
 
-// Cycles' curves: "cycles" and, with peer_adaptive, "cycles:adaptive".
+// Cycles' curves: "cycles" and, with peer_thresholds, "cycles:adaptive".
 bool isCycles(const std::string& renderer) { return renderer.rfind("cycles", 0) == 0; }
 
 std::string fmt(const char* f, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, f, v);
     return buf;
+}
+
+std::string thresholdList(const std::vector<double>& thresholds) {
+    std::string out;
+    for (double t : thresholds) out += (out.empty() ? "" : ", ") + fmt("%g", t);
+    return out;
 }
 
 std::string cpuModel() {
@@ -112,12 +85,17 @@ void writePlots(const fs::path& dir, const std::string& scene, const std::vector
        << "set xlabel 'seconds'\nset ylabel 'RMSE'\n"
        << "plot ";
     // One line per renderer (raylab, its variants, Cycles); column 5 = seconds, 4 = spp, 7 = RMSE.
+    // The threshold curve's spp column is its cap, the same for every point: left out of the spp plot.
     auto lines = [&](int xColumn) {
-        for (size_t i = 0; i < renderers.size(); ++i)
-            gp << (i ? ", " : "") << "'" << (dir / "convergence.csv").string() << "' using (strcol(1) eq '" << scene
+        bool first = true;
+        for (size_t i = 0; i < renderers.size(); ++i) {
+            if (xColumn == 4 && renderers[i] == kCyclesThresholdCurve) continue;
+            gp << (first ? "" : ", ") << "'" << (dir / "convergence.csv").string() << "' using (strcol(1) eq '" << scene
                << "' && strcol(2) eq '" << renderers[i] << "' && strcol(3) eq '" << seeds[i] << "' && $7 > 0 ? $"
                << xColumn
                << " : 1/0):7 with linespoints title '" << renderers[i] << "'";
+            first = false;
+        }
     };
     lines(5);
     gp << "\nset xlabel 'samples per pixel'\nplot ";
@@ -135,47 +113,23 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
     const auto runBegin = std::chrono::steady_clock::now();
     double referenceSeconds = 0.0;   // spent building references this run (0 when all were cached)
     // --- the suite -------------------------------------------------------------------------------
-    ModeSettings mode;
+    SuiteMode mode;
     std::vector<SuiteScene> scenes;
     try {
-        std::ifstream in(o.suiteFile);
-        if (!in) throw std::runtime_error("cannot read");
-        const nlohmann::json j = nlohmann::json::parse(in, nullptr, true, true);
-        const auto& m = j.at("modes").at(o.mode);
-        mode = {m.at("width"), m.at("height"), m.at("max_spp"), m.at("seeds"), m.at("reference_spp"),
-                m.at("reference_batches"), m.at("peer_max_spp")};
-        mode.peerReferenceSpp = m.value("peer_reference_spp", mode.referenceSpp);
-        mode.peerTimingRuns = m.value("peer_timing_runs", 1);
-        mode.peerExtendSpp = m.value("peer_extend_spp", mode.peerMaxSpp);
-        mode.extendSpp = m.value("extend_spp", mode.maxSpp);
-        mode.peerAdaptive = m.value("peer_adaptive", false);
-        if (mode.extendSpp < mode.maxSpp)
-            throw std::runtime_error("modes." + o.mode + ".extend_spp must be at least max_spp");
-        if (mode.peerExtendSpp < mode.peerMaxSpp)
-            throw std::runtime_error("modes." + o.mode + ".peer_extend_spp must be at least peer_max_spp");
-        if (mode.peerTimingRuns < 1) throw std::runtime_error("modes." + o.mode + ".peer_timing_runs must be at least 1");
-        if (mode.seeds < 1) throw std::runtime_error("modes." + o.mode + ".seeds must be at least 1");
-        for (const auto& s : j.at("scenes")) {
-            SuiteScene e;
-            e.name = s.at("name");
-            e.scene = s.at("scene").get<std::string>();
-            if (s.contains("analytic")) {
-                e.analytic = true;
-                e.analyticValue = glm::vec3(s.at("analytic").get<float>());
-            }
-            e.peer = s.value("peer", false);
-            if (s.contains("variants"))
-                for (const auto& v : s.at("variants"))
-                    e.variants.emplace_back(v.at("name").get<std::string>(),
-                                            v.at("set").get<std::vector<std::string>>());
-            if (o.only.empty() || o.only == e.name) scenes.push_back(e);
+        Suite suite = readSuite(o.suiteFile, o.mode);
+        mode = suite.mode;
+        std::string names;
+        for (SuiteScene& e : suite.scenes) {
+            names += (names.empty() ? "" : ", ") + e.name;
+            if (o.only.empty() || o.only == e.name) scenes.push_back(std::move(e));
         }
-    } catch (const std::exception& e) {
-        std::cerr << o.suiteFile.string() << ": error: " << e.what() << "\n";
-        return 1;
-    }
-    if (scenes.empty()) {
-        std::cerr << o.suiteFile.string() << ": error: no scene named '" << o.only << "'\n";
+        if (scenes.empty()) {
+            std::cerr << "--only: error: no scene named '" << o.only << "' in " << o.suiteFile.string() << " (scenes: "
+                      << names << ")\n";
+            return 1;
+        }
+    } catch (const SuiteError& e) {
+        std::cerr << e.what() << "\n";
         return 1;
     }
     std::string peerWhy;
@@ -289,7 +243,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 const fs::path work = outDir / "cycles_work";
                 // The script names files by absolute path; keyed with the working directory left
                 // out, a reference built in one checkout is valid in another.
-                std::string scriptText = blenderScript(scene, outDir / (s.name + "_blender_textures"));
+                std::string scriptText = blenderSceneText(blenderScript(scene, outDir / (s.name + "_blender_textures")));
                 const std::string here = fs::current_path().string() + "/";
                 for (size_t at; (at = scriptText.find(here)) != std::string::npos;) scriptText.erase(at, here.size());
                 const std::string key = "cycles " + fileHash(s.scene) + " " + std::to_string(mode.width) + "x" +
@@ -313,26 +267,39 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 // Each point is a separate Blender run whose time jitters: the point's time is
                 // the median of peerTimingRuns runs, its error that of the first.
                 const std::vector<Checkpoint> raylabMean = meanOverSeeds(seedCurves(curves, "raylab"));
-                for (const bool adaptive : {false, true}) {
-                    if (adaptive && !mode.peerAdaptive) continue;
-                    Curve c{adaptive ? "cycles:adaptive" : "cycles", 1, {}};
-                    for (int spp = 1; spp <= mode.peerExtendSpp; spp *= 2) {
-                        if (spp > mode.peerMaxSpp &&
-                            !peerCurveUndecided(raylabMean, c.points, kGoalLevels, imageMean(reference.mean),
-                                                imageMean(peerReference.mean)))
+                const double peerMean = imageMean(peerReference.mean);
+                // One point: peerTimingRuns Blender runs, the median time, the first run's error.
+                const auto point = [&](Curve& c, int spp, double threshold) {
+                    const CyclesRun r = runCycles(script, spp, o.threads, 1, work, threshold);
+                    std::vector<double> times{r.seconds};
+                    for (int k = 1; k < mode.peerTimingRuns; ++k)
+                        times.push_back(runCycles(script, spp, o.threads, 1, work, threshold).seconds);
+                    std::sort(times.begin(), times.end());
+                    const double seconds = times[times.size() / 2];
+                    c.points.push_back({std::uint64_t(spp), seconds, imageError(r.image, peerReference.mean)});
+                    std::cerr << "   " << c.renderer << " " << spp << " spp"
+                              << (threshold >= 0.0 ? " at most, noise threshold " + fmt("%g", threshold) : std::string())
+                              << ": " << seconds << " s (median of";
+                    for (double t : times) std::cerr << " " << fmt("%.3f", t);
+                    std::cerr << ")\n";
+                };
+                Curve even{"cycles", 1, {}};
+                for (int spp = 1; spp <= mode.peerExtendSpp; spp *= 2) {
+                    if (spp > mode.peerMaxSpp &&
+                        !peerCurveUndecided(raylabMean, even.points, kGoalLevels, imageMean(reference.mean), peerMean))
+                        break;
+                    point(even, spp, -1.0);
+                }
+                curves.push_back(even);
+                if (!mode.peerThresholds.empty()) {
+                    Curve adaptive{kCyclesThresholdCurve, 1, {}};
+                    for (double threshold : mode.peerThresholds) {
+                        if (!adaptive.points.empty() &&
+                            !peerCurveUndecided(raylabMean, adaptive.points, kGoalLevels, imageMean(reference.mean), peerMean))
                             break;
-                        const CyclesRun r = runCycles(script, spp, o.threads, 1, work, adaptive);
-                        std::vector<double> times{r.seconds};
-                        for (int k = 1; k < mode.peerTimingRuns; ++k)
-                            times.push_back(runCycles(script, spp, o.threads, 1, work, adaptive).seconds);
-                        std::sort(times.begin(), times.end());
-                        const double seconds = times[times.size() / 2];
-                        c.points.push_back({std::uint64_t(spp), seconds, imageError(r.image, peerReference.mean)});
-                        std::cerr << "   " << c.renderer << " " << spp << " spp: " << seconds << " s (median of";
-                        for (double t : times) std::cerr << " " << fmt("%.3f", t);
-                        std::cerr << ")\n";
+                        point(adaptive, kCyclesStartingMaxSamples, threshold);
                     }
-                    curves.push_back(c);
+                    curves.push_back(adaptive);
                 }
                 mismatch = peerMismatch(reference.mean, peerReference.mean);
                 mismatches.emplace_back(s.name, mismatch);
@@ -389,7 +356,8 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     << (isCycles(renderers[k]) ? peerReference.description : reference.description) << " | "
                     << last.spp << " | " << fmt("%.3f", last.seconds) << " | " << fmt("%.3g", last.error.rmse) << " | "
                     << fmt("%.3g", last.error.relMse) << " | "
-                    << (exact ? std::string("exact")
+                    << (exact                                 ? std::string("exact")
+                        : renderers[k] == kCyclesThresholdCurve ? std::string("— (one run per threshold)")
                               : fmt("%.3f", convergenceSlope(means[k])) +
                                     (slopes.size() > 1
                                          ? " (" + fmt("%.2f", *slopeMax) + " to " + fmt("%.2f", *slopeMin) + ")"
@@ -515,10 +483,13 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                        ", one Blender run per sample count, time = its render call" +
                        (mode.peerTimingRuns > 1 ? " (median of " + std::to_string(mode.peerTimingRuns) + " runs)"
                                                 : std::string(" (one run per point)")) +
-                       (mode.peerAdaptive ? std::string("; two curves: adaptive sampling off (`cycles`) and on "
-                                                        "(`cycles:adaptive`, noise threshold and minimum samples 0: "
-                                                        "Cycles sets them from the run's sample count)")
-                                          : std::string())
+                       (mode.peerThresholds.empty()
+                            ? std::string()
+                            : "; a second curve, `cycles:adaptive`: adaptive sampling on, at most " +
+                                  std::to_string(kCyclesStartingMaxSamples) +
+                                  " spp (Blender's start), one run per noise threshold (" + thresholdList(mode.peerThresholds) +
+                                  ", in turn until it reaches every goal level raylab reached; its spp column is that "
+                                  "cap, its slope not given)")
                      : "not run: " + (peerWanted ? peerWhy : std::string("--peer off")))
        << (mode.seeds > 1
                ? "\n- seeds: raylab renders each curve with seeds 1 … " + std::to_string(mode.seeds) +
@@ -537,7 +508,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
            << "× or more. Where one renderer does not reach the level, its time lies past its last point "
               "and the ratio is a bound; sampling only: Cycles' run less its fitted fixed cost against "
               "raylab's tracing"
-           << (mode.peerAdaptive ? std::string("; Cycles s is its faster curve at that level (named in brackets; "
+           << (!mode.peerThresholds.empty() ? std::string("; Cycles s is its faster curve at that level (named in brackets; "
                                                "a curve that misses the level counts its longest run)")
                                  : std::string())
            << ".\n\n| scene | RMSE ≤ (of the mean) | raylab s | Cycles s | Cycles/raylab | "

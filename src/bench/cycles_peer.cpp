@@ -38,14 +38,18 @@ bool blenderAvailable(std::string* why) {
 }
 
 CyclesRun runCycles(const fs::path& script, int samples, int threads, int seed, const fs::path& workDir,
-                    bool adaptive) {
+                    double adaptiveThreshold) {
+    const bool adaptive = adaptiveThreshold >= 0.0;
+    char threshold[32];
+    std::snprintf(threshold, sizeof threshold, "%.9g", adaptiveThreshold);
     fs::create_directories(workDir);
     const fs::path out = workDir / ("cycles_" + std::to_string(samples) + "_" + std::to_string(seed) +
-                                    (adaptive ? "_adaptive" : "") + ".exr");
+                                    (adaptive ? std::string("_adaptive_") + threshold : std::string()) + ".exr");
     std::string log;
     const std::string cmd = "blender -b --factory-startup --python " + quote(script.string()) +
                             " -- --samples " + std::to_string(samples) + " --threads " + std::to_string(threads) +
-                            " --seed " + std::to_string(seed) + " --adaptive " + (adaptive ? "1" : "0") +
+                            " --seed " + std::to_string(seed) +
+                            (adaptive ? std::string(" --adaptive-threshold ") + threshold : std::string()) +
                             " --output " + quote(out.string());
     const int status = runCommand(cmd, log);
     const auto at = log.find("RAYLAB_RENDER_SECONDS ");

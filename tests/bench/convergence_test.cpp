@@ -289,11 +289,27 @@ print("samples", c.samples, "adaptive", c.use_adaptive_sampling, c.adaptive_thre
         for (int c; (c = std::fgetc(pipe.get())) != EOF;) out += char(c);
         return out;
     };
-    // Off unless asked (raylab's own curve is the even one), on with a threshold and minimum that
-    // Cycles sets from the sample count when asked.
+    // Off unless asked (the "cycles" curve is the even one); asked, on at the given noise threshold
+    // (0: Cycles sets it from the sample count) with the minimum of samples left to Cycles.
     EXPECT_NE(run("").find("samples 32 adaptive False 0.01 7"), std::string::npos) << run("");
-    EXPECT_NE(run("--adaptive 0").find("samples 32 adaptive False 0.01 7"), std::string::npos) << run("--adaptive 0");
-    EXPECT_NE(run("--adaptive 1").find("samples 32 adaptive True 0.0 0"), std::string::npos) << run("--adaptive 1");
+    EXPECT_NE(run("--adaptive-threshold 0.02").find("samples 32 adaptive True 0.02 0"), std::string::npos)
+        << run("--adaptive-threshold 0.02");
+    EXPECT_NE(run("--adaptive-threshold 0").find("samples 32 adaptive True 0.0 0"), std::string::npos)
+        << run("--adaptive-threshold 0");
+}
+
+TEST(BenchBlenderExport, TheSceneTextLeavesOutTheDriverAlone) {
+    // Cycles' cached references are keyed by the script without its driver, so a change to how
+    // runs are driven keeps them: the scene text is the whole script up to the driver, which ends it.
+    const std::string script = blenderScript(loadScene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/cornell_box.json"));
+    const std::string scene = blenderSceneText(script);
+    EXPECT_LT(scene.size(), script.size());
+    EXPECT_EQ(script.rfind(scene, 0), 0u);
+    EXPECT_EQ(scene.find("render_if_asked"), std::string::npos);
+    EXPECT_NE(script.find("def render_if_asked", scene.size()), std::string::npos);
+    EXPECT_NE(scene.find("camera("), std::string::npos) << "the scene itself stays in the key";
+    // Text that does not end with the driver is kept whole.
+    EXPECT_EQ(blenderSceneText(scene + "x"), scene + "x");
 }
 
 TEST(BenchBlenderExport, PointSpotAndDistantLightsBecomePointSpotAndSun) {
@@ -632,31 +648,93 @@ TEST(BenchConvergenceCli, BadSuiteNamesTheFileAndTheKey) {
                             "' convergence --suite '" + (dir / "bad_suite.json").string() + "' --out '" +
                             (dir / "bad_out").string() + "' --peer off > '" + (dir / "bad_log.txt").string() + "' 2>&1";
     // A quick mode with `keys` on a one-scene suite is refused before anything runs: exit 1, the
-    // file and the key path in the message, no summary written.
-    const auto refused = [&](const std::string& keys, const std::string& message) {
-        SCOPED_TRACE(keys);
-        std::ofstream(dir / "bad_suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, )" << keys
-                                              << R"(, "reference_spp": 4, "reference_batches": 2}},
-            "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
+    // file, the line and column of `at` (the first occurrence of that text in the file), the key
+    // path and what is wrong in the message, nothing else (no library's exception text), no summary
+    // written.
+    const auto refused = [&](const std::string& keys, const std::string& at, const std::string& message,
+                             const std::string& sceneEntry = R"({"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5})") {
+        SCOPED_TRACE(keys + " " + sceneEntry);
+        const std::string text = R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, )" + keys +
+                                 R"(, "reference_spp": 4, "reference_batches": 2}},
+            "scenes": [)" + sceneEntry + "]}";
+        std::ofstream(dir / "bad_suite.json") << text;
+        const std::size_t offset = text.find(at);
+        ASSERT_NE(offset, std::string::npos);
+        const std::size_t lineStart = text.rfind('\n', offset);
+        const int line = 1 + int(std::count(text.begin(), text.begin() + long(offset), '\n'));
+        const int column = int(offset - (lineStart == std::string::npos ? 0 : lineStart + 1)) + 1;
         const int raw = std::system(cmd.c_str());
+        std::stringstream whole;
+        whole << std::ifstream(dir / "bad_log.txt").rdbuf();
+        // The first line names the GL renderer; the error is the rest.
         std::stringstream log;
-        log << std::ifstream(dir / "bad_log.txt").rdbuf();
+        for (std::string text_line; std::getline(whole, text_line);)
+            if (text_line.rfind("GL: ", 0) != 0) log << text_line << "\n";
         ASSERT_TRUE(WIFEXITED(raw));
-        EXPECT_EQ(WEXITSTATUS(raw), 1) << log.str();
-        EXPECT_NE(log.str().find("bad_suite.json: error: " + message), std::string::npos) << log.str();
+        EXPECT_EQ(WEXITSTATUS(raw), 1) << whole.str();
+        const std::string where = (dir / "bad_suite.json").string() + ":" + std::to_string(line) + ":" +
+                                  std::to_string(column) + ": error: ";
+        if (message.empty())   // the parser's own wording: only where it is and that it is ours
+            EXPECT_EQ(log.str().rfind(where, 0), 0u) << log.str();
+        else
+            EXPECT_EQ(log.str(), where + message + "\n");
+        EXPECT_EQ(log.str().find("json.exception"), std::string::npos) << log.str();
         EXPECT_FALSE(fs::exists(dir / "bad_out" / "quick" / "summary.md"));
     };
     // peer_timing_runs is how many Blender runs give each Cycles point its median time: zero
     // would leave a point with no time.
-    refused(R"("seeds": 1, "peer_max_spp": 1, "peer_timing_runs": 0)",
-            "modes.quick.peer_timing_runs must be at least 1");
+    refused(R"("seeds": 1, "peer_max_spp": 1, "peer_timing_runs": 0)", "0, \"reference_spp\"",
+            "modes.quick.peer_timing_runs: must be at least 1, got 0");
     // peer_extend_spp is where Cycles' curve may go on to: below peer_max_spp it is refused too.
-    refused(R"("seeds": 1, "peer_max_spp": 8, "peer_extend_spp": 4)",
-            "modes.quick.peer_extend_spp must be at least peer_max_spp");
+    refused(R"("seeds": 1, "peer_max_spp": 8, "peer_extend_spp": 4)", "4, \"reference_spp\"",
+            "modes.quick.peer_extend_spp: must be at least peer_max_spp (8), got 4");
     // extend_spp is where raylab's curves may go on to: below max_spp it is refused.
-    refused(R"("seeds": 1, "peer_max_spp": 1, "extend_spp": 2)", "modes.quick.extend_spp must be at least max_spp");
+    refused(R"("seeds": 1, "peer_max_spp": 1, "extend_spp": 2)", "2, \"reference_spp\"",
+            "modes.quick.extend_spp: must be at least max_spp (4), got 2");
     // seeds is how many raylab curves each row averages: zero would leave a row with no curve.
-    refused(R"("seeds": 0, "peer_max_spp": 1)", "modes.quick.seeds must be at least 1");
+    refused(R"("seeds": 0, "peer_max_spp": 1)", "0,", "modes.quick.seeds: must be at least 1, got 0");
+    // A value of the wrong type is named by its key path, not by the JSON library's exception.
+    refused(R"("seeds": 1, "peer_max_spp": 1, "peer_thresholds": "yes")", "\"yes\"",
+            "modes.quick.peer_thresholds: expected an array of noise thresholds, got string");
+    refused(R"("seeds": 1, "peer_max_spp": 1, "peer_thresholds": [0.1, 1.5])", "1.5",
+            "modes.quick.peer_thresholds[1]: expected a noise threshold in (0, 1), got 1.5");
+    // Decreasing, so that the runs stop at the first that reaches every level.
+    refused(R"("seeds": 1, "peer_max_spp": 1, "peer_thresholds": [0.01, 0.02])", "0.02",
+            "modes.quick.peer_thresholds[1]: the thresholds must decrease, and 0.02 follows 0.01");
+    refused(R"("seeds": 1.5, "peer_max_spp": 1)", "1.5", "modes.quick.seeds: expected an integer, got 1.5");
+    refused(R"("seeds": 1, "peer_max_spp": "8")", "\"8\"", "modes.quick.peer_max_spp: expected an integer, got string");
+    // A misspelt key is refused at the key, with the closest known one, as in a scene file.
+    refused(R"("seeds": 1, "peer_max_spp": 1, "peer_timing_run": 3)", "\"peer_timing_run\"",
+            "modes.quick.peer_timing_run: unknown key 'peer_timing_run' in modes.quick; did you mean 'peer_timing_runs'?");
+    // A missing key is reported at the object that lacks it.
+    refused(R"("seeds": 1)", "{\"width\"", "modes.quick: missing key 'peer_max_spp'");
+    // The scenes are checked the same way.
+    refused(R"("seeds": 1, "peer_max_spp": 1)", "true", "scenes[0].analytic: expected a number >= 0 (the image's exact value), got boolean",
+            R"({"name": "f", "scene": "scenes/furnace.json", "analytic": true})");
+    refused(R"("seeds": 1, "peer_max_spp": 1)", "\"render.nee\"", "scenes[0].variants[0].set[0]: expected a KEY=VALUE string, got \"render.nee\"",
+            R"({"name": "f", "scene": "scenes/furnace.json", "variants": [{"name": "v", "set": ["render.nee"]}]})");
+    // A syntax error is located too (here the missing value after "seeds":).
+    refused(R"("seeds": , "peer_max_spp": 1)", ", \"peer_max_spp\"", "");
+    // --only with a name the suite lacks lists the names it has.
+    std::ofstream(dir / "bad_suite.json") << R"({"modes": {"quick": {"width": 8, "height": 8, "max_spp": 4, "seeds": 1,
+        "peer_max_spp": 1, "reference_spp": 4, "reference_batches": 2}},
+        "scenes": [{"name": "f", "scene": "scenes/furnace.json", "analytic": 0.5}]})";
+    const std::string onlyCmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE +
+                                "' convergence --suite '" + (dir / "bad_suite.json").string() + "' --out '" +
+                                (dir / "bad_out").string() + "' --peer off --only g 2>&1";
+    std::string out;
+    {
+        std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(onlyCmd.c_str(), "r"), pclose);
+        ASSERT_TRUE(pipe);
+        char buf[512];
+        while (fgets(buf, sizeof buf, pipe.get())) out += buf;
+        const int raw = pclose(pipe.release());
+        ASSERT_TRUE(WIFEXITED(raw));
+        EXPECT_EQ(WEXITSTATUS(raw), 1) << out;
+    }
+    EXPECT_NE(out.find("--only: error: no scene named 'g' in " + (dir / "bad_suite.json").string() + " (scenes: f)"),
+              std::string::npos)
+        << out;
 }
 
 TEST(BenchConvergenceCli, APeerSceneThatMissesAGoalLevelGoesOnToExtendSpp) {
