@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
         "and, when blender is installed, runs Cycles on the exported scene for the same curves.\n"
         "Writes convergence.csv, summary.md and PNG plots (gnuplot) to OUT/MODE.");
     convergence->add_option("--suite", conv.suiteFile, "Suite file")->capture_default_str();
-    convergence->add_option("--mode", conv.mode, "quick (96x54, 4 seeds; with the references cached, on 2 cores: 11 minutes with --peer off, 86 with Cycles) or full (160x90, 3 seeds, 2x the samples: 33 minutes, 53 with references to build)")
+    convergence->add_option("--mode", conv.mode, "quick (96x54, 4 seeds; with the references cached, on 2 cores: about 44 minutes with Cycles) or full (160x90, 3 seeds, 2x the samples: 33 minutes, 53 with references to build)")
         ->check(CLI::IsMember({"quick", "full"}))->capture_default_str();
     convergence->add_option("--out", conv.outputDir, "Output directory (a folder per mode inside)")
         ->capture_default_str();
