@@ -80,6 +80,20 @@ std::vector<std::uint8_t> activeBlocks(std::span<const double> deviation, std::s
     return active;
 }
 
+double adaptiveGain(std::span<const double> deviation, std::span<const double> cost) {
+    if (deviation.size() != cost.size()) throw std::invalid_argument("adaptiveGain: one deviation and cost per block");
+    double s2 = 0.0, c = 0.0, sc = 0.0;
+    for (std::size_t b = 0; b < deviation.size(); ++b) {
+        const double cb = std::max(cost[b], 1.0);   // as activeBlocks: a sample traces at least its camera ray
+        s2 += deviation[b] * deviation[b];
+        c += cb;
+        sc += deviation[b] * std::sqrt(cb);
+    }
+    if (!(sc > 0.0)) return 1.0;   // no variance anywhere: nothing to gain
+    const double n = double(deviation.size());
+    return (s2 / n) * (c / n) / ((sc / n) * (sc / n));
+}
+
 std::uint64_t passScale(const AdaptiveBlocks& blocks, std::span<const std::uint8_t> active) {
     if (active.size() != std::size_t(blocks.count())) throw std::invalid_argument("passScale: one flag per block");
     std::uint64_t activePixels = 0;

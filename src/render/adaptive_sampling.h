@@ -52,6 +52,18 @@ BlockNoise blockNoise(const AdaptiveBlocks& blocks, std::span<const float> meanR
 std::vector<std::uint8_t> activeBlocks(std::span<const double> deviation, std::span<const double> cost,
                                        std::span<const std::uint64_t> samples);
 
+// What the best spreading would gain over even spreading, per unit of time: the image's MSE with
+// n ∝ s/√c over the MSE with every block taking every pass, mean(s²)·mean(c) / mean(s·√c)² (at
+// least 1, by Cauchy–Schwarz; minimise Σ s²/n with Σ n·c fixed). From blockNoise's deviations and costs.
+double adaptiveGain(std::span<const double> deviation, std::span<const double> cost);
+
+// Below this gain every block takes every pass, as without adaptive sampling: the estimated s are
+// noisy and a pass that only some blocks take costs more per sample, so a small gain on paper was
+// a loss in the benchmark. Measured at 96×54 (bench/adaptive_sampling.md): the default scene and
+// the large mesh, which lost 4–9 %, read 1.6–2.0 over their passes; the scenes that gained,
+// 3.7 and more.
+constexpr double kAdaptiveMinGain = 2.5;
+
 // A pass that only some blocks take would be a pass's fixed costs (its draws, the plan's read-back)
 // for less work: those blocks take the pass's samples this many times over, the image's pixels
 // over the active ones rounded down, at most kAdaptiveMaxPassScale, so that a pass traces nearly as

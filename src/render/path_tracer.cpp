@@ -355,7 +355,10 @@ void PathTracer::planPass() {
         passBlocks_.assign(blockSamples_.size(), 1);
     } else {
         const BlockNoise noise = adaptiveNoise();
-        passBlocks_ = activeBlocks(noise.deviation, noise.cost, blockSamples_);
+        if (adaptiveGain(noise.deviation, noise.cost) < kAdaptiveMinGain)
+            passBlocks_.assign(blockSamples_.size(), 1);
+        else
+            passBlocks_ = activeBlocks(noise.deviation, noise.cost, blockSamples_);
     }
     std::vector<GLuint> plan(pixels);
     for (int y = 0; y < height_; ++y)

@@ -85,6 +85,24 @@ TEST(AdaptiveSampling, BlocksEndWithSamplesInProportionToTheirNoiseAndTheLeastMs
     }
 }
 
+TEST(AdaptiveSampling, TheGainIsEvenSpreadingsMseOverTheBestSpreadings) {
+    // Equal cost: mean(s²) / mean(s)²; no spread or no variance: 1, nothing to gain.
+    EXPECT_DOUBLE_EQ(adaptiveGain(std::vector<double>{2.0, 2.0, 2.0}, std::vector<double>(3, 3.0)), 1.0);
+    EXPECT_DOUBLE_EQ(adaptiveGain(std::vector<double>(4, 0.0), std::vector<double>(4, 1.0)), 1.0);
+    EXPECT_NEAR(adaptiveGain(std::vector<double>{0.0, 5.0, 1.0}, std::vector<double>(3, 1.0)), (26.0 / 3.0) / 4.0, 1e-12);
+    // Equal noise, one block four times as dear: mean(c)·mean(s²) / mean(s·√c)² = 2.5 / 1.5².
+    EXPECT_NEAR(adaptiveGain(std::vector<double>{1.0, 1.0}, std::vector<double>{1.0, 4.0}), 2.5 / 2.25, 1e-12);
+    // It is what the planning reaches: with samples spread by activeBlocks, even spreading's MSE for
+    // the same total over the planned MSE comes to the gain (the floor aside, which no block here
+    // falls under).
+    const std::vector<double> s = {0.5, 1.0, 2.0, 4.0, 8.0};
+    const std::vector<std::uint64_t> n = simulate(s, 4000, 4);
+    const double perBlock = double(std::accumulate(n.begin(), n.end(), std::uint64_t(0))) / double(s.size());
+    double meanS2 = 0.0;
+    for (double v : s) meanS2 += v * v / double(s.size());
+    EXPECT_NEAR((meanS2 / perBlock) / imageMse(s, n), adaptiveGain(s, std::vector<double>(s.size(), 1.0)), 0.02);
+}
+
 TEST(AdaptiveSampling, ADearerBlockTakesFewerSamplesForTheSameNoise) {
     // Equal noise, one block four times as dear per sample (rays): for the least MSE in a given
     // time, n ∝ s/√c, so the cheap block ends with twice the samples; without the cost they would
