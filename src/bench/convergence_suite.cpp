@@ -131,6 +131,9 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
     } catch (const SuiteError& e) {
         std::cerr << e.what() << "\n";
         return 1;
+    } catch (const std::exception& e) {   // not a mistake in the file (out of memory, say): still named
+        std::cerr << o.suiteFile.string() << ": error: cannot read the suite file: " << e.what() << "\n";
+        return 1;
     }
     std::string peerWhy;
     const bool peerWanted = o.peer != "off";
