@@ -5,6 +5,7 @@
 #include "scene/scene_error.h"
 #include "scene/scene_overrides.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -26,11 +27,8 @@ constexpr std::string_view kVariantKeys[] = {"name", "set"};
 void requireObject(const Json& v, const JsonPath& p, std::span<const std::string_view> known) {
     if (!v.is_object()) fail(p, "expected an object { ... }, got " + typeOf(v));
     const std::vector<std::string_view> names(known.begin(), known.end());
-    for (const auto& [key, value] : v.items()) {
-        bool ok = false;
-        for (std::string_view k : known) ok = ok || k == key;
-        if (!ok) fail(p.key(key), "unknown key " + inQuotes(key) + " " + inWhere(p) + suggestion(key, names, "keys"), true);
-    }
+    for (const auto& [key, value] : v.items())
+        if (std::find(names.begin(), names.end(), key) == names.end()) failUnknownKey(p, key, names);
 }
 
 const Json& member(const Json& obj, const JsonPath& p, const char* key) {
@@ -171,16 +169,7 @@ Suite readSuite(const std::filesystem::path& file, const std::string& mode) {
     const std::string textOfFile = buffer.str();
     ParseResult parsed = parseJson(textOfFile);
     const JsonLocator locator(textOfFile);
-    if (!parsed.ok) {
-        const std::string where = fileLocation(name, locator.position(parsed.errorOffset));
-        throw SuiteError(where + (parsed.errorPath ? parsed.errorPath->display() + ": " : "") + parsed.reason);
-    }
-    if (!locator.duplicates().empty()) {
-        const JsonLocator::Duplicate& d = locator.duplicates().front();
-        const JsonPath p = pathFromPointer(parsed.doc, d.pointer);
-        throw SuiteError(fileLocation(name, d.second) + p.display() + ": duplicate key " +
-                         inQuotes(p.segments.back().token) + " (first given at line " + std::to_string(d.first.line) + ")");
-    }
+    if (std::string error = documentError(parsed, locator, name); !error.empty()) throw SuiteError(error);
     try {
         return build(parsed.doc, mode);
     } catch (const ValidationFailure& f) {

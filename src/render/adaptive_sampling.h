@@ -58,10 +58,8 @@ std::vector<std::uint8_t> activeBlocks(std::span<const double> deviation, std::s
 double adaptiveGain(std::span<const double> deviation, std::span<const double> cost);
 
 // Below this gain every block takes every pass, as without adaptive sampling: the estimated s are
-// noisy and a pass that only some blocks take costs more per sample, so a small gain on paper was
-// a loss in the benchmark. Measured at 96×54 (bench/adaptive_sampling.md): the default scene and
-// the large mesh, which lost 4–9 %, read 1.6–2.0 over their passes; the scenes that gained,
-// 3.7 and more.
+// noisy and an uneven pass costs more per sample, so a small gain on paper is a loss in time
+// (the threshold's measurement: bench/adaptive_sampling.md, "Third version").
 constexpr double kAdaptiveMinGain = 2.5;
 
 // A pass that only some blocks take would be a pass's fixed costs (its draws, the plan's read-back)

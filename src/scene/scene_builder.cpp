@@ -93,8 +93,7 @@ void readMembers(const Json& obj, const JsonPath& p, const std::vector<FieldSpec
         for (const auto& s : table)
             if (s.section() == section && s.name() == k) spec = &s;
         if (!spec) {
-            fail(p.key(k), "unknown key " + inQuotes(k) + " " + inWhere(p) + suggestion(k, known, "known keys"),
-                 true);
+            failUnknownKey(p, k, known);
         }
         spec->set(target, readValue(*spec, v, p.key(k)));
     }
@@ -293,7 +292,7 @@ Mesh readMesh(const Json& o, const JsonPath& p, const std::filesystem::path& sce
     for (const auto& [k, v] : o.items()) {
         (void)v;
         if (std::find(known.begin(), known.end(), k) == known.end())
-            fail(p.key(k), "unknown key " + inQuotes(k) + " " + inWhere(p) + suggestion(k, known, "known keys"), true);
+            failUnknownKey(p, k, known);
     }
     Mesh mesh;
     if (o.contains("file")) {
@@ -380,7 +379,7 @@ Light readLight(const Json& o, const JsonPath& p) {
                                " light (its keys: " + joinNames(own) + ")", true);
         std::vector<std::string_view> known = own;
         known.insert(known.begin(), "type");
-        fail(p.key(k), "unknown key " + inQuotes(k) + " " + inWhere(p) + suggestion(k, known, "known keys"), true);
+        failUnknownKey(p, k, known);
     }
     readMembers(o, p, lightParameters(), "lights[]", light, {"type"});
     if (o.contains("intensity") && o.contains("power"))
@@ -443,8 +442,7 @@ void buildScene(const Json& root, Scene& scene) {
     for (const auto& [k, v] : root.items()) {
         (void)v;
         if (std::find(sections.begin(), sections.end(), k) == sections.end())
-            fail(top.key(k), "unknown key " + inQuotes(k) + " " + inWhere(top) + suggestion(k, sections, "known keys"),
-                 true);
+            failUnknownKey(top, k, sections);
     }
 
     for (std::string_view section : {"camera", "render", "sky", "ao"}) {

@@ -36,6 +36,22 @@ std::string fileLocation(const std::string& fileName, SourcePos pos) {
     return fileName + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) + ": error: ";
 }
 
+void failUnknownKey(const JsonPath& path, std::string_view key, const std::vector<std::string_view>& known) {
+    fail(path.key(key), "unknown key " + inQuotes(key) + " " + inWhere(path) + suggestion(key, known, "known keys"), true);
+}
+
+std::string documentError(const ParseResult& parsed, const JsonLocator& locator, const std::string& fileName) {
+    if (!parsed.ok) {
+        const std::string where = fileLocation(fileName, locator.position(parsed.errorOffset));
+        return where + (parsed.errorPath ? parsed.errorPath->display() + ": " : std::string()) + parsed.reason;
+    }
+    if (locator.duplicates().empty()) return {};
+    const JsonLocator::Duplicate& d = locator.duplicates().front();
+    const JsonPath p = pathFromPointer(parsed.doc, d.pointer);
+    return fileLocation(fileName, d.second) + p.display() + ": duplicate key " + inQuotes(p.segments.back().token) +
+           " (first given at line " + std::to_string(d.first.line) + ", column " + std::to_string(d.first.column) + ")";
+}
+
 std::string overridePrefix(const std::string& text) { return "--set " + text + ": error: "; }
 
 std::string placeFailure(const ValidationFailure& f, const std::string& fileName, const JsonLocator& locator,

@@ -3,6 +3,7 @@
 // ValidationFailure at a document path, and placeFailure turns it into "FILE:LINE:COL: error: PATH:
 // what" or, when a --set override wrote the value, "--set KEY=VALUE: error: PATH: what".
 #include "scene/json_locator.h"
+#include "scene/json_parse.h"
 #include "scene/json_path.h"
 
 #include <stdexcept>
@@ -32,6 +33,9 @@ struct ValidationFailure {
 
 [[noreturn]] void fail(const JsonPath& path, std::string message, bool atKey = false);
 
+// Fails at key `key` of the object at `path`: unknown there, with the closest of `known` suggested.
+[[noreturn]] void failUnknownKey(const JsonPath& path, std::string_view key, const std::vector<std::string_view>& known);
+
 // Pieces of messages.
 std::string inQuotes(std::string_view s);                      // 'radius', long names cut short
 std::string joinNames(const std::vector<std::string_view>& names);   // a, b, c
@@ -41,6 +45,10 @@ std::string suggestion(std::string_view word, const std::vector<std::string_view
                        std::string_view listName);
 
 std::string fileLocation(const std::string& fileName, SourcePos pos);   // "FILE:LINE:COL: error: "
+
+// What is wrong with a parsed document before any key is read, located in `fileName`: its syntax
+// error, or its first repeated key; empty when neither.
+std::string documentError(const ParseResult& parsed, const JsonLocator& locator, const std::string& fileName);
 std::string overridePrefix(const std::string& text);                    // "--set KEY=VALUE: error: "
 
 // Formats a validation failure: at the override that wrote (or created) the value, else at the

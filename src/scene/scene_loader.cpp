@@ -17,19 +17,8 @@ using namespace scenefmt;
 Scene parseScene(std::string_view text, const std::string& fileName, const std::vector<std::string>& overrides) {
     ParseResult parsed = parseJson(text);
     const JsonLocator locator(text);
-    if (!parsed.ok) {
-        const std::string where = fileLocation(fileName, locator.position(parsed.errorOffset));
-        if (parsed.errorPath) throw SceneError(where + parsed.errorPath->display() + ": " + parsed.reason);
-        throw SceneError(where + parsed.reason);
-    }
+    if (std::string error = documentError(parsed, locator, fileName); !error.empty()) throw SceneError(error);
     Json& doc = parsed.doc;
-    if (!locator.duplicates().empty()) {
-        const JsonLocator::Duplicate& d = locator.duplicates().front();
-        const JsonPath p = pathFromPointer(doc, d.pointer);
-        throw SceneError(fileLocation(fileName, d.second) + p.display() + ": duplicate key " +
-                         inQuotes(p.segments.back().token) + " (first given at line " + std::to_string(d.first.line) +
-                         ", column " + std::to_string(d.first.column) + ")");
-    }
 
     std::vector<AppliedOverride> applied;
     for (const std::string& o : overrides) applied.push_back(applyOverride(doc, o));
