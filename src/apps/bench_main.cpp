@@ -165,7 +165,8 @@ int main(int argc, char** argv) {
     try {
         scene = loadScene(scenePath, {"render.width=" + std::to_string(width),
                                       "render.height=" + std::to_string(height),
-                                      "render.spp=" + std::to_string(spp), "render.time=0"});
+                                      "render.spp=" + std::to_string(spp), "render.time=0",
+                                      "render.adaptive=false"});   // paths per pass: every pixel takes it
     } catch (const std::exception& e) {
         std::cerr << e.what() << "\n";
         return 1;

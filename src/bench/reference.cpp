@@ -52,6 +52,7 @@ Image renderReferenceBatch(PathTracer& tracer, const Scene& scene, int k, int sp
     batch.render.seed = 1000u + unsigned(k);
     batch.render.spp = spp;
     batch.render.rpp = std::max(batch.render.rpp, 16);
+    batch.render.adaptive = false;   // even samples: every pixel of the reference equally converged
     tracer.setScene(batch);
     while (tracer.samplesPerPixel() < std::uint64_t(spp) && !(stop && stop->load())) tracer.renderPass();
     return tracer.readImage();

@@ -49,7 +49,8 @@ struct Measurement {
     double mpaths = 0.0;
 };
 
-Measurement measure(const Scene& scene, int spp, int repeat) {
+Measurement measure(Scene scene, int spp, int repeat) {
+    scene.render.adaptive = false;   // one sample per pixel per pass, every pixel: the cost of a sample
     Measurement m;
     const auto t0 = Clock::now();
     PathTracer tracer;

@@ -222,6 +222,8 @@ void PathTracer::reset() {
     blockSamples_.assign(std::size_t(blocks_.count()), 0);
     passBlocks_.clear();
     planned_ = false;
+    gateClosedAt_ = 0;
+    gainReads_ = 0;
     samplesPerPixel_ = 0;
     passes_ = 0;
     nonFinite_ = 0;
@@ -351,14 +353,19 @@ void PathTracer::finishPass(int rpp) {
 
 void PathTracer::planPass() {
     const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
-    if (*std::min_element(blockSamples_.begin(), blockSamples_.end()) < kAdaptiveWarmupSamples) {
+    if (*std::min_element(blockSamples_.begin(), blockSamples_.end()) < kAdaptiveWarmupSamples ||
+        (gateClosedAt_ > 0 && double(samplesPerPixel_) < kAdaptiveGateRecheckGrowth * double(gateClosedAt_))) {
         passBlocks_.assign(blockSamples_.size(), 1);
     } else {
         const BlockNoise noise = adaptiveNoise();
-        if (adaptiveGain(noise.deviation, noise.cost) < kAdaptiveMinGain)
+        ++gainReads_;
+        if (adaptiveGain(noise.deviation, noise.cost) < kAdaptiveMinGain) {
             passBlocks_.assign(blockSamples_.size(), 1);
-        else
+            gateClosedAt_ = std::max<std::uint64_t>(samplesPerPixel_, 1);
+        } else {
             passBlocks_ = activeBlocks(noise.deviation, noise.cost, blockSamples_);
+            gateClosedAt_ = 0;
+        }
     }
     std::vector<GLuint> plan(pixels);
     for (int y = 0; y < height_; ++y)

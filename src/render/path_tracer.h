@@ -93,6 +93,9 @@ public:
     // render.adaptive: each block's noise and cost as the next plan reads them (blockNoise), its
     // blocks in GL's rows (bottom first); blockSamples() the samples each holds.
     BlockNoise adaptiveNoise() const;
+    // render.adaptive: the plans since the last reset that read the noise back to decide
+    // (kAdaptiveGateRecheckGrowth spaces them while the gain is below kAdaptiveMinGain).
+    std::uint64_t gainReads() const { return gainReads_; }
     const std::vector<std::uint64_t>& blockSamples() const { return blockSamples_; }
     const AdaptiveBlocks& adaptiveBlocks() const { return blocks_; }
     std::uint64_t passes() const { return passes_; }
@@ -151,6 +154,8 @@ private:
     std::vector<std::uint64_t> blockSamples_;   // render.adaptive: samples each block holds
     std::vector<std::uint8_t> passBlocks_;      // the planned pass's blocks (1: takes it)
     bool planned_ = false;                      // passBlocks_ is the current pass's plan
+    std::uint64_t gateClosedAt_ = 0;            // spp when the gain was last below kAdaptiveMinGain, else 0
+    std::uint64_t gainReads_ = 0;               // plans that read the blocks' noise back
     unsigned framebuffer_ = 0;
     unsigned vertexArray_ = 0;
     unsigned counterBuffer_ = 0;

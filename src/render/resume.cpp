@@ -69,9 +69,10 @@ ResumePoint readResumePoint(const std::filesystem::path& exr, const Scene& scene
         return ImageIoError(file + ": error: cannot resume: " + what + " is " + recorded + " in the EXR but " + given +
                             " for " + scene.sourcePath.string() + " (resume with the scene and settings it was made with)");
     };
-    if (r.adaptive)
+    if (adaptiveInEffect(r))
         throw ImageIoError(file + ": error: cannot resume: render.adaptive is true for " + scene.sourcePath.string() +
-                           ", and an adaptive render's per-block sample counts and second moments are not in its image");
+                           ", and an adaptive render's per-block sample counts and second moments are not in its image "
+                           "(render with --set render.adaptive=false to make an image that can be resumed)");
     if (m.version != RAYLAB_VERSION) throw differs("raylab:version", m.version, RAYLAB_VERSION);
     if (m.tracer != tracer) throw differs("raylab:tracer", m.tracer, "--tracer " + tracer);
     if (m.seed != r.seed) throw differs("raylab:seed", std::to_string(m.seed), "render.seed " + std::to_string(r.seed));

@@ -52,9 +52,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.emissiveTriangles = false;
     for (const Mesh& m : scene.meshes) f.emissiveTriangles |= f.nee && meshHasEmissiveTriangle(scene, m);
     f.analyticLights = !scene.lights.empty();
-    // Adaptive pixels take more samples than render.spp, past the sequence stratified and zsobol lay out.
-    f.adaptive = scene.render.adaptive &&
-                 (scene.render.sampler == SamplerKind::Sobol || scene.render.sampler == SamplerKind::Independent);
+    f.adaptive = adaptiveInEffect(scene.render);
     f.oneSidedEmitters = false;
     for (const Mesh& m : scene.meshes) f.oneSidedEmitters |= meshHasFrontOnlyTriangle(scene, m);
     return f;

@@ -145,7 +145,9 @@ std::vector<ParamSpec> buildSceneTable() {
              "whose estimated error (all samples' mean against half of them), over the root of their samples and "
              "rays per sample, is at least the image's mean, and they take its samples several times over, so that "
              "each sample goes where it lowers the image's MSE most for its time; render.spp is then the mean over "
-             "the pixels. Needs render.sampler sobol or independent (bench/adaptive_sampling.md).",
+             "the pixels. On by default with render.sampler sobol and independent; stratified and zsobol lay out "
+             "render.spp samples per pixel, so with them it stays off, and asking for it is an error "
+             "(bench/adaptive_sampling.md).",
              G::RecompileShader),
         [](auto& s) -> auto& { return s.render.adaptive; });
     add(spec("render.exposure", T::Float, atLeast(-20), atMost(20), "EV stops",

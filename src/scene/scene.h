@@ -64,7 +64,7 @@ struct RenderSettings {
     std::uint32_t seed = 1;      // sampler seed: same seed, same image bit for bit
     bool nee = true;             // next-event estimation: sample emissive spheres and the sky
     bool mis = true;             // with nee: weight light and BSDF samples by the power heuristic
-    bool adaptive = false;       // samples per pixel block by its noise (render/adaptive_sampling.h)
+    bool adaptive = true;        // samples per pixel block by its noise (render/adaptive_sampling.h)
     float exposure = 0.0f;       // EV stops: display value = linear × 2^exposure
     ToneMap toneMap = ToneMap::AcesFit;
     int showMipLevel = 0;        // 1: textured surfaces show their mip level as colours (debug)
@@ -75,6 +75,12 @@ struct RenderSettings {
     LightSelection lightSelection = LightSelection::Power;
     Accel accel = Accel::Bvh;
 };
+
+// render.adaptive takes effect with the samplers whose sequence runs past render.spp: stratified and
+// zsobol lay out exactly render.spp samples per pixel, and an adaptive pixel takes more.
+inline bool adaptiveInEffect(const RenderSettings& r) {
+    return r.adaptive && (r.sampler == SamplerKind::Sobol || r.sampler == SamplerKind::Independent);
+}
 
 struct Material {
     std::string name;

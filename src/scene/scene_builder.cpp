@@ -452,10 +452,11 @@ void buildScene(const Json& root, Scene& scene) {
         else readMembers(root[name], top.key(name), sceneParameters(), section, scene);
     }
     readSkyMap(root, scene);
-    // An adaptive pixel takes more samples than render.spp, past the sequence stratified and zsobol
-    // lay out for each pixel.
-    if (scene.render.adaptive && scene.render.sampler != SamplerKind::Sobol &&
-        scene.render.sampler != SamplerKind::Independent)
+    // Asked for in so many words, adaptive sampling with stratified or zsobol is an error; by default
+    // it simply stays off with them (adaptiveInEffect).
+    const bool adaptiveAsked = root.contains("render") && root["render"].is_object() &&
+                               root["render"].contains("adaptive") && scene.render.adaptive;
+    if (adaptiveAsked && !adaptiveInEffect(scene.render))
         fail(top.key("render").key("adaptive"),
              "adaptive sampling needs render.sampler sobol or independent: stratified and zsobol lay out render.spp "
              "samples per pixel, and an adaptive pixel takes more");

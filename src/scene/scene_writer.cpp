@@ -159,6 +159,9 @@ nlohmann::json sceneToJson(const Scene& scene, const fs::path& savedFile) {
     nlohmann::json j = nlohmann::json::object();
     for (const ParamSpec& spec : sceneParameters())
         j[std::string(spec.section())][std::string(spec.name())] = valueJson(spec, scene);
+    // render.adaptive at its default beside stratified or zsobol is off without being asked for;
+    // written out it would be asked for, which the loader refuses.
+    if (scene.render.adaptive && !adaptiveInEffect(scene.render)) j["render"].erase("adaptive");
 
     nlohmann::json materials = nlohmann::json::object();
     for (const Material& m : scene.materials) {

@@ -3,8 +3,10 @@
 // the blocks that take it their pass scale of samples; the Cornell
 // box at equal samples has a lower error against a long reference, with its
 // samples in the box rather than the black background; a seed gives one image; a resumed render
-// and a sampler without an open-ended sequence are refused.
+// and a sampler without an open-ended sequence are refused when asked, and it is on by default
+// where the sampler allows it.
 #include "render/path_tracer.h"
+#include "render/shader_variant.h"
 #include "render_helpers.h"
 #include "support/gl_test.h"
 #include "support/scene_errors.h"
@@ -50,9 +52,10 @@ TEST_F(AdaptiveRenderTest, AFurnaceRendersAsWithoutIt) {
     // Every pixel is exactly 0.5 whatever the samples: no block is noisier than another, so every
     // block takes every pass and the samples are the same ones.
     const std::vector<std::string> size = {"render.width=20", "render.height=12", "render.spp=64", "render.rpp=8"};
-    std::vector<std::string> on = size;
+    std::vector<std::string> on = size, off = size;
     on.push_back("render.adaptive=true");
-    const Rendered plain = renderWith(loadScene(test::scenePath("furnace.json"), size));
+    off.push_back("render.adaptive=false");
+    const Rendered plain = renderWith(loadScene(test::scenePath("furnace.json"), off));
     const Rendered adaptive = renderWith(loadScene(test::scenePath("furnace.json"), on));
     ASSERT_TRUE(adaptive.adaptive);
     ASSERT_FALSE(plain.adaptive);
@@ -67,13 +70,33 @@ TEST_F(AdaptiveRenderTest, ASceneWithLittleToGainRendersAsWithoutIt) {
     // is the even render's bit for bit. Without the gate its blocks would take passes unevenly.
     const std::vector<std::string> size = {"render.width=96", "render.height=54", "render.spp=128", "render.rpp=8",
                                            "render.seed=3"};
-    std::vector<std::string> on = size;
+    std::vector<std::string> on = size, off = size;
     on.push_back("render.adaptive=true");
-    const Rendered plain = renderWith(loadScene(test::scenePath("default.json"), size));
+    off.push_back("render.adaptive=false");
+    const Rendered plain = renderWith(loadScene(test::scenePath("default.json"), off));
     const Rendered adaptive = renderWith(loadScene(test::scenePath("default.json"), on));
     ASSERT_TRUE(adaptive.adaptive);
     EXPECT_EQ(adaptive.samples, std::vector<std::uint64_t>(96 * 54, 128));
     EXPECT_EQ(adaptive.image.rgba, plain.image.rgba);
+}
+
+TEST_F(AdaptiveRenderTest, AClosedGateIsReadAgainOnlyAfterTheSamplesGrowByAQuarter) {
+    // The default scene keeps the gain below kAdaptiveMinGain: after the warm-up (16 samples) the
+    // noise is read back at 16, then at the first pass from 1.25× those samples on: 24, 32, 40, 56,
+    // 72, 96 and 120 of the passes of 8 up to 128, not at all 14.
+    PathTracer tracer;
+    tracer.setScene(loadScene(test::scenePath("default.json"),
+                              {"render.width=96", "render.height=54", "render.spp=128", "render.rpp=8", "render.seed=3"}));
+    ASSERT_TRUE(tracer.adaptive());
+    std::vector<std::uint64_t> reads;
+    while (tracer.samplesPerPixel() < 128) {
+        const std::uint64_t before = tracer.gainReads();
+        const std::uint64_t spp = tracer.samplesPerPixel();
+        tracer.renderPass();
+        if (tracer.gainReads() > before) reads.push_back(spp);
+    }
+    EXPECT_EQ(reads, (std::vector<std::uint64_t>{16, 24, 32, 40, 56, 72, 96, 120}));
+    EXPECT_EQ(tracer.samplesPerPixel(), 128u);
 }
 
 TEST_F(AdaptiveRenderTest, TheCornellBoxHasLessErrorAtEqualSamplesWithThemWhereItsNoiseIs) {
@@ -90,11 +113,11 @@ TEST_F(AdaptiveRenderTest, TheCornellBoxHasLessErrorAtEqualSamplesWithThemWhereI
         o.insert(o.begin(), size.begin(), size.end());
         return cornell(o);
     };
-    const Image reference = test::render(box({"render.spp=2048", "render.seed=99"}));
+    const Image reference = test::render(box({"render.spp=2048", "render.seed=99", "render.adaptive=false"}));
     double plainMse = 0.0, adaptiveMse = 0.0;
     for (int seed = 1; seed <= 4; ++seed) {
         const std::string s = "render.seed=" + std::to_string(seed);
-        const Rendered plain = renderWith(box({"render.spp=128", s}));
+        const Rendered plain = renderWith(box({"render.spp=128", s, "render.adaptive=false"}));
         const Rendered adaptive = renderWith(box({"render.spp=128", s, "render.adaptive=true"}));
         plainMse += mse(plain.image, reference) / 4.0;
         adaptiveMse += mse(adaptive.image, reference) / 4.0;
@@ -216,4 +239,19 @@ TEST(AdaptiveSceneTest, NeedsASamplerWhoseSequenceGoesOn) {
     EXPECT_NE(message.find("sobol or independent"), std::string::npos) << message;
     EXPECT_EQ(test::sceneErrorOf(text, {"render.sampler=sobol"}), "<no error>");
     EXPECT_NE(test::sceneErrorOf(text, {"render.sampler=zsobol"}).find("sobol or independent"), std::string::npos);
+}
+
+TEST(AdaptiveSceneTest, IsOnByDefaultWhereTheSamplerAllowsIt) {
+    // The best estimator by default (bench/adaptive_sampling.md): adaptive with sobol and
+    // independent; with stratified and zsobol, not asked for, it stays off without an error.
+    const std::string text = R"({ "objects": [ { "type": "sphere" } ] })";
+    for (const auto& [sampler, on] : std::vector<std::pair<std::string, bool>>{
+             {"sobol", true}, {"independent", true}, {"stratified", false}, {"zsobol", false}}) {
+        const std::vector<std::string> set = {"render.sampler=" + sampler};
+        EXPECT_EQ(test::sceneErrorOf(text, set), "<no error>") << sampler;
+        const Scene scene = parseScene(text, "test.json", set);
+        EXPECT_EQ(adaptiveInEffect(scene.render), on) << sampler;
+        EXPECT_EQ(sceneFeatures(scene).adaptive, on) << sampler;
+    }
+    EXPECT_TRUE(adaptiveInEffect(Scene{}.render));
 }

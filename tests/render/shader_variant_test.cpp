@@ -24,8 +24,10 @@ ShaderDefines on(const ShaderDefines& defines) {
 } // namespace
 
 TEST(ShaderVariant, FeaturesComeFromTheScene) {
-    // The estimator of the old defaults, whose variant has no NEE and no sampler in its name.
-    const Scene spheres = loadScene(test::scenePath("default.json"), {"render.nee=false", "render.sampler=independent"});
+    // The estimator of the old defaults, whose variant has no NEE, no adaptive sampling and no
+    // sampler in its name.
+    const Scene spheres = loadScene(test::scenePath("default.json"),
+                                    {"render.nee=false", "render.sampler=independent", "render.adaptive=false"});
     EXPECT_EQ(featureName(sceneFeatures(spheres)), "spheres+few-objects");
     Scene s = spheres;
     s.meshes.push_back(Mesh{});
@@ -86,26 +88,29 @@ TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore
     if (f.sharedMeshTransform) expected.emplace_back("RAYLAB_SHARED_MESH_TRANSFORM", "1");
     if (f.nee) expected.emplace_back("RAYLAB_NEE", "1");
     if (f.generalBsdf) expected.emplace_back("RAYLAB_GENERAL_BSDF", "1");
+    if (f.adaptive) expected.emplace_back("RAYLAB_ADAPTIVE", "1");
     EXPECT_EQ(on(featureDefines(f)), expected);
     // Each new kind adds its own define and nothing else.
+    // The defines the edits add come before RAYLAB_ADAPTIVE, the last one (features.glsl).
     const auto withOne = [&](auto edit, const char* define) {
         Scene s = bricks;
-        edit(s.materials[0]);
+        edit(s);
         ShaderDefines d = on(featureDefines(sceneFeatures(s)));
         ShaderDefines more = expected;
+        const auto adaptive = [&] {
+            return std::find(more.begin(), more.end(), std::pair<std::string, std::string>{"RAYLAB_ADAPTIVE", "1"});
+        };
         if (std::find(more.begin(), more.end(), std::pair<std::string, std::string>{"RAYLAB_GENERAL_BSDF", "1"}) ==
                 more.end() && sceneFeatures(s).generalBsdf)
-            more.emplace_back("RAYLAB_GENERAL_BSDF", "1");
-        more.emplace_back(define, "1");
+            more.emplace(adaptive(), "RAYLAB_GENERAL_BSDF", "1");
+        more.emplace(adaptive(), define, "1");
         EXPECT_EQ(d, more) << define;
     };
-    withOne([](Material& m) { m.roughnessTextureIndex = 0; }, "RAYLAB_TEXTURE_ROUGHNESS");
-    withOne([](Material& m) { m.emissionTextureIndex = 0; }, "RAYLAB_TEXTURE_EMISSION");
-    withOne([](Material& m) { m.metallicTextureIndex = 0; }, "RAYLAB_TEXTURE_METALLIC");
-    withOne([](Material& m) { m.specularTextureIndex = 0; }, "RAYLAB_TEXTURE_SPECULAR");
-    Scene wrapped = bricks;
-    wrapped.textures[0].wrapU = TextureWrap::ClampToEdge;
-    EXPECT_EQ(on(featureDefines(sceneFeatures(wrapped))).back().first, "RAYLAB_TEXTURE_WRAP_MODES");
+    withOne([](Scene& s) { s.materials[0].roughnessTextureIndex = 0; }, "RAYLAB_TEXTURE_ROUGHNESS");
+    withOne([](Scene& s) { s.materials[0].emissionTextureIndex = 0; }, "RAYLAB_TEXTURE_EMISSION");
+    withOne([](Scene& s) { s.materials[0].metallicTextureIndex = 0; }, "RAYLAB_TEXTURE_METALLIC");
+    withOne([](Scene& s) { s.materials[0].specularTextureIndex = 0; }, "RAYLAB_TEXTURE_SPECULAR");
+    withOne([](Scene& s) { s.textures[0].wrapU = TextureWrap::ClampToEdge; }, "RAYLAB_TEXTURE_WRAP_MODES");
     // Metallic without any texture of its own on an untextured material is baked: no new define.
     Scene metal = loadScene(test::scenePath("default.json"));
     metal.materials[0].metallic = 0.5f;
@@ -122,11 +127,11 @@ TEST_F(ShaderVariantTest, VariantsAreNamedCompiledOnceAndReused) {
     PathTracer tracer;
     EXPECT_EQ(tracer.compileSeconds(), 0.0);
     tracer.setScene(spheres);
-    EXPECT_EQ(tracer.variantName(), "fragment [spheres+few-objects]");
+    EXPECT_EQ(tracer.variantName(), "fragment [spheres+few-objects+adaptive]");
     const double first = tracer.compileSeconds();
     EXPECT_GT(first, 0.0);
     tracer.setScene(lens);
-    EXPECT_EQ(tracer.variantName(), "fragment [spheres+dof+few-objects]");
+    EXPECT_EQ(tracer.variantName(), "fragment [spheres+dof+few-objects+adaptive]");
     tracer.setScene(spheres);
     EXPECT_EQ(tracer.compileSeconds(), first) << "the cached program, not a new compile";
     TracerOptions all;

@@ -286,6 +286,25 @@ TEST(SceneSave, EveryKeyOfTheFormatSurvivesASaveAtANonDefaultValue) {
     }
 }
 
+TEST(SceneSave, AdaptiveAtItsDefaultBesideStratifiedOrZsobolIsNotWrittenAsAsked) {
+    // render.adaptive true beside stratified or zsobol in a file is refused; at its default it is
+    // simply not in effect, and a save must not turn it into a refused file.
+    const fs::path dir = scratch("adaptive");
+    fs::create_directories(dir);
+    for (const std::string sampler : {"stratified", "zsobol"}) {
+        SCOPED_TRACE(sampler);
+        const Scene s = loadScene(kScenes / "default.json", {"render.sampler=" + sampler});
+        EXPECT_FALSE(sceneToJson(s)["render"].contains("adaptive"));
+        Scene again;
+        ASSERT_NO_THROW(again = saveAndReload(s, dir / "scene.json", dir));
+        expectSameScene(s, again);
+    }
+    const Scene sobol = loadScene(kScenes / "default.json");
+    EXPECT_EQ(sceneToJson(sobol)["render"]["adaptive"], true);
+    EXPECT_EQ(sceneToJson(loadScene(kScenes / "default.json", {"render.adaptive=false", "render.sampler=zsobol"}))["render"]["adaptive"],
+              false);
+}
+
 TEST(SceneSave, SavingOverAFileReplacesItWholeAndLeavesNoBackupOrTemporary) {
     const fs::path dir = scratch("atomic");
     const fs::path file = dir / "scene.json";

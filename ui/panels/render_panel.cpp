@@ -32,7 +32,7 @@ std::string estimatorLabel(const Scene& scene) {
             for (const EnumName& n : p.enumNames)
                 if (n.value == int(r.sampler) && !n.alias) sampler = std::string(n.name);
     std::string label = sampler + " sampler, " + (!r.nee ? "BSDF sampling only" : r.mis ? "NEE + MIS" : "NEE without MIS");
-    if (r.adaptive) label += ", adaptive";
+    if (adaptiveInEffect(r)) label += ", adaptive";
     const auto defaults = estimatorStages(Scene{});
     const auto stages = estimatorStages(scene);
     for (std::size_t i = 0; i < stages.size(); ++i)
