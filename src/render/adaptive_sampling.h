@@ -62,9 +62,9 @@ double adaptiveGain(std::span<const double> deviation, std::span<const double> c
 // (the threshold's measurement: bench/adaptive_sampling.md, "Third version").
 constexpr double kAdaptiveMinGain = 2.5;
 
-// The gain changes slowly with the samples, and reading it costs two image read-backs per pass
-// (7 ms a pass at 640×360 on llvmpipe, bench/adaptive_sampling.md): once it is found below
-// kAdaptiveMinGain, it is read again only when the samples per pixel have grown by this factor.
+// The gain changes slowly with the samples, and reading it costs two image read-backs
+// (bench/adaptive_sampling.md, "On by default"): once it is found below kAdaptiveMinGain, it is
+// read again only when the samples per pixel have grown by this factor.
 constexpr double kAdaptiveGateRecheckGrowth = 1.25;
 
 // A pass that only some blocks take would be a pass's fixed costs (its draws, the plan's read-back)

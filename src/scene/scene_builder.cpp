@@ -454,8 +454,7 @@ void buildScene(const Json& root, Scene& scene) {
     readSkyMap(root, scene);
     // Asked for in so many words, adaptive sampling with stratified or zsobol is an error; by default
     // it simply stays off with them (adaptiveInEffect).
-    const bool adaptiveAsked = root.contains("render") && root["render"].is_object() &&
-                               root["render"].contains("adaptive") && scene.render.adaptive;
+    const bool adaptiveAsked = root.contains("render") && root["render"].contains("adaptive") && scene.render.adaptive;
     if (adaptiveAsked && !adaptiveInEffect(scene.render))
         fail(top.key("render").key("adaptive"),
              "adaptive sampling needs render.sampler sobol or independent: stratified and zsobol lay out render.spp "
