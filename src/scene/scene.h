@@ -78,9 +78,8 @@ struct RenderSettings {
 
 // render.adaptive takes effect with the samplers whose sequence runs past render.spp: stratified and
 // zsobol lay out exactly render.spp samples per pixel, and an adaptive pixel takes more.
-inline bool adaptiveInEffect(const RenderSettings& r) {
-    return r.adaptive && (r.sampler == SamplerKind::Sobol || r.sampler == SamplerKind::Independent);
-}
+inline bool samplerTakesAdaptive(SamplerKind s) { return s == SamplerKind::Sobol || s == SamplerKind::Independent; }
+inline bool adaptiveInEffect(const RenderSettings& r) { return r.adaptive && samplerTakesAdaptive(r.sampler); }
 
 struct Material {
     std::string name;

@@ -74,7 +74,8 @@ TEST_F(PanelsTest, TheRenderPanelShowsTheEstimatorAndTheSamplePointsOfAPixel) {
     // The defaults' estimator, in the progress line and the Estimator header; an edit shows at once.
     frame();
     std::string text = windowText([&] { drawRenderPanel(*viewer, ui); });
-    EXPECT_NE(text.find("spp, sobol sampler, NEE + MIS"), std::string::npos) << text;
+    EXPECT_NE(text.find("spp, sobol sampler, NEE + MIS, adaptive"), std::string::npos) << text;
+    EXPECT_EQ(text.find("adaptive: off"), std::string::npos) << text;
     EXPECT_NE(text.find("estimator: sobol sampler, NEE + MIS"), std::string::npos) << text;
     EXPECT_NE(text.find("pixel (16, 9) (centre): samples 0-63, dimensions 0-1"), std::string::npos) << text;
     ASSERT_TRUE(viewer->document().set("render.sampler", "\"zsobol\""));
@@ -86,6 +87,9 @@ TEST_F(PanelsTest, TheRenderPanelShowsTheEstimatorAndTheSamplePointsOfAPixel) {
     EXPECT_NE(text.find("estimator: zsobol sampler, BSDF sampling only"), std::string::npos) << text;
     EXPECT_NE(text.find("samples 0-15, dimensions 16-17"), std::string::npos) << text;
     EXPECT_EQ(ui.samplePoints.sampler, SamplerKind::ZSobol);
+    // zsobol lays out exactly spp samples per pixel: the adaptive switch is greyed and says why.
+    EXPECT_NE(text.find("adaptive: off, the sobol or independent sampler takes it"), std::string::npos) << text;
+    EXPECT_EQ(text.find(", adaptive"), std::string::npos) << text;
     // The estimator's stages: a widget each, and those not at their default in the label.
     for (const char* key : {"diffuse_sampling", "ggx_sampling", "light_selection", "accel"})
         EXPECT_NE(text.find(key), std::string::npos) << key << " has no widget: " << text;

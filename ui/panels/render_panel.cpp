@@ -101,8 +101,15 @@ void drawRenderPanel(Viewer& viewer, UiState& ui) {
     }
     if (ImGui::CollapsingHeader("Estimator", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Text("estimator: %s", estimatorLabel(viewer.scene()).c_str());
-        for (const ParamSpec& p : sceneParameters())
-            if (isEstimatorKey(p)) paramWidget(viewer, resolveParam(viewer.scene(), p.key));
+        for (const ParamSpec& p : sceneParameters()) {
+            if (!isEstimatorKey(p)) continue;
+            // The switch would do nothing with a sampler that lays out exactly spp samples per pixel.
+            const bool inert = p.key == "render.adaptive" && !samplerTakesAdaptive(viewer.scene().render.sampler);
+            ImGui::BeginDisabled(inert);
+            paramWidget(viewer, resolveParam(viewer.scene(), p.key));
+            ImGui::EndDisabled();
+            if (inert) ImGui::TextDisabled("adaptive: off, the sobol or independent sampler takes it");
+        }
         drawSamplePointsPlot(viewer, ui);
     }
     if (ImGui::CollapsingHeader("Sky")) {
