@@ -192,4 +192,9 @@ std::string peerMismatchTable(const std::vector<std::pair<std::string, PeerMisma
     return out.str();
 }
 
+size_t tracerCostCurve(std::span<const std::string> renderers) {
+    const auto even = std::find(renderers.begin(), renderers.end(), kEvenVariant);
+    return even == renderers.end() ? 0 : size_t(even - renderers.begin());
+}
+
 } // namespace raylab

@@ -72,6 +72,13 @@ bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector
 // gets a ratio, or a bound that decides it, instead of "neither reached it".
 bool curveMissesALevel(const std::vector<Checkpoint>& curve, std::span<const double> levels, double mean);
 
+// The curve whose last checkpoint gives raylab's cost per sample per pixel, as an index into
+// `renderers`: the variant named kEvenVariant (render.adaptive=false) where the scene has one, else
+// raylab's own (index 0). An adaptive curve draws its extra samples where paths are long, so its
+// cost per mean sample is the plan's as much as the tracer's (bench/adaptive_sampling.md).
+constexpr const char* kEvenVariant = "raylab:even";
+size_t tracerCostCurve(std::span<const std::string> renderers);
+
 // A peer scene whose two references' means differ by more than this fraction draws another image
 // than raylab's: its times to error compare different integrals, so the summary marks it
 // approximate and leaves it out of the time-to-error goal.

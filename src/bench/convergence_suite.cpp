@@ -399,6 +399,13 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
             }
             const double perSample = sxx > 0 ? sxy / sxx : 0.0;
             const double fixed = my - perSample * mx;
+            const auto msPerSample = [](const Checkpoint& c) { return fmt("%.3g", c.seconds * 1e3 / double(c.spp)); };
+            const size_t costAt = tracerCostCurve(renderers);
+            const std::string raylabCost =
+                costAt == 0 ? msPerSample(means.front().back()) + " ms per sample per pixel"
+                            : msPerSample(means[costAt].back()) + " ms per sample per pixel spread evenly (its " +
+                                  renderers[costAt] + " curve; " + msPerSample(means.front().back()) +
+                                  " per mean sample of the adaptive default, which draws more where paths are long)";
             // Run times that jitter more than the sampling adds can fit a negative slope: say so
             // rather than print a negative cost.
             ratios << "- " << s.name << ": Cycles time per run ≈ "
@@ -406,9 +413,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                                              " ms per sample per pixel"
                                        : fmt("%.3g", my) + " s, no cost per sample resolved (the runs' times "
                                                             "jitter more than their sampling adds)")
-                   << "; raylab "
-                   << fmt("%.3g", means.front().back().seconds * 1e3 / double(means.front().back().spp))
-                   << " ms per sample per pixel after a one-off startup of " << fmt("%.3g", startupSeconds)
+                   << "; raylab " << raylabCost << " after a one-off startup of " << fmt("%.3g", startupSeconds)
                    << " s (scene load and shader compile); raylab's reference's own noise (its variance of the "
                       "mean) is "
                    << fmt("%.1f", 100.0 * imageMean(reference.variance) / means.front().back().error.mse)

@@ -197,6 +197,13 @@ TEST(BenchConvergence, TheGoalTakesThePeersFastestCurveAndAMissedLevelCountsItsL
     EXPECT_THROW(timeToErrorGoalAgainstFastest(raylab, 0.0, {}, 0.25, 0.25, 3.0), std::invalid_argument);
 }
 
+TEST(BenchConvergence, TheCostPerSampleComesFromTheEvenCurveWhereThereIsOne) {
+    const std::vector<std::string> withEven{"raylab", "raylab:bsdf", "raylab:even", "cycles"};
+    EXPECT_EQ(tracerCostCurve(withEven), 2u);
+    const std::vector<std::string> without{"raylab", "raylab:mis", "cycles", "cycles:adaptive"};
+    EXPECT_EQ(tracerCostCurve(without), 0u);
+}
+
 TEST(BenchConvergence, PeerCurveGoesOnOnlyWhereRaylabReachedALevelThePeerHasNot) {
     // RMSE = scale/sqrt(spp) against a mean of 1; levels 5 % and 2 %.
     const double levels[] = {0.05, 0.02};
