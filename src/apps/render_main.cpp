@@ -25,6 +25,7 @@
 #include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <unistd.h>
 
 namespace {
@@ -234,7 +235,8 @@ int main(int argc, char** argv) {
         if (traceView) setTracedView(tracer->program(), view, debugBounce);
         if (!resume.empty())
             tracer->restoreAccumulation(resumePoint.image, resumePoint.meta.spp, resumePoint.meta.passes,
-                                        resumePoint.meta.nonFiniteSamples);
+                                        resumePoint.meta.nonFiniteSamples,
+                                        resumePoint.adaptive ? &*resumePoint.adaptive : nullptr);
     } catch (const std::exception& e) {
         std::cerr << "raylab-render: error: " << e.what() << "\n";
         return 3;
@@ -306,8 +308,10 @@ int main(int argc, char** argv) {
         meta.passes = tracer->passes();
         meta.tracer = entry;
         if (imageFormatFor(outPath) == ImageFormat::Exr) meta.settingsHash = settingsHash(scene);
-        writeImage(outPath, tracer->readImage(), meta,
-                   DisplayTransform{scene.render.exposure, scene.render.toneMap});
+        const std::optional<AdaptiveState> adaptive =
+            tracer->adaptive() ? std::optional<AdaptiveState>(tracer->adaptiveState()) : std::nullopt;
+        writeImage(outPath, tracer->readImage(), meta, DisplayTransform{scene.render.exposure, scene.render.toneMap},
+                   adaptive ? &*adaptive : nullptr);
     } catch (const std::exception& e) {
         std::cerr << e.what() << "\n";
         return 1;

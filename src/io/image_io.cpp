@@ -8,6 +8,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <system_error>
@@ -29,6 +30,10 @@ std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return s;
 }
+
+// R, G, B, A, then an adaptive render's state in the order AdaptiveState::half has it, then its counts.
+constexpr std::array<const char*, 9> kRgbaAndAdaptive = {"R", "G", "B", "A", "adaptive.half.R", "adaptive.half.G",
+                                                         "adaptive.half.B", "adaptive.rays", "adaptive.samples"};
 
 } // namespace
 
@@ -68,16 +73,26 @@ std::uint8_t displayByte(float linear, const DisplayTransform& display) {
 }
 
 void writeImage(const fs::path& path, const Image& image, const RenderMetadata& meta,
-                const DisplayTransform& display) {
+                const DisplayTransform& display, const AdaptiveState* adaptive) {
     using namespace OIIO;
     const ImageFormat format = imageFormatFor(path);
     const fs::path tmp = temporarySibling(path);
     auto out = ImageOutput::create(tmp.string());
     if (!out) throw ImageIoError(path.string() + ": error: " + OIIO::geterror());
 
-    const int channels = format == ImageFormat::Exr ? 4 : 3;
+    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+    if (format != ImageFormat::Exr) adaptive = nullptr;
+    if (adaptive && (adaptive->samples.size() != pixels || adaptive->half.size() != 4 * pixels))
+        throw std::invalid_argument("writeImage: the adaptive state is not of the image's size");
+    const int channels = format == ImageFormat::Exr ? (adaptive ? int(kRgbaAndAdaptive.size()) : 4) : 3;
     ImageSpec spec(image.width, image.height, channels,
                    format == ImageFormat::Exr ? TypeDesc::FLOAT : TypeDesc::UINT8);
+    if (adaptive) {
+        spec.channelnames.assign(kRgbaAndAdaptive.begin(), kRgbaAndAdaptive.end());
+        spec.channelformats.assign(kRgbaAndAdaptive.size(), TypeDesc::FLOAT);
+        spec.channelformats.back() = TypeDesc::UINT32;   // adaptive.samples: exact past 2^24
+        spec.attribute("raylab:adaptive_gate_closed_at", int(std::min<std::uint64_t>(adaptive->gateClosedAt, 0x7fffffff)));
+    }
     spec.attribute("Software", "raylab " RAYLAB_VERSION);
     spec.attribute("raylab:version", RAYLAB_VERSION);
     spec.attribute("raylab:spp", int(std::min<std::uint64_t>(meta.spp, 0x7fffffff)));
@@ -96,7 +111,22 @@ void writeImage(const fs::path& path, const Image& image, const RenderMetadata& 
 
     bool ok = out->open(tmp.string(), spec);
     if (ok) {
-        if (format == ImageFormat::Exr) {
+        if (adaptive) {
+            // The file's own formats per channel, pixel after pixel: eight floats, then the count.
+            struct Native {
+                float rgba[4];
+                float half[4];
+                std::uint32_t samples;
+            };
+            static_assert(sizeof(Native) == 9 * 4);
+            std::vector<Native> native(pixels);
+            for (std::size_t i = 0; i < pixels; ++i) {
+                std::copy_n(image.rgba.begin() + std::ptrdiff_t(4 * i), 4, native[i].rgba);
+                std::copy_n(adaptive->half.begin() + std::ptrdiff_t(4 * i), 4, native[i].half);
+                native[i].samples = adaptive->samples[i];
+            }
+            ok = out->write_image(TypeDesc::UNKNOWN, native.data());
+        } else if (format == ImageFormat::Exr) {
             ok = out->write_image(TypeDesc::FLOAT, image.rgba.data());
         } else {
             std::vector<std::uint8_t> bytes(size_t(image.width) * image.height * 3);
@@ -193,6 +223,49 @@ RenderMetadata readRenderMetadata(const fs::path& path) {
     if (!seconds) throw missing("raylab:render_seconds", "float");
     m.renderSeconds = seconds->get<float>();
     return m;
+}
+
+std::optional<AdaptiveState> readAdaptiveState(const fs::path& path) {
+    using namespace OIIO;
+    StderrCapture decoder;
+    auto in = ImageInput::open(path.string());
+    if (!in) throw ImageIoError(path.string() + ": error: cannot read: " + withDecoderText(OIIO::geterror(), decoder.finish()));
+    const ImageSpec& spec = in->spec();
+    // OpenEXR keeps channels sorted by name, and readers order them as they like: found by name.
+    std::vector<int> at;
+    for (std::size_t k = 4; k < kRgbaAndAdaptive.size(); ++k) {
+        const auto it = std::find(spec.channelnames.begin(), spec.channelnames.end(), kRgbaAndAdaptive[k]);
+        at.push_back(it == spec.channelnames.end() ? -1 : int(it - spec.channelnames.begin()));
+    }
+    const auto found = std::count_if(at.begin(), at.end(), [](int c) { return c >= 0; });
+    if (found == 0) {
+        (void)decoder.finish();
+        return std::nullopt;
+    }
+    for (std::size_t k = 0; k < at.size(); ++k)
+        if (at[k] < 0)
+            throw ImageIoError(path.string() + ": error: an adaptive render's EXR without its channel " +
+                               kRgbaAndAdaptive[k + 4]);
+    const ParamValue* gate = spec.find_attribute("raylab:adaptive_gate_closed_at", TypeDesc::INT);
+    if (!gate) throw ImageIoError(path.string() + ": error: an adaptive render's EXR without its integer attribute "
+                                  "raylab:adaptive_gate_closed_at");
+    if (gate->get<int>() < 0) throw ImageIoError(path.string() + ": error: attribute raylab:adaptive_gate_closed_at is negative");
+    const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
+    AdaptiveState state;
+    state.gateClosedAt = std::uint64_t(gate->get<int>());
+    state.half.resize(4 * pixels);
+    state.samples.resize(pixels);
+    std::vector<float> plane(pixels);
+    for (std::size_t k = 0; k < 4; ++k) {
+        if (!in->read_image(0, 0, at[k], at[k] + 1, TypeDesc::FLOAT, plane.data()))
+            throw ImageIoError(path.string() + ": error: cannot read: " + withDecoderText(in->geterror(), decoder.finish()));
+        for (std::size_t i = 0; i < pixels; ++i) state.half[4 * i + k] = plane[i];
+    }
+    if (!in->read_image(0, 0, at[4], at[4] + 1, TypeDesc::UINT32, state.samples.data()))
+        throw ImageIoError(path.string() + ": error: cannot read: " + withDecoderText(in->geterror(), decoder.finish()));
+    in->close();
+    (void)decoder.finish();
+    return state;
 }
 
 } // namespace raylab

@@ -2,11 +2,13 @@
 // Image files through OpenImageIO. EXR is written linear (float) with render metadata; PNG is
 // exposed, tone mapped and sRGB-encoded to 8 bits. Every write is atomic: a temporary file in the
 // target directory, then a rename, so an interrupted program never leaves a truncated image.
+#include "render/adaptive_sampling.h"
 #include "render/image.h"
 #include "scene/scene.h"
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -55,8 +57,15 @@ ImageFormat imageFormatFor(const std::filesystem::path& path);
 // Fails early (before a long render) if the file cannot be created in its directory.
 void checkWritable(const std::filesystem::path& path);
 
+// An EXR of an adaptive render also takes its `adaptive` state, so that --resume can go on with it:
+// the channels adaptive.samples (uint), adaptive.half.R, .G, .B and adaptive.rays (float) after
+// R, G, B, A, and the attribute raylab:adaptive_gate_closed_at. A PNG leaves it out.
 void writeImage(const std::filesystem::path& path, const Image& image, const RenderMetadata& meta,
-                const DisplayTransform& display);
+                const DisplayTransform& display, const AdaptiveState* adaptive = nullptr);
+
+// The adaptive state of an EXR that writeImage gave one; nullopt when it has none of its channels.
+// Throws ImageIoError naming the file and what is missing when it has only some.
+std::optional<AdaptiveState> readAdaptiveState(const std::filesystem::path& path);
 
 // Reads any format OpenImageIO knows as linear float RGBA (for tests and tools).
 Image readImage(const std::filesystem::path& path);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace raylab {
 
@@ -20,6 +21,30 @@ int AdaptiveBlocks::blockOf(int x, int y) const {
 int AdaptiveBlocks::pixelsIn(int block) const {
     const int x = (block % columns()) * glsl::FRAGMENT_BLOCK, y = (block / columns()) * glsl::FRAGMENT_BLOCK;
     return std::min(glsl::FRAGMENT_BLOCK, width - x) * std::min(glsl::FRAGMENT_BLOCK, height - y);
+}
+
+std::vector<std::uint64_t> blockSamplesOf(const AdaptiveBlocks& blocks, std::span<const std::uint32_t> samples) {
+    if (samples.size() != std::size_t(blocks.width) * std::size_t(blocks.height))
+        throw std::invalid_argument(std::to_string(samples.size()) + " sample counts for an image of " +
+                                    std::to_string(blocks.width) + "x" + std::to_string(blocks.height) + " pixels");
+    std::vector<std::uint64_t> counts(std::size_t(blocks.count()));
+    std::vector<bool> seen(counts.size(), false);
+    for (int y = 0; y < blocks.height; ++y)
+        for (int x = 0; x < blocks.width; ++x) {
+            const std::uint64_t n = samples[std::size_t(y) * std::size_t(blocks.width) + std::size_t(x)];
+            const std::size_t b = std::size_t(blocks.blockOf(x, blocks.height - 1 - y));
+            if (!seen[b]) {
+                seen[b] = true;
+                counts[b] = n;
+            } else if (counts[b] != n) {
+                throw std::invalid_argument("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") holds " +
+                                            std::to_string(n) + " samples, another pixel of its " +
+                                            std::to_string(glsl::FRAGMENT_BLOCK) + "x" +
+                                            std::to_string(glsl::FRAGMENT_BLOCK) + " block " +
+                                            std::to_string(counts[b]) + " (a block shares one count)");
+            }
+        }
+    return counts;
 }
 
 BlockNoise blockNoise(const AdaptiveBlocks& blocks, std::span<const float> meanRgba, std::span<const float> halfRgba,

@@ -17,6 +17,16 @@ constexpr std::uint64_t kAdaptiveWarmupSamples = 16;
 // first samples happened to agree (a rare bright path not met yet) still gets samples, at a lower rate.
 constexpr double kAdaptiveDeviationFloor = 0.05;
 
+// What an adaptive render holds beside its running mean, so that it can go on later (raylab-render
+// --resume; PathTracer::adaptiveState): per pixel the samples it holds and its half image (the half's
+// running mean, then rays per sample: blockNoise's `halfRgba`), both top row first, and the spp at
+// which the gain gate last closed (0 while open; kAdaptiveGateRecheckGrowth).
+struct AdaptiveState {
+    std::vector<std::uint32_t> samples;
+    std::vector<float> half;
+    std::uint64_t gateClosedAt = 0;
+};
+
 // Blocks of an image, FRAGMENT_BLOCK pixels square (the last row and column may be cut off).
 struct AdaptiveBlocks {
     int width = 0;    // image, pixels
@@ -27,6 +37,11 @@ struct AdaptiveBlocks {
     int blockOf(int x, int y) const;   // the block of pixel (x, y)
     int pixelsIn(int block) const;      // FRAGMENT_BLOCK² but at the cut-off edges
 };
+
+// Each block's samples from an AdaptiveState's per pixel (top row first; the blocks in GL's rows,
+// bottom first, as blockOf counts them). Throws std::invalid_argument when the size is not the
+// image's or naming the first pixel (x, y from the top) whose count is not its block's.
+std::vector<std::uint64_t> blockSamplesOf(const AdaptiveBlocks& blocks, std::span<const std::uint32_t> samples);
 
 // Per block: its noise per sample and its cost, its pixels' mean rays per sample. The noise is the
 // deviation per sample that would leave the block's mean with the error it has: the root of n

@@ -234,25 +234,62 @@ void PathTracer::reset() {
 }
 
 void PathTracer::restoreAccumulation(const Image& image, std::uint64_t samplesPerPixel, std::uint64_t passes,
-                                     std::uint64_t nonFiniteSamples) {
+                                     std::uint64_t nonFiniteSamples, const AdaptiveState* adaptive) {
     if (image.width != width_ || image.height != height_)
         throw std::invalid_argument("PathTracer::restoreAccumulation: the image is " + std::to_string(image.width) +
                                     "x" + std::to_string(image.height) + ", the scene renders " +
                                     std::to_string(width_) + "x" + std::to_string(height_));
-    if (adaptive_)
-        throw std::invalid_argument("PathTracer::restoreAccumulation: an adaptive render (render.adaptive) cannot be "
-                                    "continued from its image: its per-block sample counts are not in it");
+    const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
+    if (adaptive_) {
+        if (!adaptive)
+            throw std::invalid_argument("PathTracer::restoreAccumulation: an adaptive render (render.adaptive) goes "
+                                        "on only with its per-pixel samples and half image");
+        if (adaptive->samples.size() != pixels || adaptive->half.size() != 4 * pixels)
+            throw std::invalid_argument("PathTracer::restoreAccumulation: the adaptive state is not of the image's size");
+    }
+    std::vector<std::uint64_t> counts;   // checked before anything changes
+    if (adaptive_) {
+        try {
+            counts = blockSamplesOf(blocks_, adaptive->samples);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(std::string("PathTracer::restoreAccumulation: ") + e.what());
+        }
+    }
     reset();
     // GL stores the bottom row first.
-    const size_t row = size_t(width_) * 4;
-    std::vector<float> raw(image.rgba.size());
-    for (int y = 0; y < height_; ++y)
-        std::copy_n(image.rgba.begin() + std::ptrdiff_t(size_t(height_ - 1 - y) * row), row,
-                    raw.begin() + std::ptrdiff_t(size_t(y) * row));
-    glTextureSubImage2D(accumTexture_, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, raw.data());
+    const auto upload = [&](unsigned texture, const std::vector<float>& rgba) {
+        const size_t row = size_t(width_) * 4;
+        std::vector<float> raw(rgba.size());
+        for (int y = 0; y < height_; ++y)
+            std::copy_n(rgba.begin() + std::ptrdiff_t(size_t(height_ - 1 - y) * row), row,
+                        raw.begin() + std::ptrdiff_t(size_t(y) * row));
+        glTextureSubImage2D(texture, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, raw.data());
+    };
+    upload(accumTexture_, image.rgba);
     samplesPerPixel_ = samplesPerPixel;
     passes_ = passes;
     nonFinite_ = nonFiniteSamples;
+    if (!adaptive_) return;
+    upload(halfTexture_, adaptive->half);
+    blockSamples_ = std::move(counts);
+    gateClosedAt_ = adaptive->gateClosedAt;
+    samplesPerPixel_ = pathsTraced() / pixels;
+}
+
+AdaptiveState PathTracer::adaptiveState() const {
+    if (!adaptive_) throw std::logic_error("PathTracer::adaptiveState: not an adaptive render");
+    AdaptiveState s;
+    for (std::uint64_t n : pixelSamples())
+        s.samples.push_back(std::uint32_t(std::min<std::uint64_t>(n, glsl::ADAPTIVE_SKIP - 1u)));
+    std::vector<float> raw(4 * s.samples.size());
+    glGetTextureImage(halfTexture_, 0, GL_RGBA, GL_FLOAT, GLsizei(raw.size() * sizeof(float)), raw.data());
+    s.half.resize(raw.size());
+    const size_t row = size_t(width_) * 4;
+    for (int y = 0; y < height_; ++y)
+        std::copy_n(raw.begin() + std::ptrdiff_t(size_t(height_ - 1 - y) * row), row,
+                    s.half.begin() + std::ptrdiff_t(size_t(y) * row));
+    s.gateClosedAt = gateClosedAt_;
+    return s;
 }
 
 void PathTracer::renderPass(int rpp) {

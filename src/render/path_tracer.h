@@ -66,10 +66,13 @@ public:
     void reset();
     // Continues a mean of `samplesPerPixel` samples made with the settings now uploaded (a resumed
     // render): `image` (top row first, as readImage gives it) becomes the accumulation, and the
-    // next pass adds samples from there on. The image's size must be the scene's, and the render
-    // not adaptive (its per-block counts and half means are not in an image).
+    // next pass adds samples from there on. The image's size must be the scene's. An adaptive
+    // render needs `adaptive`, as adaptiveState() gave it (its samples one count per block); its
+    // samples per pixel are then the mean of those.
     void restoreAccumulation(const Image& image, std::uint64_t samplesPerPixel, std::uint64_t passes,
-                             std::uint64_t nonFiniteSamples);
+                             std::uint64_t nonFiniteSamples, const AdaptiveState* adaptive = nullptr);
+    // render.adaptive: what restoreAccumulation needs beside the image to go on as this render would.
+    AdaptiveState adaptiveState() const;
     // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them; an
     // adaptive render gives the blocks that take the pass passScale(...) times rpp (adaptive_sampling.h).
     void renderPass(int rpp = 0);

@@ -69,11 +69,16 @@ ResumePoint readResumePoint(const std::filesystem::path& exr, const Scene& scene
         return ImageIoError(file + ": error: cannot resume: " + what + " is " + recorded + " in the EXR but " + given +
                             " for " + scene.sourcePath.string() + " (resume with the scene and settings it was made with)");
     };
-    if (adaptiveInEffect(r))
-        throw ImageIoError(file + ": error: cannot resume: render.adaptive is true for " + scene.sourcePath.string() +
-                           ", and an adaptive render's per-block sample counts and second moments are not in its image "
-                           "(render with --set render.adaptive=false to make an image that can be resumed)");
     if (m.version != RAYLAB_VERSION) throw differs("raylab:version", m.version, RAYLAB_VERSION);
+    p.adaptive = readAdaptiveState(exr);
+    if (adaptiveInEffect(r) && !p.adaptive)
+        throw ImageIoError(file + ": error: cannot resume: render.adaptive is in effect for " + scene.sourcePath.string() +
+                           " but the EXR has no adaptive.samples channel: it was rendered with even sampling (resume it "
+                           "with --set render.adaptive=false)");
+    if (!adaptiveInEffect(r) && p.adaptive)
+        throw ImageIoError(file + ": error: cannot resume: the EXR is an adaptive render's (it has the channel "
+                           "adaptive.samples) but render.adaptive is not in effect for " + scene.sourcePath.string() +
+                           " (resume it with render.adaptive true and the sobol or independent sampler)");
     if (m.tracer != tracer) throw differs("raylab:tracer", m.tracer, "--tracer " + tracer);
     if (m.seed != r.seed) throw differs("raylab:seed", std::to_string(m.seed), "render.seed " + std::to_string(r.seed));
     if (m.sampler != samplerName(scene)) throw differs("raylab:sampler", m.sampler, "render.sampler " + samplerName(scene));
@@ -92,6 +97,22 @@ ResumePoint readResumePoint(const std::filesystem::path& exr, const Scene& scene
     if (p.image.width != r.width || p.image.height != r.height)
         throw differs("the image size", std::to_string(p.image.width) + "x" + std::to_string(p.image.height),
                       std::to_string(r.width) + "x" + std::to_string(r.height));
+    if (p.adaptive) {
+        // The counts decide every later sample's index: they must be the render's own.
+        const AdaptiveBlocks blocks{r.width, r.height};
+        std::vector<std::uint64_t> counts;
+        try {
+            counts = blockSamplesOf(blocks, p.adaptive->samples);
+        } catch (const std::invalid_argument& e) {
+            throw ImageIoError(file + ": error: cannot resume: adaptive.samples: " + e.what());
+        }
+        std::uint64_t paths = 0;
+        for (std::size_t b = 0; b < counts.size(); ++b) paths += counts[b] * std::uint64_t(blocks.pixelsIn(int(b)));
+        const std::uint64_t mean = paths / (std::uint64_t(r.width) * std::uint64_t(r.height));
+        if (mean != m.spp)
+            throw ImageIoError(file + ": error: cannot resume: adaptive.samples averages " + std::to_string(mean) +
+                               " samples per pixel, but raylab:spp is " + std::to_string(m.spp));
+    }
     return p;
 }
 

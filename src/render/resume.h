@@ -2,13 +2,16 @@
 // Resuming a render from its EXR (raylab-render --resume): the image is the float32 running mean
 // and its raylab:* attributes say how it was made, so the passes can go on where they stopped.
 // The continuation adds the same samples in the same passes as one uninterrupted run, so the result
-// is that run's image bit for bit when the EXR stopped at a pass boundary of it (a multiple of rpp:
-// always so for a render stopped by Ctrl-C or its time budget).
+// is that run's image bit for bit when the EXR stopped at a pass boundary of it: always so for a
+// render stopped by Ctrl-C or its time budget; for a target spp, when no pass was cut short to meet
+// it (a multiple of rpp with even sampling). An adaptive render's EXR carries its per-pixel samples,
+// half image and gain gate (AdaptiveState), so it goes on as it would have.
 #include "io/image_io.h"
 #include "render/image.h"
 #include "scene/scene.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace raylab {
@@ -19,8 +22,9 @@ namespace raylab {
 std::string settingsHash(const Scene& scene);
 
 struct ResumePoint {
-    Image image;            // the running mean, top row first
-    RenderMetadata meta;    // as recorded
+    Image image;                            // the running mean, top row first
+    RenderMetadata meta;                    // as recorded
+    std::optional<AdaptiveState> adaptive;  // an adaptive render's state (readAdaptiveState)
 };
 
 // Reads `exr` and checks it against `scene` (as loaded with the command line's overrides) and the

@@ -7,7 +7,9 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
+#include <functional>
 #include <fstream>
 
 namespace fs = std::filesystem;
@@ -34,7 +36,7 @@ std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
     return ::testing::AssertionSuccess();
 }
 
-// Even sampling: an adaptive render (the default) cannot be resumed (the last case below).
+// Even sampling; adaptive renders (the default) have their own case below.
 const std::string kScene = "scenes/default.json --width 12 --height 8 --set render.max_bounces=3 --set render.adaptive=false";
 
 } // namespace
@@ -89,9 +91,10 @@ TEST(RenderResume, RefusesAnotherSceneOrSettingsAndLeavesTheFileAlone) {
          "raylab:settings_hash differs"},
         {kScene + " --spp 1", "holds 2 spp already"},
         {kScene + " --spp 4 --tracer compute", "raylab:tracer"},
-        {kScene + " --spp 4 --set render.adaptive=true", "render.adaptive is true"},
+        {kScene + " --spp 4 --set render.adaptive=true", "render.adaptive is in effect"},
         {"scenes/default.json --width 12 --height 8 --set render.max_bounces=3 --spp 4",
-         "render with --set render.adaptive=false to make an image that can be resumed"},
+         "the EXR has no adaptive.samples channel: it was rendered with even sampling (resume it with --set "
+         "render.adaptive=false)"},
     };
     for (const Case& c : cases) {
         const CliRun r = render(c.args + " --resume " + quoted(exr));
@@ -180,5 +183,53 @@ TEST(RenderResume, TheResumedMeanStartsFromThePixelsInTheExr) {
         if (i % 4 != 3) {
             ASSERT_NEAR(b.rgba[i] - a.rgba[i], 3.0f / 8.0f, 1e-4f) << "channel " << i;
         }
+    }
+}
+
+// An adaptive render (the default) keeps its per-pixel samples, half image and gain gate in its EXR:
+// stopped where the warm-up ends (16 spp, two whole passes) and resumed, it is the uninterrupted
+// render bit for bit, blocks of different counts and all. An EXR whose counts are not a render's
+// own (a block's pixels apart, or a mean that is not raylab:spp) is refused.
+TEST(RenderResume, AdaptiveRendersGoOnFromTheirExr) {
+    const std::string scene = "scenes/cornell_box.json --width 32 --height 18 --rpp 8";
+    const fs::path dir = scratchDir();
+    const fs::path whole = dir / "aw.exr", parts = dir / "ap.exr";
+    ASSERT_EQ(render(scene + " --spp 48 -o " + quoted(whole)).status, 0);
+    ASSERT_EQ(render(scene + " --spp 16 -o " + quoted(parts)).status, 0);
+    EXPECT_FALSE(samePixels(whole, parts));
+    const CliRun r = render(scene + " --spp 48 --resume " + quoted(parts));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(samePixels(whole, parts));
+    const auto wholeState = raylab::readAdaptiveState(whole), partsState = raylab::readAdaptiveState(parts);
+    ASSERT_TRUE(wholeState && partsState);
+    EXPECT_EQ(partsState->samples, wholeState->samples);
+    EXPECT_NE(std::adjacent_find(wholeState->samples.begin(), wholeState->samples.end(), std::not_equal_to<>()),
+              wholeState->samples.end()) << "the blocks should hold different counts";
+    EXPECT_EQ(raylab::readRenderMetadata(parts).spp, raylab::readRenderMetadata(whole).spp);
+
+    // Counts that are not the render's.
+    const fs::path forged = dir / "af.exr";
+    const raylab::RenderMetadata meta = raylab::readRenderMetadata(whole);
+    struct Forgery {
+        std::function<void(raylab::AdaptiveState&)> change;
+        std::string expected;
+    };
+    const std::vector<Forgery> forgeries = {
+        {[](raylab::AdaptiveState& a) { a.samples[1] += 1; }, "adaptive.samples: pixel (1, 0) holds"},
+        {[](raylab::AdaptiveState& a) {
+             for (int y = 14; y < 18; ++y)   // the bottom-left block: blocks count from GL's bottom row
+                 for (int x = 0; x < 4; ++x) a.samples[std::size_t(y * 32 + x)] += 64;
+         },
+         "adaptive.samples averages"},
+    };
+    for (const Forgery& f : forgeries) {
+        raylab::AdaptiveState state = *wholeState;
+        f.change(state);
+        raylab::writeImage(forged, raylab::readImage(whole), meta, {}, &state);
+        const std::string bytes = slurp(forged);
+        const CliRun bad = render(scene + " --spp 64 --resume " + quoted(forged));
+        EXPECT_EQ(bad.status, 1) << bad.err;
+        EXPECT_NE(bad.err.find(forged.string() + ": error: cannot resume: " + f.expected), std::string::npos) << bad.err;
+        EXPECT_EQ(slurp(forged), bytes);
     }
 }

@@ -51,6 +51,54 @@ TEST(ImageIo, ExrIsLinearFloatWithMetadataAndTopRowFirst) {
     EXPECT_EQ(spec.get_int_attribute("raylab:nonfinite_samples"), 3);
 }
 
+// An adaptive render's state rides in the EXR beside RGBA, exactly: readImage still gives the
+// pixels, readAdaptiveState the counts (uint, past float's 2^24), the half image and the gate.
+TEST(ImageIo, AnAdaptiveRendersStateIsInItsExrBesideThePixels) {
+    const Image im = ramp();
+    AdaptiveState state;
+    for (std::uint32_t i = 0; i < 32; ++i) {
+        state.samples.push_back(i == 5 ? (1u << 24) + 1u : i == 6 ? 4000000000u : 16u * i);
+        for (int c = 0; c < 4; ++c) state.half.push_back(float(i) + 0.25f * float(c) + 1e-3f);
+    }
+    state.gateClosedAt = 77;
+    const fs::path path = scratch("adaptive.exr");
+    writeImage(path, im, RenderMetadata{}, DisplayTransform{}, &state);
+    EXPECT_EQ(readImage(path).rgba, im.rgba) << "R, G, B, A stay the first four channels";
+    const std::optional<AdaptiveState> back = readAdaptiveState(path);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->samples, state.samples);
+    EXPECT_EQ(back->half, state.half);
+    EXPECT_EQ(back->gateClosedAt, 77u);
+
+    const fs::path plain = scratch("plain.exr");
+    writeImage(plain, im, RenderMetadata{}, DisplayTransform{});
+    EXPECT_FALSE(readAdaptiveState(plain));
+    const fs::path png = scratch("adaptive.png");
+    writeImage(png, im, RenderMetadata{}, DisplayTransform{}, &state);
+    EXPECT_FALSE(readAdaptiveState(png)) << "a PNG leaves the state out";
+
+    // Some of the channels only: named.
+    const fs::path partial = scratch("partial.exr");
+    {
+        auto out = OIIO::ImageOutput::create(partial.string());
+        ASSERT_TRUE(out);
+        OIIO::ImageSpec spec(8, 4, 5, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = {"R", "G", "B", "A", "adaptive.samples"};
+        std::vector<float> pixels(8 * 4 * 5, 1.0f);
+        ASSERT_TRUE(out->open(partial.string(), spec));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+        ASSERT_TRUE(out->close());
+    }
+    try {
+        readAdaptiveState(partial);
+        ADD_FAILURE() << "no error";
+    } catch (const ImageIoError& e) {
+        EXPECT_NE(std::string(e.what()).find(partial.string() + ": error: an adaptive render's EXR without its channel "
+                                                                "adaptive.half.R"),
+                  std::string::npos) << e.what();
+    }
+}
+
 TEST(ImageIo, PngIsExposedToneMappedAndSrgbEncoded) {
     const fs::path path = scratch("b.png");
     Image im(2, 1);

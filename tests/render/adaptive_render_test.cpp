@@ -210,13 +210,73 @@ TEST_F(AdaptiveRenderTest, OneSeedGivesOneImage) {
         << "the blocks should hold different counts";
 }
 
-TEST_F(AdaptiveRenderTest, AnAdaptiveRenderIsNotContinuedFromItsImage) {
+// A render continued in another tracer from its image and adaptiveState() goes on as the first
+// would: the same plans (the blocks' counts and half images), the same gate (the default scene's
+// gain stays below kAdaptiveMinGain, so the noise is read at 56, 72, 96 and 120 after a stop at 48,
+// where the gate closed at 40: without it the next pass would read at once), the same pixels.
+TEST_F(AdaptiveRenderTest, ARenderGoesOnFromItsImageAndStateAsTheUninterruptedOne) {
+    struct Case {
+        Scene scene;
+        std::uint64_t stop;
+    };
+    const std::vector<Case> cases = {
+        {cornell({"render.spp=96", "render.adaptive=true"}), 40},
+        {loadScene(test::scenePath("default.json"),
+                   {"render.width=96", "render.height=54", "render.spp=128", "render.rpp=8", "render.seed=3"}),
+         48}};
+    for (const Case& c : cases) {
+        PathTracer first, second;
+        first.setScene(c.scene);
+        second.setScene(c.scene);
+        ASSERT_TRUE(first.adaptive());
+        while (first.samplesPerPixel() < c.stop) first.renderPass();
+        const AdaptiveState state = first.adaptiveState();
+        second.restoreAccumulation(first.readImage(), first.samplesPerPixel(), first.passes(), first.nonFiniteSamples(),
+                                   &state);
+        EXPECT_EQ(second.pixelSamples(), first.pixelSamples());
+        std::vector<std::uint64_t> firstReads, secondReads;
+        const auto goOn = [&](PathTracer& t, std::vector<std::uint64_t>& reads) {
+            while (t.samplesPerPixel() < std::uint64_t(c.scene.render.spp)) {
+                const std::uint64_t before = t.gainReads(), spp = t.samplesPerPixel();
+                t.renderPass();
+                if (t.gainReads() > before) reads.push_back(spp);
+            }
+        };
+        goOn(first, firstReads);
+        goOn(second, secondReads);
+        EXPECT_EQ(secondReads, firstReads);
+        EXPECT_EQ(second.pixelSamples(), first.pixelSamples());
+        EXPECT_EQ(second.readImage().rgba, first.readImage().rgba);
+        EXPECT_EQ(second.passes(), first.passes());
+    }
+    // The default scene's reads after the stop, as AClosedGateIsReadAgainOnlyAfterTheSamplesGrowByAQuarter has them.
+    PathTracer t;
+    t.setScene(cases[1].scene);
+    std::vector<std::uint64_t> reads;
+    while (t.samplesPerPixel() < 128) {
+        const std::uint64_t before = t.gainReads(), spp = t.samplesPerPixel();
+        t.renderPass();
+        if (t.gainReads() > before && spp >= 48) reads.push_back(spp);
+    }
+    EXPECT_EQ(reads, (std::vector<std::uint64_t>{56, 72, 96, 120}));
+}
+
+TEST_F(AdaptiveRenderTest, AnAdaptiveRenderIsNotContinuedWithoutItsStateOrFromUnevenBlocks) {
     const Scene scene = cornell({"render.spp=16", "render.adaptive=true"});
     PathTracer tracer;
     tracer.setScene(scene);
     tracer.renderPass(16);
     const Image image = tracer.readImage();
     EXPECT_THROW(tracer.restoreAccumulation(image, 16, 1, 0), std::invalid_argument);
+    AdaptiveState state = tracer.adaptiveState();
+    EXPECT_NO_THROW(tracer.restoreAccumulation(image, 16, 1, 0, &state));
+    state.samples[1] += 1;   // pixel (1, 0): its block's others hold 16
+    try {
+        tracer.restoreAccumulation(image, 16, 1, 0, &state);
+        ADD_FAILURE() << "no error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("pixel (1, 0) holds 17 samples"), std::string::npos) << e.what();
+    }
 }
 
 TEST_F(AdaptiveRenderTest, DebugVariantsTraceEveryPixelAlike) {
