@@ -50,6 +50,8 @@
     X(14, AO, Ao, "ao", 1, 0, 0, DEBUG_DISPLAY_RAW, \
       "ambient occlusion: the fraction of cosine-weighted rays from the first hit that travel ao.distance unblocked") \
     X(15, BAKED_AO, BakedAo, "baked-ao", 1, 0, 0, DEBUG_DISPLAY_RAW, \
-      "the material's baked occlusion map (occlusion_texture) at the first hit; white without one")
+      "the material's baked occlusion map (occlusion_texture) at the first hit; white without one") \
+    X(16, SAMPLES, Samples, "samples", 0, 0, 0, DEBUG_DISPLAY_HEAT_R, \
+      "samples per pixel so far (adaptive sampling gives the noisy blocks more) while the render goes on")
 
 #endif

@@ -100,5 +100,19 @@ TEST_F(PanelsTest, TheRenderPanelShowsTheEstimatorAndTheSamplePointsOfAPixel) {
               std::string::npos) << text;
 }
 
+// The samples view's panel says what its colours count and whether the render spreads them.
+TEST_F(PanelsTest, TheDebugPanelExplainsTheSamplesView) {
+    viewer->setDebugView(DebugView::Samples);
+    for (int i = 0; i < 3; ++i) frame();
+    ASSERT_TRUE(viewer->tracer()->adaptive());
+    std::string text = windowText([&] { drawDebugPanel(*viewer, ui); });
+    EXPECT_NE(text.find("samples per pixel so far"), std::string::npos) << text;
+    EXPECT_NE(text.find("adaptive: "), std::string::npos) << text;
+    ASSERT_TRUE(viewer->document().set("render.adaptive", "false"));
+    frame();
+    text = windowText([&] { drawDebugPanel(*viewer, ui); });
+    EXPECT_NE(text.find("even spreading: every pixel holds the same samples"), std::string::npos) << text;
+}
+
 } // namespace
 } // namespace raylab::ui

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -94,6 +95,52 @@ TEST_F(ViewerTest, DebugViewsShowNormalsNotRadiance) {
     EXPECT_EQ(viewer->tracer()->samplesPerPixel(), 2u);
     EXPECT_NE(viewer->displayTexture(), 0u);
     EXPECT_EQ(viewer->tracer()->readImage().rgba, beauty.rgba);
+}
+
+// The samples view draws the count of each pixel over the beauty render, which goes on untouched:
+// adaptive sampling's blocks of different counts in different colours, its largest count red;
+// even spreading one colour.
+TEST_F(ViewerTest, TheSamplesViewShowsEachPixelsSamplesOverTheRenderItKeeps) {
+    openSmall("cornell_box.json", 32, 18);
+    ASSERT_TRUE(viewer->document().set("render.rpp", "8"));
+    ASSERT_TRUE(viewer->document().set("render.spp", "48"));
+    traceToTarget();
+    ASSERT_TRUE(viewer->tracer()->adaptive());
+    const Image beauty = viewer->tracer()->readImage();
+    const std::vector<std::uint64_t> samples = viewer->tracer()->pixelSamples();
+    viewer->setDebugView(DebugView::Samples);
+    EXPECT_EQ(viewer->tracer()->pixelSamples(), samples) << "the view keeps the render";
+    const auto shown = [&] {
+        const unsigned texture = viewer->displayTexture();
+        std::vector<std::uint8_t> rgba(32 * 18 * 4);
+        glGetTextureImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
+        return rgba;
+    };
+    std::vector<std::uint8_t> rgba = shown();
+    const std::uint64_t most = *std::max_element(samples.begin(), samples.end());
+    EXPECT_FLOAT_EQ(viewer->heatScaleInUse(), float(most));
+    int pairs = 0;
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 32; ++x) {
+            // GL's rows are bottom first, pixelSamples' top first.
+            const std::size_t i = std::size_t(y) * 32 + std::size_t(x), j = std::size_t(17 - y) * 32 + std::size_t(x);
+            const std::size_t k = std::size_t(17) * 32 + 31;   // the top-right pixel, as a second one
+            const bool sameCount = samples[i] == samples[k];
+            const bool sameColour = std::equal(&rgba[4 * j], &rgba[4 * j + 3], &rgba[4 * 31]);
+            EXPECT_EQ(sameCount, sameColour) << "pixel (" << x << ", " << y << ")";
+            pairs += !sameCount;
+        }
+    EXPECT_GT(pairs, 0) << "the blocks should hold different counts";
+    viewer->setDebugView(DebugView::Beauty);
+    EXPECT_EQ(viewer->tracer()->readImage().rgba, beauty.rgba);
+
+    ASSERT_TRUE(viewer->document().set("render.adaptive", "false"));
+    traceToTarget();
+    viewer->setDebugView(DebugView::Samples);
+    rgba = shown();
+    for (std::size_t i = 1; i < 32 * 18; ++i)
+        ASSERT_TRUE(std::equal(&rgba[4 * i], &rgba[4 * i + 3], &rgba[0])) << "even spreading: one colour";
+    EXPECT_FLOAT_EQ(viewer->heatScaleInUse(), 48.0f);
 }
 
 TEST_F(ViewerTest, DirectPlusIndirectIsTheBeautyImageAndBouncesSplitIt) {

@@ -289,8 +289,10 @@ unsigned Viewer::displayTexture() {
     p.noiseScale = noiseScale;
     p.spp = float(tracer_->samplesPerPixel());
     p.hasMoments = variant_ == TracerVariant::Moments && tracer_->samplesPerPixel() > 0 ? 1 : 0;
+    const unsigned source =
+        view_ == DebugView::Samples ? sampleCounts_.update(*tracer_) : tracer_->accumulationTexture();
     p.heatScale = heatScaleInUse();
-    display_.draw(tracer_->accumulationTexture(), p, debug_.moments());
+    display_.draw(source, p, debug_.moments());
     glFinish();   // so the time below is the pass's (llvmpipe runs it at the flush)
     stats_.displayMs = (now() - t0) * 1e3;
     stats_.frameDisplayMs = stats_.displayMs;
@@ -330,6 +332,7 @@ std::optional<float> Viewer::focusAt(float x, float y) {
 
 float Viewer::heatScaleInUse() const {
     if (!heatScaleAuto) return std::max(heatScale, 1e-3f);
+    if (view_ == DebugView::Samples) return float(std::max<std::uint64_t>(1, sampleCounts_.largest()));
     const glm::uvec2 max = variant_ == TracerVariant::Counts ? debug_.heatMax() : glm::uvec2(0);
     return float(std::max(1u, view_ == DebugView::Triangles ? max.y : max.x));
 }

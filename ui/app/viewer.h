@@ -14,6 +14,7 @@
 #include "render/debug_buffers.h"
 #include "render/display_pass.h"
 #include "render/path_tracer.h"
+#include "render/sample_count_texture.h"
 #include "render/tracer_variants.h"
 #include "scene/scene.h"
 
@@ -95,7 +96,7 @@ public:
     bool heatScaleAuto = true;  // heat maps: red at the largest count of one camera ray so far
     float heatScale = 64.0f;    // heat maps: the count shown red when not automatic
     // The count the heat map shows as full red now (automatic: the largest of one ray since the
-    // restart, read from the tracer; at least 1).
+    // restart, read from the tracer, or in the samples view the most samples a pixel holds; at least 1).
     float heatScaleInUse() const;
     OverlaySettings overlays;
     float cameraSpeed = 2.0f;   // world units per second for WASD/QE
@@ -148,6 +149,7 @@ private:
     TracerVariant variant_ = TracerVariant::Beauty;
     DebugBuffers debug_;
     DisplayPass display_;
+    SampleCountTexture sampleCounts_;   // the samples view's image, updated when it is displayed
     PassSlicer slicer_;
     bool paused_ = false;
     float scale_ = 1.0f;

@@ -2,6 +2,7 @@
 #include "panels/panels.h"
 #include "panels/heat_legend.h"
 #include "panels/param_widget.h"
+#include "shaders/include/fragment_layout.glsl"
 
 #include <imgui.h>
 
@@ -86,6 +87,27 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
         legend("0", hi.c_str());
         ImGui::TextDisabled("Mean over the pixel's samples. Up to 16 objects the top level is a plain loop:\n"
                             "spheres cost no box tests there.");
+        break;
+    }
+    case DebugView::Samples: {
+        if (ImGui::Checkbox("auto scale", &viewer.heatScaleAuto)) viewer.redisplay();
+        if (!viewer.heatScaleAuto) {
+            ImGui::SameLine();
+            if (ImGui::DragFloat("red at", &viewer.heatScale, 0.5f, 1.0f, 1e7f, "%.0f samples")) viewer.redisplay();
+        }
+        const std::string hi = std::to_string(int(std::lround(viewer.heatScaleInUse()))) + (viewer.heatScaleAuto ? " (most of a pixel)" : "");
+        legend("0", hi.c_str());
+        const PathTracer* t = viewer.tracer();
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        if (t && t->adaptive())
+            ImGui::TextWrapped("adaptive: %llu spp on average; each %dx%d block shares one count, and a pass goes to "
+                               "the blocks whose error falls most for its time (bench/adaptive_sampling.md)",
+                               static_cast<unsigned long long>(t->samplesPerPixel()), int(glsl::FRAGMENT_BLOCK),
+                               int(glsl::FRAGMENT_BLOCK));
+        else
+            ImGui::TextWrapped("even spreading: every pixel holds the same samples (render.adaptive off, or not in "
+                               "effect with this sampler)");
+        ImGui::PopStyleColor();
         break;
     }
     case DebugView::Ao:
