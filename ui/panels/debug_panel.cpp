@@ -20,6 +20,18 @@ void legend(const char* lo, const char* hi) {
     ImGui::Dummy(ImVec2(w, h + ImGui::GetTextLineHeightWithSpacing()));
 }
 
+// A heat map's scale: automatic (the largest count, `autoNote` after it in the legend) or a count
+// dragged, shown as `format`; then the legend from 0.
+void heatScaleControls(Viewer& viewer, const char* format, const char* autoNote) {
+    if (ImGui::Checkbox("auto scale", &viewer.heatScaleAuto)) viewer.redisplay();
+    if (!viewer.heatScaleAuto) {
+        ImGui::SameLine();
+        if (ImGui::DragFloat("red at", &viewer.heatScale, 0.5f, 1.0f, 1e7f, format)) viewer.redisplay();
+    }
+    const std::string hi = std::to_string(std::llround(viewer.heatScaleInUse())) + (viewer.heatScaleAuto ? autoNote : "");
+    legend("0", hi.c_str());
+}
+
 // The traced view's keys, and the splits that put it beside the render or the baked map.
 void ambientOcclusionControls(Viewer& viewer, UiState& ui) {
     for (const ParamSpec& p : sceneParameters())
@@ -78,25 +90,13 @@ void drawDebugPanel(Viewer& viewer, UiState& ui) {
     }
     case DebugView::Boxes:
     case DebugView::Triangles: {
-        if (ImGui::Checkbox("auto scale", &viewer.heatScaleAuto)) viewer.redisplay();
-        if (!viewer.heatScaleAuto) {
-            ImGui::SameLine();
-            if (ImGui::DragFloat("red at", &viewer.heatScale, 0.5f, 1.0f, 1e6f, "%.0f tests")) viewer.redisplay();
-        }
-        const std::string hi = std::to_string(int(std::lround(viewer.heatScaleInUse()))) + (viewer.heatScaleAuto ? " (max of one ray)" : "");
-        legend("0", hi.c_str());
+        heatScaleControls(viewer, "%.0f tests", " (max of one ray)");
         ImGui::TextDisabled("Mean over the pixel's samples. Up to 16 objects the top level is a plain loop:\n"
                             "spheres cost no box tests there.");
         break;
     }
     case DebugView::Samples: {
-        if (ImGui::Checkbox("auto scale", &viewer.heatScaleAuto)) viewer.redisplay();
-        if (!viewer.heatScaleAuto) {
-            ImGui::SameLine();
-            if (ImGui::DragFloat("red at", &viewer.heatScale, 0.5f, 1.0f, 1e7f, "%.0f samples")) viewer.redisplay();
-        }
-        const std::string hi = std::to_string(int(std::lround(viewer.heatScaleInUse()))) + (viewer.heatScaleAuto ? " (most of a pixel)" : "");
-        legend("0", hi.c_str());
+        heatScaleControls(viewer, "%.0f samples", " (most of a pixel)");
         const PathTracer* t = viewer.tracer();
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         if (t && t->adaptive())
