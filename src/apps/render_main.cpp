@@ -137,7 +137,8 @@ int main(int argc, char** argv) {
     app.add_option("--resume", resume,
                    "Continue the render in this EXR (written by raylab-render) from its samples up to --spp, and "
                    "write it back (or to -o) when done; the scene and settings must be those it was made with. "
-                   "Gives the image of one uninterrupted run, bit for bit, when the EXR stopped at a multiple of rpp")
+                   "Gives the image of one uninterrupted run, bit for bit, when the EXR stopped between two of its passes "
+                   "(Ctrl-C, --time, or an --spp that no pass was cut short for); adaptive renders too")
         ->type_name("OUT.exr");
     std::string blenderOut;
     app.add_option("--export-blender", blenderOut,
