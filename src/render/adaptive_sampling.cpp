@@ -23,6 +23,13 @@ int AdaptiveBlocks::pixelsIn(int block) const {
     return std::min(glsl::FRAGMENT_BLOCK, width - x) * std::min(glsl::FRAGMENT_BLOCK, height - y);
 }
 
+std::uint64_t pathsIn(const AdaptiveBlocks& blocks, std::span<const std::uint64_t> blockSamples) {
+    std::uint64_t paths = 0;
+    for (std::size_t b = 0; b < blockSamples.size(); ++b)
+        paths += blockSamples[b] * std::uint64_t(blocks.pixelsIn(int(b)));
+    return paths;
+}
+
 std::vector<std::uint64_t> blockSamplesOf(const AdaptiveBlocks& blocks, std::span<const std::uint32_t> samples) {
     if (samples.size() != std::size_t(blocks.width) * std::size_t(blocks.height))
         throw std::invalid_argument(std::to_string(samples.size()) + " sample counts for an image of " +

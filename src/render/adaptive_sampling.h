@@ -38,6 +38,9 @@ struct AdaptiveBlocks {
     int pixelsIn(int block) const;      // FRAGMENT_BLOCK² but at the cut-off edges
 };
 
+// The camera paths the blocks hold in all: each block's samples times its pixels.
+std::uint64_t pathsIn(const AdaptiveBlocks& blocks, std::span<const std::uint64_t> blockSamples);
+
 // Each block's samples from an AdaptiveState's per pixel (top row first; the blocks in GL's rows,
 // bottom first, as blockOf counts them). Throws std::invalid_argument when the size is not the
 // image's or naming the first pixel (x, y from the top) whose count is not its block's.

@@ -125,6 +125,20 @@ void PathTracer::allocateAdaptiveImages() {
     glTextureStorage2D(halfTexture_, 1, GL_RGBA32F, width_, height_);
 }
 
+namespace {
+
+// RGBA rows in the other order: GL keeps the bottom row first, images the top row.
+std::vector<float> flippedRows(const std::vector<float>& rgba, int width, int height) {
+    const std::size_t row = std::size_t(width) * 4;
+    std::vector<float> out(rgba.size());
+    for (int y = 0; y < height; ++y)
+        std::copy_n(rgba.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * row), row,
+                    out.begin() + std::ptrdiff_t(std::size_t(y) * row));
+    return out;
+}
+
+} // namespace
+
 void PathTracer::setScene(const Scene& scene) {
     origin_ = options_.cameraRelative ? glm::dvec3(scene.camera.position) : glm::dvec3(0.0);
     gpuScene_.upload(scene, origin_);
@@ -239,16 +253,13 @@ void PathTracer::restoreAccumulation(const Image& image, std::uint64_t samplesPe
         throw std::invalid_argument("PathTracer::restoreAccumulation: the image is " + std::to_string(image.width) +
                                     "x" + std::to_string(image.height) + ", the scene renders " +
                                     std::to_string(width_) + "x" + std::to_string(height_));
-    const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
+    std::vector<std::uint64_t> counts;   // checked before anything changes
     if (adaptive_) {
         if (!adaptive)
             throw std::invalid_argument("PathTracer::restoreAccumulation: an adaptive render (render.adaptive) goes "
                                         "on only with its per-pixel samples and half image");
-        if (adaptive->samples.size() != pixels || adaptive->half.size() != 4 * pixels)
-            throw std::invalid_argument("PathTracer::restoreAccumulation: the adaptive state is not of the image's size");
-    }
-    std::vector<std::uint64_t> counts;   // checked before anything changes
-    if (adaptive_) {
+        if (adaptive->half.size() != image.rgba.size())
+            throw std::invalid_argument("PathTracer::restoreAccumulation: the half image is not of the image's size");
         try {
             counts = blockSamplesOf(blocks_, adaptive->samples);
         } catch (const std::invalid_argument& e) {
@@ -256,24 +267,17 @@ void PathTracer::restoreAccumulation(const Image& image, std::uint64_t samplesPe
         }
     }
     reset();
-    // GL stores the bottom row first.
-    const auto upload = [&](unsigned texture, const std::vector<float>& rgba) {
-        const size_t row = size_t(width_) * 4;
-        std::vector<float> raw(rgba.size());
-        for (int y = 0; y < height_; ++y)
-            std::copy_n(rgba.begin() + std::ptrdiff_t(size_t(height_ - 1 - y) * row), row,
-                        raw.begin() + std::ptrdiff_t(size_t(y) * row));
-        glTextureSubImage2D(texture, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, raw.data());
-    };
-    upload(accumTexture_, image.rgba);
+    glTextureSubImage2D(accumTexture_, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT,
+                        flippedRows(image.rgba, width_, height_).data());
     samplesPerPixel_ = samplesPerPixel;
     passes_ = passes;
     nonFinite_ = nonFiniteSamples;
     if (!adaptive_) return;
-    upload(halfTexture_, adaptive->half);
+    glTextureSubImage2D(halfTexture_, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT,
+                        flippedRows(adaptive->half, width_, height_).data());
     blockSamples_ = std::move(counts);
     gateClosedAt_ = adaptive->gateClosedAt;
-    samplesPerPixel_ = pathsTraced() / pixels;
+    samplesPerPixel_ = pathsTraced() / (std::uint64_t(width_) * std::uint64_t(height_));
 }
 
 AdaptiveState PathTracer::adaptiveState() const {
@@ -283,11 +287,7 @@ AdaptiveState PathTracer::adaptiveState() const {
         s.samples.push_back(std::uint32_t(std::min<std::uint64_t>(n, glsl::ADAPTIVE_SKIP - 1u)));
     std::vector<float> raw(4 * s.samples.size());
     glGetTextureImage(halfTexture_, 0, GL_RGBA, GL_FLOAT, GLsizei(raw.size() * sizeof(float)), raw.data());
-    s.half.resize(raw.size());
-    const size_t row = size_t(width_) * 4;
-    for (int y = 0; y < height_; ++y)
-        std::copy_n(raw.begin() + std::ptrdiff_t(size_t(height_ - 1 - y) * row), row,
-                    s.half.begin() + std::ptrdiff_t(size_t(y) * row));
+    s.half = flippedRows(raw, width_, height_);
     s.gateClosedAt = gateClosedAt_;
     return s;
 }
@@ -428,19 +428,18 @@ BlockNoise PathTracer::adaptiveNoise() const {
 
 std::uint64_t PathTracer::pathsTraced() const {
     if (!adaptive_) return samplesPerPixel_ * std::uint64_t(width_) * std::uint64_t(height_);
-    std::uint64_t paths = 0;
-    for (std::size_t b = 0; b < blockSamples_.size(); ++b)
-        paths += blockSamples_[b] * std::uint64_t(blocks_.pixelsIn(int(b)));
-    return paths;
+    return pathsIn(blocks_, blockSamples_);
+}
+
+std::uint64_t PathTracer::samplesAt(int x, int y) const {
+    return adaptive_ ? blockSamples_[std::size_t(blocks_.blockOf(x, height_ - 1 - y))] : samplesPerPixel_;
 }
 
 std::vector<std::uint64_t> PathTracer::pixelSamples() const {
-    std::vector<std::uint64_t> samples(std::size_t(width_) * std::size_t(height_), samplesPerPixel_);
-    if (!adaptive_) return samples;
-    for (int y = 0; y < height_; ++y)   // top row first: GL's row height_ - 1 - y
-        for (int x = 0; x < width_; ++x)
-            samples[std::size_t(y) * std::size_t(width_) + std::size_t(x)] =
-                blockSamples_[std::size_t(blocks_.blockOf(x, height_ - 1 - y))];
+    std::vector<std::uint64_t> samples;
+    samples.reserve(std::size_t(width_) * std::size_t(height_));
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) samples.push_back(samplesAt(x, y));
     return samples;
 }
 
@@ -449,11 +448,7 @@ Image PathTracer::readImage() const {
     std::vector<float> raw(image.rgba.size());
     glGetTextureImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, GLsizei(raw.size() * sizeof(float)),
                       raw.data());
-    // GL stores the bottom row first; images are written top row first.
-    const size_t row = size_t(width_) * 4;
-    for (int y = 0; y < height_; ++y)
-        std::copy_n(raw.begin() + std::ptrdiff_t(size_t(height_ - 1 - y) * row), row,
-                    image.rgba.begin() + std::ptrdiff_t(size_t(y) * row));
+    image.rgba = flippedRows(raw, width_, height_);
     return image;
 }
 

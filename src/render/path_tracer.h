@@ -93,6 +93,7 @@ public:
     // inspection or exercise define is set); then the samples each pixel holds.
     bool adaptive() const { return adaptive_; }
     std::vector<std::uint64_t> pixelSamples() const;   // top row first, as readImage
+    std::uint64_t samplesAt(int x, int y) const;        // of image pixel (x, y), top-left origin
     // render.adaptive: each block's noise and cost as the next plan reads them (blockNoise), its
     // blocks in GL's rows (bottom first); blockSamples() the samples each holds.
     BlockNoise adaptiveNoise() const;

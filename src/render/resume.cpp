@@ -106,9 +106,7 @@ ResumePoint readResumePoint(const std::filesystem::path& exr, const Scene& scene
         } catch (const std::invalid_argument& e) {
             throw ImageIoError(file + ": error: cannot resume: adaptive.samples: " + e.what());
         }
-        std::uint64_t paths = 0;
-        for (std::size_t b = 0; b < counts.size(); ++b) paths += counts[b] * std::uint64_t(blocks.pixelsIn(int(b)));
-        const std::uint64_t mean = paths / (std::uint64_t(r.width) * std::uint64_t(r.height));
+        const std::uint64_t mean = pathsIn(blocks, counts) / (std::uint64_t(r.width) * std::uint64_t(r.height));
         if (mean != m.spp)
             throw ImageIoError(file + ": error: cannot resume: adaptive.samples averages " + std::to_string(mean) +
                                " samples per pixel, but raylab:spp is " + std::to_string(m.spp));

@@ -22,13 +22,15 @@ unsigned SampleCountTexture::update(const PathTracer& tracer) {
         width_ = w;
         height_ = h;
     }
-    const std::vector<std::uint64_t> samples = tracer.pixelSamples();   // top row first
-    std::vector<float> rows(samples.size());
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            rows[std::size_t(h - 1 - y) * std::size_t(w) + std::size_t(x)] =
-                float(samples[std::size_t(y) * std::size_t(w) + std::size_t(x)]);
-    largest_ = samples.empty() ? 0 : *std::max_element(samples.begin(), samples.end());
+    std::vector<float> rows;   // GL's order: the bottom row first
+    rows.reserve(std::size_t(w) * std::size_t(h));
+    largest_ = 0;
+    for (int y = h - 1; y >= 0; --y)
+        for (int x = 0; x < w; ++x) {
+            const std::uint64_t n = tracer.samplesAt(x, y);
+            largest_ = std::max(largest_, n);
+            rows.push_back(float(n));
+        }
     glTextureSubImage2D(texture_, 0, 0, 0, w, h, GL_RED, GL_FLOAT, rows.data());
     return texture_;
 }

@@ -97,9 +97,7 @@ void tooltip(Viewer& viewer, const ImageRect& r) {
     if (heatMapView(viewer.debugView()))
         ImGui::Text("camera ray: %.4g box tests, %.4g triangle tests (mean over the pixel's samples)", double(v.x), double(v.y));
     else if (viewer.debugView() == DebugView::Samples && viewer.tracer())
-        ImGui::Text("samples: %llu", static_cast<unsigned long long>(
-                                          viewer.tracer()->pixelSamples()[std::size_t(y) * std::size_t(viewer.imageWidth()) +
-                                                                          std::size_t(x)]));
+        ImGui::Text("samples: %llu", static_cast<unsigned long long>(viewer.tracer()->samplesAt(x, y)));
     else if (viewer.debugView() == DebugView::Uv)
         ImGui::Text("uv (fractional part): %.4f %.4f", double(v.x), double(v.y));
     else
