@@ -6,6 +6,7 @@
 //   GpuTriangle triangleAt(uint i); GpuVertex vertexAt(uint i); GpuSphere sphereAt(uint i);
 //   uint instanceCount(); uvec4 instanceInfo(uint i); vec3 instanceWorldMin(uint i);
 //   vec3 instanceWorldMax(uint i); uvec2 instanceTriangleRange(uint i) (first, count); uint sphereCount();
+//   uvec2 instanceTrianglesAt(uint i) (instanceTriangleRange for an index that differs between lanes)
 // (GLSL: scene_geometry.glsl reads buffers; C++: accel/cpu_traversal.h reads vectors), and may
 // define RL_COUNT_BOX() / RL_COUNT_TRIANGLE() to count tests (heat maps).
 #ifndef RAYLAB_BVH_TRAVERSAL_GLSL
@@ -116,6 +117,10 @@ RL_FN bool traverseMesh(Ray ray, float tOffset, uint instance, uint root, bool a
 // ray to the edge of that error box, by dt, so a surface the world ray starts on is not met again,
 // and the interval is shortened by as much (pbrt-v4 Transform::operator()(Ray), §6.8.6).
 RL_FN Ray objectRay(GpuInstance inst, Ray ray, RL_OUT(float) dt) {
+#if RAYLAB_MESHES_IN_WORLD
+    dt = 0.0f;   // placed by the identity: object space is world space, nothing is rounded
+    return ray;
+#endif
     vec3 o = transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin);
     vec3 d = transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir);
     vec3 oError = transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin,
@@ -149,8 +154,10 @@ RL_FN bool intersectInstance(Ray ray, uint i, bool anyHit, RL_INOUT(TraceRecord)
     return found;
 }
 
-// Nearest hit of the scene in (0, tMax); with anyHit, stops at the first hit found.
-RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec) {
+// Nearest hit of the scene in (0, tMax); with anyHit, stops at the first hit found. `leaving`: an
+// instance the ray leaves outwards and so cannot meet (accel/escape_sides.h), left out of the
+// search, or NO_INSTANCE.
+RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(TraceRecord) rec) {
     rec = TraceRecord(tMax, 0u, 0u, 0.0f, 0.0f);
     bool found = false;
 #if RAYLAB_TOP_LEVEL_LINEAR
@@ -161,7 +168,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
 #if RAYLAB_FEATURE_SPHERES
     uint sphereTotal = sphereCount();
     for (uint k = 0u; k < sphereTotal; ++k) {
-        GpuSphere s = sphereAt(k);
+        GpuSphere s = sphereAt(k);   // not left out when leaving: that branch costs more than the test (bench/mesh_rays.md)
         float t = intersectSphere(ray, xyzOf(s.centerRadius), s.centerRadius.w, 0.0f, rec.t);
         if (t > 0.0f) {
             rec = TraceRecord(t, s.info.y, k, 0.0f, 0.0f);
@@ -176,24 +183,48 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
     // object it passes by.
     vec3 invDir = safeInverseDir(ray.dir);
     uint count = instanceCount();
-#if RAYLAB_SHARED_MESH_TRANSFORM && !RAYLAB_COUNT_TRAVERSAL
-    // Every mesh is placed by the same transform, which instance 0 carries whatever it is
-    // (geometry_types.glsl): the ray is moved into the meshes' object space and sheared for the
-    // triangle test once, not once per object it meets (bench/mesh_rays.md). The values are those
-    // each object would compute, so the hits are too.
-    float sharedDt;
-    Ray sharedRay = objectRay(instanceAt(0u), ray, sharedDt);
-    TriangleRay sharedTriangleRay = triangleRay(sharedRay);
-#endif
+#if RAYLAB_MESHES_IN_WORLD && !RAYLAB_COUNT_TRAVERSAL
+    // Every mesh in world space: the ray is sheared for the triangle test once (bench/mesh_rays.md).
+    // Each lane first notes the objects whose boxes its ray meets, then tests their triangles one
+    // per iteration of one loop, which lasts as long as the lane with the most triangles to test.
+    // Looping over objects instead, llvmpipe ran every object's triangle loop for all eight lanes
+    // once any lane met its box, and at least one iteration of it when none did ("A ray does not
+    // search the object it leaves").
+    TriangleRay triRay = triangleRay(ray);
+    uint pending = 0u;   // bit i: instance i's box is met (kLinearTopLevelMax <= 32)
     for (uint i = 0u; i < count; ++i) {
-        if (instanceInfo(i).x != INSTANCE_MESH) continue;
+        if (instanceInfo(i).x != INSTANCE_MESH || i == leaving) continue;
+        RL_COUNT_BOX();
+        if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) >= 0.0f) pending |= 1u << i;
+    }
+    uint instance = 0u;
+    uint next = 0u;   // the lane's next triangle, and the end of its object's
+    uint end = 0u;
+    while (pending != 0u || next < end) {
+        if (next == end) {
+            instance = uint(findLSB(pending));
+            pending &= pending - 1u;
+            uvec2 range = instanceTrianglesAt(instance);   // first, count
+            next = range.x;
+            end = range.x + range.y;
+        }
+        if (next < end) {
+            GpuTriangle tri = triangleAt(next);
+            TriangleHit h;
+            if (intersectTriangle(triRay, xyzOf(tri.p0), xyzOf(tri.p1), xyzOf(tri.p2), rec.t, h)) {
+                rec = TraceRecord(h.t, instance, next, h.b1, h.b2);
+                found = true;
+                if (anyHit) break;
+            }
+            ++next;
+        }
+    }
+#else
+    for (uint i = 0u; i < count; ++i) {
+        if (instanceInfo(i).x != INSTANCE_MESH || i == leaving) continue;
         RL_COUNT_BOX();
         if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) < 0.0f) continue;
-#if RAYLAB_SHARED_MESH_TRANSFORM && !RAYLAB_COUNT_TRAVERSAL
-        uvec2 range = instanceTriangleRange(i);   // first triangle, count
-        if (sharedDt < rec.t && intersectTriangles(sharedTriangleRay, sharedDt, i, range.x, range.y, anyHit, rec))
-            found = true;
-#elif RAYLAB_SMALL_MESHES && !RAYLAB_COUNT_TRAVERSAL
+#if RAYLAB_SMALL_MESHES && !RAYLAB_COUNT_TRAVERSAL
         // A few triangles: tested straight after the world box, without the mesh BVH's root read,
         // box test and walk (bench/mesh_rays.md). The heat views count the BVH's own tests.
         GpuInstance inst = instanceAt(i);
@@ -207,6 +238,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
 #endif
         if (found && anyHit) break;
     }
+#endif
 #endif
     return found;
 #else
@@ -223,7 +255,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
             if (bvhNodeIsLeaf(n)) {
                 uint first = bvhNodeLink(n);
                 for (uint i = first; i < first + bvhNodeCount(n); ++i) {
-                    if (intersectInstance(ray, i, anyHit, rec)) found = true;
+                    if (i != leaving && intersectInstance(ray, i, anyHit, rec)) found = true;
                     if (found && anyHit) break;
                 }
                 if (found && anyHit) done = true;
@@ -245,6 +277,10 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec)
 #endif
 }
 
+RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, RL_OUT(TraceRecord) rec) {
+    return traceScene(ray, tMax, anyHit, NO_INSTANCE, rec);
+}
+
 // Is anything in (0, tMax) along the ray? For shadow rays: tMax is the light's distance (in units
 // of |dir|), so a light's own surface should lie beyond the interval.
 RL_FN bool occludedBvh(Ray ray, float tMax) {
@@ -264,12 +300,14 @@ struct SurfaceHit {
     uint material;
     float lodBase;   // ½·log2(uv area / world area) around the hit, for ray-cone texture LOD
     vec3 tangent;    // ∂p/∂u in world space (normal maps' tangent frame); 0 where undefined
+    uint escapes;    // the object's INSTANCE_ESCAPES_* bits (accel/escape_sides.h)
 };
 
 RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     SurfaceHit s;
     s.lodBase = 0.0f;
     s.tangent = vec3(0.0f);
+    s.escapes = INSTANCE_ESCAPES_FRONT;   // a sphere's
 #if RAYLAB_FEATURE_SPHERES
     // A sphere's material is in its own record: without meshes the instance record is not read at
     // all (that per-lane read cost 2892 → 1811 instructions per path on the default scene,
@@ -301,8 +339,9 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     }
 #endif
 #if RAYLAB_FEATURE_MESHES
-    GpuInstance inst = instanceAt(rec.instance);
+    GpuInstance inst = instanceAt(rec.instance);   // with RAYLAB_MESHES_IN_WORLD only info is read
     s.material = inst.info.z;
+    s.escapes = inst.info.w & (INSTANCE_ESCAPES_FRONT | INSTANCE_ESCAPES_BACK);
     GpuTriangle tri = triangleAt(rec.primitive);
     GpuVertex v0 = vertexAt(tri.vertices.x);
     GpuVertex v1 = vertexAt(tri.vertices.y);
@@ -314,6 +353,12 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     TriangleHit h = TriangleHit(rec.t, 1.0f - rec.b1 - rec.b2, rec.b1, rec.b2);
     vec3 pObj = triangleHitPoint(h, p0, p1, p2);
     vec3 eObj = triangleHitError(h, p0, p1, p2);
+#if RAYLAB_MESHES_IN_WORLD
+    // Placed by the identity: the object-space point, its error and normal are the world's.
+    s.position = pObj;
+    s.error = eObj;
+    s.normal = normalize(cross(p1 - p0, p2 - p0));
+#else
     s.position = transformPoint(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, pObj);
     // A ray leaving this point is transformed back into object space (intersectInstance), which
     // rounds its origin again; the bound includes that error too, so the offset clears both.
@@ -322,11 +367,16 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     s.error = transformPointError(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, pObj, eObj + eBack);
     s.normal = normalize(transformNormal(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2,
                                          cross(p1 - p0, p2 - p0)));
+#endif
     s.shadingNormal = s.normal;
 #if RAYLAB_FEATURE_SMOOTH_NORMALS
-    if ((inst.info.w & 1u) != 0u) {
+    if ((inst.info.w & INSTANCE_HAS_NORMALS) != 0u) {
         vec3 n = h.b0 * xyzOf(v0.normalV) + h.b1 * xyzOf(v1.normalV) + h.b2 * xyzOf(v2.normalV);
+#if RAYLAB_MESHES_IN_WORLD
+        vec3 nw = n;
+#else
         vec3 nw = transformNormal(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, n);
+#endif
         if (dot(nw, nw) > 0.0f) s.shadingNormal = normalize(nw);
     }
 #endif
@@ -336,8 +386,13 @@ RL_FN SurfaceHit surfaceAt(Ray ray, TraceRecord rec) {
     s.uv = h.b0 * t0 + h.b1 * t1 + h.b2 * t2;
 #if RAYLAB_FEATURE_TEXTURES
     // Ray Tracing Gems ch. 20, eq. 34: texel-to-world area ratio of the triangle (world edges).
+#if RAYLAB_MESHES_IN_WORLD
+    vec3 w1 = p1 - p0;
+    vec3 w2 = p2 - p0;
+#else
     vec3 w1 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p1 - p0);
     vec3 w2 = transformVector(inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2, p2 - p0);
+#endif
     float uvArea = abs((t1.x - t0.x) * (t2.y - t0.y) - (t2.x - t0.x) * (t1.y - t0.y));
     s.lodBase = 0.5f * log2(max(uvArea, 1e-30f) / max(length(cross(w1, w2)), 1e-30f));
     // ∂p/∂u from the uv differences of the edges (pbrt-v4 Triangle::InteractionFromIntersection).

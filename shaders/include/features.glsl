@@ -18,7 +18,7 @@
     RL_FEATURE(RAYLAB_FEATURE_TEXTURES, textures, always, "textures")                            \
     RL_FEATURE(RAYLAB_TOP_LEVEL_LINEAR, linearTopLevel, always, "few-objects")                   \
     RL_FEATURE(RAYLAB_SMALL_MESHES, smallMeshes, linearTopLevel, "small-meshes")                 \
-    RL_FEATURE(RAYLAB_SHARED_MESH_TRANSFORM, sharedMeshTransform, smallMeshes, "one-transform")  \
+    RL_FEATURE(RAYLAB_MESHES_IN_WORLD, meshesInWorld, smallMeshes, "meshes-in-world")          \
     RL_FEATURE(RAYLAB_SHOW_MIP_LEVEL, showMipLevel, always, "mip-view")                          \
     RL_FEATURE(RAYLAB_NEE, nee, always, "nee")                                                   \
     RL_FEATURE(RAYLAB_GENERAL_BSDF, generalBsdf, always, "ggx+glass")                            \
@@ -42,7 +42,7 @@
 #define RAYLAB_FEATURE_TEXTURES 1         // some material has an image texture
 #define RAYLAB_TOP_LEVEL_LINEAR 0         // few objects: a loop over them instead of the top-level BVH
 #define RAYLAB_SMALL_MESHES 0             // with few objects, every mesh small: its triangles tested without its BVH
-#define RAYLAB_SHARED_MESH_TRANSFORM 0    // with small meshes, every mesh placed by the same transform: one object ray
+#define RAYLAB_MESHES_IN_WORLD 0          // with small meshes, every mesh's vertices in world space, placed by the identity
 #define RAYLAB_SHOW_MIP_LEVEL 0           // debug view render.show_mip_level (with textures)
 #define RAYLAB_NEE 1                      // next-event estimation (render.nee)
 #define RAYLAB_GENERAL_BSDF 1             // GGX specular and glass (some material has f0 or transmission)

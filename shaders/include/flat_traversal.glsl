@@ -65,13 +65,15 @@ RL_FN bool intersectObjectPrimitives(Ray ray, uint i, bool anyHit, RL_INOUT(Trac
     return intersectInstance(ray, i, anyHit, rec);   // a sphere is its own only primitive
 }
 
-// Nearest hit in (0, tMax) (any hit with anyHit), like traceScene; boxes: object boxes first.
-RL_FN bool traceSceneFlat(Ray ray, float tMax, bool anyHit, bool boxes, RL_OUT(TraceRecord) rec) {
+// Nearest hit in (0, tMax) (any hit with anyHit), like traceScene, which `leaving` is too;
+// boxes: object boxes first.
+RL_FN bool traceSceneFlat(Ray ray, float tMax, bool anyHit, bool boxes, uint leaving, RL_OUT(TraceRecord) rec) {
     rec = TraceRecord(tMax, 0u, 0u, 0.0f, 0.0f);
     vec3 invDir = safeInverseDir(ray.dir);
     bool found = false;
     uint count = instanceCount();
     for (uint i = 0u; i < count; ++i) {
+        if (i == leaving) continue;
         if (boxes) {
             RL_COUNT_BOX();
             if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) < 0.0f) continue;
@@ -80,6 +82,10 @@ RL_FN bool traceSceneFlat(Ray ray, float tMax, bool anyHit, bool boxes, RL_OUT(T
         if (found && anyHit) break;
     }
     return found;
+}
+
+RL_FN bool traceSceneFlat(Ray ray, float tMax, bool anyHit, bool boxes, RL_OUT(TraceRecord) rec) {
+    return traceSceneFlat(ray, tMax, anyHit, boxes, NO_INSTANCE, rec);
 }
 
 RL_NAMESPACE_END

@@ -31,9 +31,9 @@ const uint INSTANCE_SPHERE = 0u;
 const uint INSTANCE_MESH = 1u;
 
 // An object in the top-level BVH: a world-space sphere, or a mesh placed by an affine transform
-// (rows of the 3×4 matrices). Moving an object changes only this record and the top level. A
-// sphere's rows hold the first mesh's transform (a sphere needs none), so instance 0 always holds
-// a mesh's: with RAYLAB_SHARED_MESH_TRANSFORM every mesh's.
+// (rows of the 3×4 matrices; a sphere's are unused). Moving an object changes only this record
+// and the top level. With RAYLAB_MESHES_IN_WORLD every mesh's rows are the identity's, and the
+// tracer does not read them.
 struct GpuInstance {
     vec4 worldToObject0;
     vec4 worldToObject1;
@@ -45,9 +45,20 @@ struct GpuInstance {
                      // a mesh's first triangle (render.accel boxes and none test them all)
     vec4 worldMax;   // xyz; w: bits of the mesh's triangle count, 0 for a sphere
     uvec4 info;   // x: INSTANCE_SPHERE / INSTANCE_MESH; y: sphere index / mesh root node;
-                  // z: material; w: bit 0 = has vertex normals, bit 1 = has uvs, bits 2+ = the
-                  // object id (instanceObjectId)
+                  // z: material; w: the INSTANCE_HAS_* and INSTANCE_ESCAPES_* bits below, and
+                  // from bit INSTANCE_OBJECT_ID_SHIFT up the object id (instanceObjectId)
 };
+
+// Bits of a GpuInstance's info.w.
+const uint INSTANCE_HAS_NORMALS = 1u;   // a mesh with vertex normals (smooth shading)
+const uint INSTANCE_HAS_UVS = 2u;
+// A ray that leaves the object's surface on the front (the winding normal's side; a sphere's
+// outside) or the back of the face it leaves never meets the object again (accel/escape_sides.h).
+const uint INSTANCE_ESCAPES_FRONT = 4u;
+const uint INSTANCE_ESCAPES_BACK = 8u;
+const uint INSTANCE_OBJECT_ID_SHIFT = 4u;
+// "No instance": the search leaves out none (traceScene's `leaving`).
+const uint NO_INSTANCE = 0xffffffffu;
 
 // Triangles a flat search (render.accel boxes and none, flat_traversal.glsl) tests per loop
 // iteration; the host's draws are sized by the iterations that costs (PathTracer).
@@ -64,7 +75,7 @@ RL_FN uint instanceTriangleCount(GpuInstance inst) { return floatBitsToUint(inst
 
 // The scene's object number: sphere i is i, mesh j is sphereCount + j (Scene's order, the order
 // sceneToJson writes "objects" in and the viewer's `objects.N` keys use).
-RL_FN uint instanceObjectId(GpuInstance inst) { return inst.info.w >> 2u; }
+RL_FN uint instanceObjectId(GpuInstance inst) { return inst.info.w >> INSTANCE_OBJECT_ID_SHIFT; }
 
 // A triangle in its mesh's BVH leaf order. It carries its own object-space positions, so a
 // triangle test reads one record instead of an index record and three vertices.

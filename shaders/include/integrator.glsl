@@ -117,7 +117,7 @@ float triangleEmitterLightPdf(vec3 d, Hit hit) {
 // with emission_sides front.
 bool emitterBackFace(vec3 rayDir, Hit hit) {
 #if RAYLAB_ONE_SIDED_EMITTERS
-    return instances[hit.instance].info.x == INSTANCE_MESH && (triangleLightIndex[hit.primitive] & TRIANGLE_FRONT_ONLY) != 0u &&
+    return (RAYLAB_FEATURE_SPHERES == 0 || instances[hit.instance].info.x == INSTANCE_MESH) && (triangleLightIndex[hit.primitive] & TRIANGLE_FRONT_ONLY) != 0u &&
            dot(rayDir, hit.normal) >= 0.0f;
 #else
     return false;
@@ -175,9 +175,14 @@ float surfaceHitWeight(Ray ray, Hit hit, PrevBounce prev, int lightCount) {
 #if RAYLAB_NEE
     if (lightCount > 0 && !prev.delta) {
 #if RAYLAB_EMISSIVE_TRIANGLES
+#if RAYLAB_FEATURE_SPHERES
         float lightPdf = instances[hit.instance].info.x == INSTANCE_SPHERE
                              ? emitterLightPdf(prev.position, hit.position)
                              : triangleEmitterLightPdf(ray.dir, hit);
+#else
+        // No spheres: no sphere lights, and no per-lane read of the hit's instance (bench/mesh_rays.md).
+        float lightPdf = triangleEmitterLightPdf(ray.dir, hit);
+#endif
 #else
         float lightPdf = emitterLightPdf(prev.position, hit.position);   // only spheres are lights
 #endif
@@ -346,7 +351,7 @@ bool sampleLd(Hit hit, ShadingPoint sp, SkyParams sky, vec3 beta, int bounce, in
     Ray shadow = spawnRay(hit, ls.wi);
     float tMax = shadowRayEnd(k, shadow, ls.point);
     ++rays;
-    bool visible = tMax > 0.0f && !occluded(shadow, tMax);
+    bool visible = tMax > 0.0f && !occluded(shadow, tMax, leavingInstance(hit, ls.wi));
     if (visible) {
         float w = params.mis ? powerHeuristic(misPdf, bsdfPdf(sp.bsdf, sp.wo, wiL)) : 1.0f;
         Ld = beta * f * ls.L * (w / lightPdf);
@@ -382,6 +387,7 @@ BsdfSample sampleScattering(ShadingPoint sp, int bounce, inout Sampler smp) {
 // beta, the path throughput: the product of f·|cosθ|/pdf over the bounces so far.
 struct PathState {
     Ray ray;
+    uint leaving;           // the instance the ray leaves outwards (leavingInstance), or NO_INSTANCE
     vec3 radiance;
     vec3 beta;
     float survival;         // Russian roulette: the product of the survival probabilities so far
@@ -399,6 +405,7 @@ struct PathState {
 PathState pathStart(Ray ray) {
     PathState st;
     st.ray = ray;
+    st.leaving = NO_INSTANCE;
     st.radiance = vec3(0.0f);
     st.beta = vec3(1.0f);
     st.survival = 1.0f;
@@ -437,7 +444,7 @@ bool pathStep(inout PathState st, inout Sampler smp, inout uint rays) {
     Ray ray = st.ray;
     Hit hit;
     ++rays;
-    bool found = intersectScene(ray, hit);
+    bool found = intersectScene(ray, st.leaving, hit);
     RAYLAB_RECORD(recordSegment(bounce, ray, found, hit, st.beta));
     RAYLAB_RECORD(recordCounted(bounce, RAYLAB_KEEP_BOUNCE(bounce), RAYLAB_KEEP_BOUNCE(bounce + 1)));
     if (!found) {
@@ -505,6 +512,7 @@ bool pathStep(inout PathState st, inout Sampler smp, inout uint rays) {
     RAYLAB_RECORD(recordThroughput(bounce, st.beta, bs.delta));
     if (bounce + 1 >= params.rrDepth && !survivesRoulette(bounce, st, bs.delta, smp)) return true;
     st.ray = spawnRay(hit, dir);
+    st.leaving = leavingInstance(hit, dir);
     st.bounce = bounce + 1;
     return false;
 }

@@ -69,12 +69,9 @@ void recordSegment(int bounce, Ray ray, bool hitSomething, Hit hit, vec3 beta) {
     recordPut(bounce, PR_RR, vec4(0.0f, -1.0f, 0.0f, 0.0f));
     recordPut(bounce, PR_LIGHT, vec4(0.0f, 0.0f, 0.0f, -1.0f));
     if (!hitSomething) return;
-    // Which primitive: traced again, for the recorded pixel only (the Hit record has no ids).
-    TraceRecord rec;
-    traceScene(ray, FLOAT_MAX, false, rec);
-    recordPut(bounce, PR_POSITION, vec4(hit.position, float(rec.primitive)));
+    recordPut(bounce, PR_POSITION, vec4(hit.position, float(hit.primitive)));
     recordPut(bounce, PR_NORMAL, vec4(hit.normal, float(hit.material)));
-    recordPut(bounce, PR_SHADING, vec4(hit.shadingNormal, float(rec.instance)));
+    recordPut(bounce, PR_SHADING, vec4(hit.shadingNormal, float(hit.instance)));
 }
 
 void recordEmission(int bounce, vec3 Le, float w) { recordPut(bounce, PR_EMISSION, vec4(Le, w)); }

@@ -1,5 +1,7 @@
 #include "accel/scene_geometry.h"
 
+#include "accel/escape_sides.h"
+
 #include "scene/transform.h"
 
 #include <chrono>
@@ -57,6 +59,7 @@ SceneGeometry buildSceneGeometry(const Scene& scene, const BvhOptions& options) 
         g.meshRoot.push_back(nodeOffset);
         g.meshBounds.push_back(bvh.nodes.empty() ? Aabb{} : bvh.nodes[0].bounds);
         g.meshTriangles.emplace_back(triangleOffset, std::uint32_t(mesh.triangles.size()));
+        g.meshEscapeSides.push_back(meshEscapeSides(mesh));
         g.maxDepth = std::max(g.maxDepth, bvh.depth);
         weightedSah += bvh.sahCost() * double(mesh.triangles.size());
     }
@@ -86,7 +89,8 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
         const Sphere w = worldSphere(s);
         glsl::GpuInstance inst{};
         const unsigned objectId = unsigned(g.spheres.size());   // spheres first (instanceObjectId)
-        inst.info = glm::uvec4(glsl::INSTANCE_SPHERE, objectId, unsigned(s.material), objectId << 2u);
+        inst.info = glm::uvec4(glsl::INSTANCE_SPHERE, objectId, unsigned(s.material),
+                               glsl::INSTANCE_ESCAPES_FRONT | (objectId << glsl::INSTANCE_OBJECT_ID_SHIFT));
         g.spheres.push_back({glm::vec4(w.center, w.radius), glm::uvec4(unsigned(s.material), 0u, 0u, 0u)});
         // Widened by a few ulps: the rounded c ± r may fall just inside the sphere's extent.
         const glm::vec3 slack = 4.0f * 5.9604645e-8f * (glm::abs(w.center) + glm::vec3(w.radius));
@@ -102,9 +106,11 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
         glsl::GpuInstance inst{};
         rows(toObject, inst.worldToObject0, inst.worldToObject1, inst.worldToObject2);
         rows(toWorld, inst.objectToWorld0, inst.objectToWorld1, inst.objectToWorld2);
-        const unsigned flags = (mesh.normals.empty() ? 0u : 1u) | (mesh.uvs.empty() ? 0u : 2u);
+        const unsigned flags = (mesh.normals.empty() ? 0u : glsl::INSTANCE_HAS_NORMALS) |
+                               (mesh.uvs.empty() ? 0u : glsl::INSTANCE_HAS_UVS) | g.meshEscapeSides.at(m);
         const unsigned objectId = unsigned(scene.spheres.size() + m);   // then meshes
-        inst.info = glm::uvec4(glsl::INSTANCE_MESH, g.meshRoot.at(m), unsigned(mesh.material), flags | (objectId << 2u));
+        inst.info = glm::uvec4(glsl::INSTANCE_MESH, g.meshRoot.at(m), unsigned(mesh.material),
+                               flags | (objectId << glsl::INSTANCE_OBJECT_ID_SHIFT));
         Aabb world = transformedBounds(g.meshBounds.at(m), toWorld);
         if (!world.empty()) {
             // The rounded corners may sit a little inside the exact box: widen by a few ulps.
@@ -124,20 +130,10 @@ void updateTopLevel(SceneGeometry& g, const Scene& scene, const BvhOptions& opti
     for (const BvhNode& n : top.nodes) g.topNodes.push_back(gpuNode(n, 0u, 0u));
     g.instances.clear();
     for (std::uint32_t i : top.order) g.instances.push_back(objects[i]);
-    // Each sphere knows its instance, so the linear top level can loop over spheres directly, and
-    // holds the first mesh's transform, so instance 0 holds a mesh's (geometry_types.glsl).
-    const glsl::GpuInstance* firstMesh = objects.size() > scene.spheres.size() ? &objects[scene.spheres.size()] : nullptr;
+    // Each sphere knows its instance, so the linear top level can loop over spheres directly.
     for (std::size_t i = 0; i < g.instances.size(); ++i) {
-        glsl::GpuInstance& inst = g.instances[i];
-        if (inst.info.x != glsl::INSTANCE_SPHERE) continue;
-        g.spheres[inst.info.y].info.y = unsigned(i);
-        if (firstMesh == nullptr) continue;
-        inst.worldToObject0 = firstMesh->worldToObject0;
-        inst.worldToObject1 = firstMesh->worldToObject1;
-        inst.worldToObject2 = firstMesh->worldToObject2;
-        inst.objectToWorld0 = firstMesh->objectToWorld0;
-        inst.objectToWorld1 = firstMesh->objectToWorld1;
-        inst.objectToWorld2 = firstMesh->objectToWorld2;
+        const glsl::GpuInstance& inst = g.instances[i];
+        if (inst.info.x == glsl::INSTANCE_SPHERE) g.spheres[inst.info.y].info.y = unsigned(i);
     }
     g.topSahCost = top.sahCost();
     g.maxDepth = std::max(g.maxDepth, top.depth);

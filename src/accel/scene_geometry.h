@@ -21,6 +21,7 @@ struct SceneGeometry {
     std::vector<std::uint32_t> meshRoot;   // per mesh: its root node in meshNodes
     std::vector<Aabb> meshBounds;          // per mesh: object-space bounds
     std::vector<glm::uvec2> meshTriangles; // per mesh: its first triangle in triangles and its count
+    std::vector<unsigned> meshEscapeSides; // per mesh: INSTANCE_ESCAPES_* bits (accel/escape_sides.h)
     // The meshes' vertices are in world space, their transforms applied (GpuScene with
     // render/baked_mesh_transforms.h), and every instance is placed by the identity.
     bool meshesInWorld = false;

@@ -1,8 +1,8 @@
 #pragma once
 // A few small meshes placed by transforms of their own are uploaded with those transforms applied
 // to their vertices (Cycles does the same for objects that are not instanced), so every mesh is
-// placed by the identity and the tracer moves each ray into object space once, not once per
-// object (RAYLAB_SHARED_MESH_TRANSFORM; bench/mesh_rays.md, "Mesh transforms baked into positions").
+// placed by the identity and the tracer transforms neither rays nor hits (RAYLAB_MESHES_IN_WORLD;
+// bench/mesh_rays.md, "Mesh transforms baked into positions").
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>

@@ -208,6 +208,7 @@ void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     relativeTop_.meshRoot = meshes.meshRoot;
     relativeTop_.meshBounds = meshes.meshBounds;
     relativeTop_.meshTriangles = meshes.meshTriangles;
+    relativeTop_.meshEscapeSides = meshes.meshEscapeSides;
     updateTopLevel(relativeTop_, relative);
     std::swap(relativeTop_.triangles, meshes.triangles);
     std::swap(relativeTop_.vertices, meshes.vertices);

@@ -22,7 +22,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.smallMeshes = f.meshes;
     for (const Mesh& m : scene.meshes) f.smallMeshes &= m.triangles.size() <= kSmallMeshMax;
     // The GPU scene applies such meshes' transforms to their vertices: all are placed by the identity.
-    f.sharedMeshTransform = bakesMeshTransforms(scene);
+    f.meshesInWorld = bakesMeshTransforms(scene);
     f.showMipLevel = f.textures && scene.render.showMipLevel != 0;
     f.nee = scene.render.nee;
     f.generalBsdf = false;

@@ -31,6 +31,7 @@ struct SceneFeatures {
 
 // Up to this many objects the top level is a plain loop (bench/geometry.md measured it faster).
 constexpr std::size_t kLinearTopLevelMax = 16;
+static_assert(kLinearTopLevelMax <= 32, "the few-objects loop keeps a bit per object in a uint (bvh_traversal.glsl)");
 
 // Up to this many triangles a mesh of a few-object scene is searched without its BVH: its triangles
 // straight after its world box (RAYLAB_SMALL_MESHES; bench/mesh_rays.md measured it cheaper).

@@ -48,6 +48,7 @@ inline constexpr TracerDefine kTracerDefines[] = {
     {"RAYLAB_EXERCISE_THIN_LENS", "exercise/manifest.cpp"},
     {"RAYLAB_EXERCISE_RUNNING_MEAN", "exercise/manifest.cpp"},
     {"RAYLAB_INJECT_NONFINITE", "tests only (render/path_tracer_test.cpp)"},
+    {"RAYLAB_LEAVE_OUT_ESCAPED", "tests only (render/accel_render_test.cpp)"},
 };
 
 // `name`, checked at compile time against kTracerDefines.

@@ -348,28 +348,25 @@ TEST_F(BvhGpuTest, LinearTopLevelMatchesBruteForceWithAndWithoutMeshes) {
 }
 
 
-// Small meshes all placed by one transform (RAYLAB_SHARED_MESH_TRANSFORM): the tracer moves a ray
-// into their space once, by instance 0's rows, which a sphere holds when it comes first in the top
-// level. The same records as the brute force, and as every mesh's own transform would give.
-TEST_F(BvhGpuTest, MeshesSharingOneTransformMatchBruteForceWhateverInstanceComesFirst) {
+// Small meshes with their transforms baked into their vertices (RAYLAB_MESHES_IN_WORLD): every
+// mesh placed by the identity, rays and hits taken as they are, each lane's boxes noted first and
+// their triangles tested in one loop. The same records as the brute force.
+TEST_F(BvhGpuTest, MeshesInWorldMatchBruteForce) {
     Scene scene = randomScene(12, 9, 5, 12);
-    for (Mesh& m : scene.meshes) m.transform = scene.meshes[0].transform;
+    for (Mesh& m : scene.meshes) m.transform = scene.meshes[0].transform;   // together, where the rays go
     GpuScene gpu;
     gpu.upload(scene);
     const SceneGeometry& g = gpu.geometry();
-    ASSERT_EQ(g.instances[0].info.x, glsl::INSTANCE_SPHERE) << "seed chosen so that a sphere is instance 0";
-    const glsl::GpuInstance* mesh = nullptr;
-    for (const glsl::GpuInstance& inst : g.instances)
-        if (inst.info.x == glsl::INSTANCE_MESH) mesh = &inst;
-    ASSERT_NE(mesh, nullptr);
+    ASSERT_TRUE(g.meshesInWorld);
     for (const glsl::GpuInstance& inst : g.instances) {
-        EXPECT_EQ(inst.worldToObject0, mesh->worldToObject0);
-        EXPECT_EQ(inst.worldToObject2, mesh->worldToObject2);
-        EXPECT_EQ(inst.objectToWorld1, mesh->objectToWorld1);
+        if (inst.info.x != glsl::INSTANCE_MESH) continue;
+        EXPECT_EQ(inst.worldToObject0, glm::vec4(1, 0, 0, 0));
+        EXPECT_EQ(inst.worldToObject2, glm::vec4(0, 0, 1, 0));
+        EXPECT_EQ(inst.objectToWorld1, glm::vec4(0, 1, 0, 0));
     }
     const ShaderDefines defines = {{"RAYLAB_FEATURES_SPECIALISED", "1"}, {"RAYLAB_FEATURE_SPHERES", "1"},
                                    {"RAYLAB_FEATURE_MESHES", "1"},       {"RAYLAB_TOP_LEVEL_LINEAR", "1"},
-                                   {"RAYLAB_SMALL_MESHES", "1"},         {"RAYLAB_SHARED_MESH_TRANSFORM", "1"}};
+                                   {"RAYLAB_SMALL_MESHES", "1"},         {"RAYLAB_MESHES_IN_WORLD", "1"}};
     const std::vector<test::TestRay> rays = randomRays(79, 16000);
     const Agreement a = againstBruteForce(g, scene, rays, test::gpuTrace(gpu, rays, defines));
     EXPECT_EQ(a.hitMiss, 0);

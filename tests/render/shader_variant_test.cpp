@@ -33,10 +33,10 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     s.meshes.push_back(Mesh{});
     s.meshes[0].normals.push_back(glm::vec3(0, 0, 1));
     s.camera.aperture = 0.1f;
-    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes+one-transform");
+    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes+meshes-in-world");
     s.meshes.push_back(s.meshes[0]);
     s.meshes[1].transform.translation.x = 1.0f;
-    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes+one-transform")
+    EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof+few-objects+small-meshes+meshes-in-world")
         << "meshes placed by different transforms: baked into their vertices, all placed by the identity";
     for (int i = 0; i < 20; ++i) s.spheres.push_back(Sphere{});
     EXPECT_EQ(featureName(sceneFeatures(s)), "spheres+meshes+smooth+dof") << "many objects: top-level BVH";
@@ -85,7 +85,7 @@ TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore
     expected.emplace_back("RAYLAB_FEATURE_TEXTURES", "1");
     if (f.linearTopLevel) expected.emplace_back("RAYLAB_TOP_LEVEL_LINEAR", "1");
     if (f.linearTopLevel && f.smallMeshes) expected.emplace_back("RAYLAB_SMALL_MESHES", "1");
-    if (f.sharedMeshTransform) expected.emplace_back("RAYLAB_SHARED_MESH_TRANSFORM", "1");
+    if (f.meshesInWorld) expected.emplace_back("RAYLAB_MESHES_IN_WORLD", "1");
     if (f.nee) expected.emplace_back("RAYLAB_NEE", "1");
     if (f.generalBsdf) expected.emplace_back("RAYLAB_GENERAL_BSDF", "1");
     if (f.adaptive) expected.emplace_back("RAYLAB_ADAPTIVE", "1");

@@ -127,11 +127,11 @@ TEST_F(ViewerMeshTest, MovingAMeshPlacesItsBakedTrianglesAgainAndTheObjectMovesI
     ASSERT_TRUE(viewer->document().set("objects." + std::to_string(block) + ".transform.translation", "[-200, 0, 0]"));
     // The box's small meshes have their transforms baked into their vertices
     // (render/baked_mesh_transforms.h): a move places their few triangles again, keeps the
-    // one-transform variant and compiles nothing.
+    // meshes-in-world variant and compiles nothing.
     EXPECT_EQ(gpu.meshBvhBuilds(), builds + 1) << "the baked triangles are placed again";
     EXPECT_EQ(gpu.topLevelUpdates(), updates + 1);
     EXPECT_EQ(viewer->tracer()->compiledVariants(), compiled) << "the same features: no compile";
-    EXPECT_NE(viewer->shaderVariant().find("one-transform"), std::string::npos) << viewer->shaderVariant();
+    EXPECT_NE(viewer->shaderVariant().find("meshes-in-world"), std::string::npos) << viewer->shaderVariant();
     ASSERT_TRUE(viewer->document().set("objects." + std::to_string(block) + ".transform.translation", "[-201, 0, 0]"));
     ASSERT_TRUE(viewer->document().set("objects." + std::to_string(block) + ".transform.translation", "[-200, 0, 0]"));
     EXPECT_EQ(gpu.meshBvhBuilds(), builds + 3);
