@@ -6,7 +6,6 @@
 //   GpuTriangle triangleAt(uint i); GpuVertex vertexAt(uint i); GpuSphere sphereAt(uint i);
 //   uint instanceCount(); uvec4 instanceInfo(uint i); vec3 instanceWorldMin(uint i);
 //   vec3 instanceWorldMax(uint i); uvec2 instanceTriangleRange(uint i) (first, count); uint sphereCount();
-//   uvec2 instanceTrianglesAt(uint i) (instanceTriangleRange for an index that differs between lanes)
 // (GLSL: scene_geometry.glsl reads buffers; C++: accel/cpu_traversal.h reads vectors), and may
 // define RL_COUNT_BOX() / RL_COUNT_TRIANGLE() to count tests (heat maps).
 #ifndef RAYLAB_BVH_TRAVERSAL_GLSL
@@ -120,13 +119,14 @@ RL_FN Ray objectRay(GpuInstance inst, Ray ray, RL_OUT(float) dt) {
 #if RAYLAB_MESHES_IN_WORLD
     dt = 0.0f;   // placed by the identity: object space is world space, nothing is rounded
     return ray;
-#endif
+#else
     vec3 o = transformPoint(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin);
     vec3 d = transformVector(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.dir);
     vec3 oError = transformPointError(inst.worldToObject0, inst.worldToObject1, inst.worldToObject2, ray.origin,
                                       vec3(0.0f));
     dt = dot(abs(d), oError) / dot(d, d);
     return Ray(o + dt * d, d);
+#endif
 }
 #endif
 
@@ -184,17 +184,14 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
     vec3 invDir = safeInverseDir(ray.dir);
     uint count = instanceCount();
 #if RAYLAB_MESHES_IN_WORLD && !RAYLAB_COUNT_TRAVERSAL
-    // Every mesh in world space: the ray is sheared for the triangle test once (bench/mesh_rays.md).
-    // Each lane first notes the objects whose boxes its ray meets, then tests their triangles one
-    // per iteration of one loop, which lasts as long as the lane with the most triangles to test.
-    // Looping over objects instead, llvmpipe ran every object's triangle loop for all eight lanes
-    // once any lane met its box, and at least one iteration of it when none did ("A ray does not
-    // search the object it leaves").
+    // Every mesh in world space: the ray is sheared for the triangle test once. Each lane notes
+    // the objects whose boxes its ray meets, then tests their triangles in one loop, so an object
+    // costs only the lanes that meet it: SIMD lanes run an object loop's every branch together
+    // (bench/mesh_rays.md, "A ray does not search the object it leaves").
     TriangleRay triRay = triangleRay(ray);
     uint pending = 0u;   // bit i: instance i's box is met (kLinearTopLevelMax <= 32)
     for (uint i = 0u; i < count; ++i) {
         if (instanceInfo(i).x != INSTANCE_MESH || i == leaving) continue;
-        RL_COUNT_BOX();
         if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) >= 0.0f) pending |= 1u << i;
     }
     uint instance = 0u;
@@ -204,9 +201,9 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
         if (next == end) {
             instance = uint(findLSB(pending));
             pending &= pending - 1u;
-            uvec2 range = instanceTrianglesAt(instance);   // first, count
-            next = range.x;
-            end = range.x + range.y;
+            GpuInstance inst = instanceAt(instance);   // only the triangle range is read
+            next = instanceFirstTriangle(inst);
+            end = next + instanceTriangleCount(inst);
         }
         if (next < end) {
             GpuTriangle tri = triangleAt(next);

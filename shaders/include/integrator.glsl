@@ -117,8 +117,8 @@ float triangleEmitterLightPdf(vec3 d, Hit hit) {
 // with emission_sides front.
 bool emitterBackFace(vec3 rayDir, Hit hit) {
 #if RAYLAB_ONE_SIDED_EMITTERS
-    return (RAYLAB_FEATURE_SPHERES == 0 || instances[hit.instance].info.x == INSTANCE_MESH) && (triangleLightIndex[hit.primitive] & TRIANGLE_FRONT_ONLY) != 0u &&
-           dot(rayDir, hit.normal) >= 0.0f;
+    return (RAYLAB_FEATURE_SPHERES == 0 || instances[hit.instance].info.x == INSTANCE_MESH) &&
+           (triangleLightIndex[hit.primitive] & TRIANGLE_FRONT_ONLY) != 0u && dot(rayDir, hit.normal) >= 0.0f;
 #else
     return false;
 #endif

@@ -44,11 +44,6 @@ uvec4 instanceInfo(uint i) { return instances[i].info; }
 vec3 instanceWorldMin(uint i) { return instances[i].worldMin.xyz; }
 vec3 instanceWorldMax(uint i) { return instances[i].worldMax.xyz; }
 uvec2 instanceTriangleRange(uint i) { return floatBitsToUint(vec2(instances[i].worldMin.w, instances[i].worldMax.w)); }
-// The same for a per-lane index: two texel gathers for eight lanes (worldMin.w, worldMax.w).
-uvec2 instanceTrianglesAt(uint i) {
-    uint b = INSTANCE_TEXELS * i;
-    return uvec2(texelFetch(instanceTexels, int(b + 6u)).w, texelFetch(instanceTexels, int(b + 7u)).w);
-}
 uint sphereCount() { return uint(spheres.length()); }
 
 #if RAYLAB_COUNT_TRAVERSAL

@@ -29,7 +29,6 @@ inline uvec2 instanceTriangleRange(uint i) {
     const GpuInstance& inst = cpuTraversal.geometry->instances[i];
     return uvec2(instanceFirstTriangle(inst), instanceTriangleCount(inst));
 }
-inline uvec2 instanceTrianglesAt(uint i) { return instanceTriangleRange(i); }
 inline uint sphereCount() { return uint(cpuTraversal.geometry->spheres.size()); }
 
 } // namespace raylab::glsl

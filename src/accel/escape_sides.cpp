@@ -2,8 +2,6 @@
 
 #include "shaders/include/geometry_types.glsl"
 
-#include <algorithm>
-#include <cmath>
 #include <vector>
 
 namespace raylab {
