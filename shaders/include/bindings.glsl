@@ -50,6 +50,7 @@
 #define BINDING_DEBUG_PARAMS_UBO 1     // the debug views' parameters
 #define BINDING_DISPLAY_PARAMS_UBO 2   // the display pass's parameters
 #define BINDING_ANALYTIC_LIGHTS_UBO 3  // point, spot and distant lights (analytic_lights.glsl)
+#define BINDING_FEW_OBJECTS_UBO 4      // with few objects, their boxes and spheres (few_objects.glsl)
 
 // Programs of their own: the self-test's sampler (entry/bsdf_samples.comp), test shaders and the
 // exercise probe (entry/exercise_probe.comp).

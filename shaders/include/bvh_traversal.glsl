@@ -162,13 +162,17 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
     bool found = false;
 #if RAYLAB_TOP_LEVEL_LINEAR
     // Few objects: plain loops beat the top-level traversal's stack and box tests (measured in
-    // bench/geometry.md); loop bounds are buffer lengths, the same in every lane. Spheres are read
-    // by the loop counter, an index llvmpipe knows is uniform: one load per sphere instead of a
-    // per-lane gather through the instance record (bench/throughput.md).
+    // bench/geometry.md). Their trip counts are the scene's (RAYLAB_OBJECT_COUNT), and they read
+    // the spheres and boxes from a uniform block by the loop counter (few_objects.glsl): one load
+    // for all lanes.
 #if RAYLAB_FEATURE_SPHERES
+#if RAYLAB_OBJECT_COUNT > 0
+    const uint sphereTotal = uint(RAYLAB_SPHERE_COUNT);
+#else
     uint sphereTotal = sphereCount();
+#endif
     for (uint k = 0u; k < sphereTotal; ++k) {
-        GpuSphere s = sphereAt(k);   // not left out when leaving: that branch costs more than the test (bench/mesh_rays.md)
+        GpuSphere s = fewSpheres[k];   // not left out when leaving: that branch costs more than the test (bench/mesh_rays.md)
         float t = intersectSphere(ray, xyzOf(s.centerRadius), s.centerRadius.w, 0.0f, rec.t);
         if (t > 0.0f) {
             rec = TraceRecord(t, s.info.y, k, 0.0f, 0.0f);
@@ -178,21 +182,24 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
     }
 #endif
 #if RAYLAB_FEATURE_MESHES
-    // The object's world box first: it is read by the loop counter (one load for all lanes) and
-    // spares a ray the instance transform and the per-lane read of the mesh's root for every
-    // object it passes by.
+    // The object's world box first: it spares a ray the per-lane reads of the mesh's records for
+    // every object it passes by.
     vec3 invDir = safeInverseDir(ray.dir);
+#if RAYLAB_OBJECT_COUNT > 0
+    const uint count = uint(RAYLAB_OBJECT_COUNT);
+#else
     uint count = instanceCount();
+#endif
 #if RAYLAB_MESHES_IN_WORLD && !RAYLAB_COUNT_TRAVERSAL
     // Every mesh in world space: the ray is sheared for the triangle test once. Each lane notes
     // the objects whose boxes its ray meets, then tests their triangles in one loop, so an object
     // costs only the lanes that meet it: SIMD lanes run an object loop's every branch together
     // (bench/mesh_rays.md, "A ray does not search the object it leaves").
     TriangleRay triRay = triangleRay(ray);
-    uint pending = 0u;   // bit i: instance i's box is met (kLinearTopLevelMax <= 32)
+    uint pending = 0u;   // bit i: instance i's box is met (FEW_OBJECTS_MAX <= 32)
     for (uint i = 0u; i < count; ++i) {
-        if (instanceInfo(i).x != INSTANCE_MESH || i == leaving) continue;
-        if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) >= 0.0f) pending |= 1u << i;
+        if (!fewObjectIsMesh(i) || i == leaving) continue;
+        if (intersectBox(ray.origin, invDir, fewObjectMin[i].xyz, fewObjectMax[i].xyz, rec.t) >= 0.0f) pending |= 1u << i;
     }
     uint instance = 0u;
     uint next = 0u;   // the lane's next triangle, and the end of its object's
@@ -218,9 +225,9 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
     }
 #else
     for (uint i = 0u; i < count; ++i) {
-        if (instanceInfo(i).x != INSTANCE_MESH || i == leaving) continue;
+        if (!fewObjectIsMesh(i) || i == leaving) continue;
         RL_COUNT_BOX();
-        if (intersectBox(ray.origin, invDir, instanceWorldMin(i), instanceWorldMax(i), rec.t) < 0.0f) continue;
+        if (intersectBox(ray.origin, invDir, fewObjectMin[i].xyz, fewObjectMax[i].xyz, rec.t) < 0.0f) continue;
 #if RAYLAB_SMALL_MESHES && !RAYLAB_COUNT_TRAVERSAL
         // A few triangles: tested straight after the world box, without the mesh BVH's root read,
         // box test and walk (bench/mesh_rays.md). The heat views count the BVH's own tests.

@@ -61,6 +61,17 @@
 #error "compiled without the scene's feature defines: pass featureDefines() (render/shader_variant.h)"
 #endif
 
+// With few objects (RAYLAB_TOP_LEVEL_LINEAR) the host fixes how many there are (spheres and meshes)
+// and how many of them are spheres, so the object loops have trip counts the compiler knows: they
+// are unrolled, and each object's record is read from the few-objects block (few_objects.glsl) at
+// a constant offset (bench/mesh_rays.md, "Few objects in a uniform block"). 0: the loops read the
+// buffers' lengths.
+#ifndef RAYLAB_OBJECT_COUNT
+#define RAYLAB_OBJECT_COUNT 0
+#endif
+#ifndef RAYLAB_SPHERE_COUNT
+#define RAYLAB_SPHERE_COUNT 0
+#endif
 // The teaching stages of render.stage (scene.h RenderStage): each adds to the one before. The host
 // sets RAYLAB_STAGE to one of them; test shaders of the geometry alone may leave it out.
 #define RAYLAB_STAGE_PRIMARY 0    // flat albedo of the first hit

@@ -8,6 +8,7 @@
 #include "geometry_types.glsl"
 #include "scene_data.glsl"
 #include "estimator_stages.glsl"
+#include "few_objects.glsl"
 
 layout(std430, binding = BINDING_TOP_NODES) readonly buffer TopNodeBuffer { GpuBvhNode topNodes[]; };
 layout(std430, binding = BINDING_MESH_NODES) readonly buffer MeshNodeBuffer { GpuBvhNode meshNodes[]; };
@@ -45,6 +46,15 @@ vec3 instanceWorldMin(uint i) { return instances[i].worldMin.xyz; }
 vec3 instanceWorldMax(uint i) { return instances[i].worldMax.xyz; }
 uvec2 instanceTriangleRange(uint i) { return floatBitsToUint(vec2(instances[i].worldMin.w, instances[i].worldMax.w)); }
 uint sphereCount() { return uint(spheres.length()); }
+#if RAYLAB_TOP_LEVEL_LINEAR
+// Few objects' boxes and spheres (few_objects.glsl), read by the loops over them.
+layout(std140, binding = BINDING_FEW_OBJECTS_UBO) uniform FewObjectsBlock {
+    vec4 fewObjectMin[FEW_OBJECTS_MAX];   // w: 1 for a mesh
+    vec4 fewObjectMax[FEW_OBJECTS_MAX];
+    GpuSphere fewSpheres[FEW_OBJECTS_MAX];
+};
+bool fewObjectIsMesh(uint i) { return fewObjectMin[i].w != 0.0f; }
+#endif
 
 #if RAYLAB_COUNT_TRAVERSAL
 layout(std430, binding = BINDING_TRAVERSAL_COUNTERS) buffer TraversalCounters {

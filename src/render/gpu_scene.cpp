@@ -4,6 +4,7 @@
 #include "render/baked_mesh_transforms.h"
 #include "render/camera_relative.h"
 #include "render/environment_distribution.h"
+#include "render/few_objects.h"
 #include "render/light_list.h"
 #include "shaders/include/bindings.glsl"
 #include "shaders/include/bsdf.glsl"
@@ -34,6 +35,9 @@ static_assert(sizeof(glsl::GpuBvhNode) == 16 * glsl::BVH_NODE_TEXELS && sizeof(g
               sizeof(glsl::GpuTriangle) == 16 * glsl::TRIANGLE_TEXELS);
 // std140 offsets of AnalyticLightBlock: vec4s only.
 static_assert(sizeof(glsl::GpuAnalyticLight) == 48 && offsetof(glsl::AnalyticLightBlock, lights) == 16);
+// std140 offsets of FewObjectsBlock: arrays of vec4s and of a struct of two.
+static_assert(sizeof(glsl::GpuSphere) == 32 && offsetof(glsl::FewObjectsBlock, boxMax) == 16 * glsl::FEW_OBJECTS_MAX &&
+              offsetof(glsl::FewObjectsBlock, spheres) == 32 * glsl::FEW_OBJECTS_MAX);
 
 // geometryBuffers_ in order: top nodes, mesh nodes, instances, triangles, vertices.
 constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, BINDING_INSTANCES,
@@ -85,6 +89,7 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &lightAliasBuffer_);
     glCreateBuffers(1, &triangleLightIndexBuffer_);
     glCreateBuffers(1, &analyticLightBuffer_);
+    glCreateBuffers(1, &fewObjectsBuffer_);
 }
 
 GpuScene::~GpuScene() {
@@ -92,6 +97,7 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &materialBuffer_);
     glDeleteBuffers(1, &lightBuffer_);
     glDeleteBuffers(1, &analyticLightBuffer_);
+    glDeleteBuffers(1, &fewObjectsBuffer_);
     glDeleteTextures(1, &skyMapTexture_);
     glDeleteBuffers(1, &envMarginalBuffer_);
     glDeleteBuffers(1, &envConditionalBuffer_);
@@ -235,6 +241,8 @@ void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     glNamedBufferData(analyticLightBuffer_, sizeof block, &block, GL_STATIC_DRAW);
     uploadBuffer(geometryBuffers_[0], relativeTop_.topNodes);
     uploadBuffer(geometryBuffers_[2], relativeTop_.instances);
+    const glsl::FewObjectsBlock few = fewObjectsBlock(relativeTop_);
+    glNamedBufferData(fewObjectsBuffer_, sizeof few, &few, GL_STATIC_DRAW);
     attachGeometryTexels(0);
     attachGeometryTexels(2);
 }
@@ -277,6 +285,7 @@ void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_LIGHT_ALIAS, lightAliasBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHT_INDEX, triangleLightIndexBuffer_);
     glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_ANALYTIC_LIGHTS_UBO, analyticLightBuffer_);
+    glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FEW_OBJECTS_UBO, fewObjectsBuffer_);
 }
 
 } // namespace raylab

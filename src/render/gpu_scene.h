@@ -30,6 +30,7 @@ public:
     void bind() const;   // binds every buffer to its binding point
 
     int sphereCount() const { return sphereCount_; }
+    int instanceCount() const { return int(relativeTop_.instances.size()); }   // spheres and meshes
     int lightCount() const { return lightCount_; }   // emissive spheres
     int triangleLightCount() const { return triangleLightCount_; }   // emissive triangles (with area)
     int analyticLightCount() const { return analyticLightCount_; }   // point, spot, distant lights that emit
@@ -83,6 +84,7 @@ private:
     std::vector<double> lightPower_;
     unsigned triangleLightIndexBuffer_ = 0;   // per triangle 1 + its light index, 0 none
     unsigned analyticLightBuffer_ = 0;        // uniform block of point, spot and distant lights
+    unsigned fewObjectsBuffer_ = 0;           // uniform block of the few-objects loops (render/few_objects.h)
     int analyticLightCount_ = 0;
     unsigned textureBuffers_[2] = {};    // texels, texture info
 };

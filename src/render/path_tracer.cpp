@@ -163,6 +163,9 @@ void PathTracer::updateSettings(const Scene& scene) {
     adaptive_ = features_.adaptive;
     allocateAdaptiveImages();
     program_ = &variants_.get(featureDefines(features_), &PathTracer::compileVariant, this);
+    if (features_.linearTopLevel &&
+        (features_.objectCount != gpuScene_.instanceCount() || features_.sphereCount != gpuScene_.sphereCount()))
+        throw std::logic_error("path tracer: the variant's object counts are not the scene's");
     // The variant's search, not the scene's key: the unspecialised tracer always walks the BVH.
     const std::uint64_t flatIterations =
         features_.accel == Accel::Bvh ? 0 : flatLoopIterationsPerSample(scene, features_.flatSteps);

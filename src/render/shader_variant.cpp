@@ -19,6 +19,8 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.depthOfField = scene.camera.aperture > 0.0f;
     f.textures = !scene.textures.empty();
     f.linearTopLevel = scene.spheres.size() + scene.meshes.size() <= kLinearTopLevelMax;
+    f.objectCount = f.linearTopLevel ? int(scene.spheres.size() + scene.meshes.size()) : 0;
+    f.sphereCount = f.linearTopLevel ? int(scene.spheres.size()) : 0;
     f.smallMeshes = f.meshes;
     for (const Mesh& m : scene.meshes) f.smallMeshes &= m.triangles.size() <= kSmallMeshMax;
     // The GPU scene applies such meshes' transforms to their vertices: all are placed by the identity.
@@ -84,6 +86,8 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     d.emplace_back(tracerDefine("RAYLAB_GGX_SAMPLING"), std::to_string(int(f.ggxSampling)));
     d.emplace_back(tracerDefine("RAYLAB_ACCEL"), std::to_string(int(f.accel)));
     d.emplace_back(tracerDefine("RAYLAB_FLAT_STEPS"), f.usesFlatSteps() ? "1" : "0");
+    d.emplace_back(tracerDefine("RAYLAB_OBJECT_COUNT"), std::to_string(f.linearTopLevel ? f.objectCount : 0));
+    d.emplace_back(tracerDefine("RAYLAB_SPHERE_COUNT"), std::to_string(f.linearTopLevel ? f.sphereCount : 0));
     return d;
 }
 

@@ -5,6 +5,7 @@
 #include "gl/shader_program.h"
 #include "scene/scene.h"
 #include "shaders/include/features.glsl"
+#include "shaders/include/few_objects.glsl"
 
 #include <cstdint>
 #include <map>
@@ -24,13 +25,16 @@ struct SceneFeatures {
     GgxSampling ggxSampling = GgxSampling(RAYLAB_GGX_SAMPLING);                   // RAYLAB_GGX_SAMPLING
     Accel accel = Accel(RAYLAB_ACCEL);                                            // RAYLAB_ACCEL
     bool flatSteps = RAYLAB_FLAT_STEPS;   // boxes/none with a large mesh: RAYLAB_FLAT_STEPS
+    // With few objects their number and how many are spheres, else 0: RAYLAB_OBJECT_COUNT, _SPHERE_COUNT.
+    int objectCount = RAYLAB_OBJECT_COUNT;
+    int sphereCount = RAYLAB_SPHERE_COUNT;
     static constexpr bool always = true;   // the `needs` of a feature without a prerequisite
     bool usesFlatSteps() const { return flatSteps && accel != Accel::Bvh; }   // the BVH has no flat search
     bool operator==(const SceneFeatures&) const = default;
 };
 
 // Up to this many objects the top level is a plain loop (bench/geometry.md measured it faster).
-constexpr std::size_t kLinearTopLevelMax = 16;
+constexpr std::size_t kLinearTopLevelMax = std::size_t(glsl::FEW_OBJECTS_MAX);
 static_assert(kLinearTopLevelMax <= 32, "the few-objects loop keeps a bit per object in a uint (bvh_traversal.glsl)");
 
 // Up to this many triangles a mesh of a few-object scene is searched without its BVH: its triangles

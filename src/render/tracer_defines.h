@@ -27,6 +27,8 @@ inline constexpr TracerDefine kTracerDefines[] = {
     {"RAYLAB_GGX_SAMPLING", "render/shader_variant.cpp"},
     {"RAYLAB_ACCEL", "render/shader_variant.cpp"},
     {"RAYLAB_FLAT_STEPS", "render/shader_variant.cpp"},
+    {"RAYLAB_OBJECT_COUNT", "render/shader_variant.cpp"},
+    {"RAYLAB_SPHERE_COUNT", "render/shader_variant.cpp"},
     // The compute entry's work-group size (render/path_tracer.cpp).
     {"LOCAL_SIZE_X", "render/path_tracer.cpp", true},
     {"LOCAL_SIZE_Y", "render/path_tracer.cpp", true},

@@ -2,6 +2,7 @@
 // against brute force on random scenes of spheres and transformed meshes.
 #include "accel/bvh.h"
 #include "accel/cpu_traversal.h"
+#include "shaders/include/few_objects.glsl"
 #include "scene/transform.h"
 #include "scene/scene_loader.h"
 #include "support/gl_test.h"
@@ -321,12 +322,14 @@ TEST_F(BvhGpuTest, GpuTraversalMatchesBruteForceNearestAndShadow) {
     EXPECT_EQ(primitiveMismatch, 0);
 }
 
-// The linear top level (few objects) loops over the sphere buffer directly and names each hit's
-// instance through the sphere's back-link: the same records as the brute force, with and
-// without meshes in the shader.
+// The linear top level (few objects) loops over the spheres and boxes of its uniform block
+// (few_objects.glsl) and names each hit's instance through the sphere's back-link: the same
+// records as the brute force, with and without meshes in the shader, for as many objects as the
+// block holds.
 TEST_F(BvhGpuTest, LinearTopLevelMatchesBruteForceWithAndWithoutMeshes) {
     for (const int meshes : {0, 3}) {
-        const Scene scene = randomScene(11, 30, meshes, 60);
+        const Scene scene = randomScene(11, glsl::FEW_OBJECTS_MAX - meshes, meshes, 60);
+        ASSERT_EQ(scene.spheres.size() + scene.meshes.size(), std::size_t(glsl::FEW_OBJECTS_MAX));
         GpuScene gpu;
         gpu.upload(scene);
         const SceneGeometry& g = gpu.geometry();

@@ -30,11 +30,12 @@ bool onLlvmpipe() {
 }
 
 // A closed box of triangles around the camera whose walls glow and reflect 99.9 %: with roulette
-// off, every path makes all 256 bounces, each a traversal of the mesh, so a draw of 16 samples
-// runs out of the driver's loop budget (one of 1024 bounces runs out alone).
+// off, every path makes all 512 bounces, each a loop over the mesh's 12 triangles, so a draw of 16
+// samples runs out of the driver's loop budget (16 × 512 × 12 > 65535; the loop over the one
+// object is unrolled, RAYLAB_OBJECT_COUNT).
 constexpr const char* kClosedBox = R"({
   "camera": {"position": [0, 0, 0], "look_at": [0, 0, 1], "fov": 60},
-  "render": {"width": 8, "height": 8, "rpp": 16, "spp": 32, "max_bounces": 256, "rr_depth": 256,
+  "render": {"width": 8, "height": 8, "rpp": 16, "spp": 32, "max_bounces": 512, "rr_depth": 512,
              "nee": false, "sampler": "independent"},
   "sky": {"type": "constant", "color": 0},
   "materials": {"wall": {"albedo": 0.999, "emission": 1, "strength": 0.001}},

@@ -13,12 +13,20 @@ using namespace raylab;
 namespace {
 
 // The defines of the features that are on (featureDefines emits the others as 0); the stage and
-// the sampler are choices, not features.
+// the sampler are choices, the object counts numbers, not features.
 ShaderDefines on(const ShaderDefines& defines) {
     ShaderDefines d;
     for (const auto& define : defines)
-        if (define.second != "0" && define.first != "RAYLAB_STAGE" && define.first != "RAYLAB_SAMPLER") d.push_back(define);
+        if (define.second != "0" && define.first != "RAYLAB_STAGE" && define.first != "RAYLAB_SAMPLER" &&
+            define.first != "RAYLAB_OBJECT_COUNT" && define.first != "RAYLAB_SPHERE_COUNT")
+            d.push_back(define);
     return d;
+}
+
+std::string defineValue(const ShaderDefines& defines, const std::string& name) {
+    for (const auto& [n, value] : defines)
+        if (n == name) return value;
+    return "absent";
 }
 
 } // namespace
@@ -48,6 +56,23 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     // 5 geometry features + NEE, BSDF, sky map + roughness, metallic, emission, specular textures,
     // wrap modes + triangle lights, light power selection + point/spot/distant lights, one-sided emitters
     EXPECT_EQ(on(featureDefines(allFeatures())).size(), 18u);
+}
+
+// With few objects the variant fixes their number and the spheres' (the loops' trip counts); with
+// the top-level BVH both are 0, the loops reading the buffers' lengths.
+TEST(ShaderVariant, FewObjectsFixTheirCounts) {
+    const auto counts = [](const Scene& s) {
+        const ShaderDefines d = featureDefines(sceneFeatures(s));
+        return defineValue(d, "RAYLAB_OBJECT_COUNT") + "/" + defineValue(d, "RAYLAB_SPHERE_COUNT");
+    };
+    Scene box = loadScene(test::scenePath("cornell_box.json"));
+    EXPECT_EQ(counts(box), "8/0") << "eight meshes";
+    box.spheres.push_back(Sphere{});
+    EXPECT_EQ(counts(box), "9/1");
+    EXPECT_EQ(counts(loadScene(test::scenePath("default.json"))), "8/8");
+    for (int i = 0; i < 20; ++i) box.spheres.push_back(Sphere{});
+    EXPECT_EQ(counts(box), "0/0") << "many objects: the top-level BVH";
+    EXPECT_EQ(defineValue(featureDefines(allFeatures()), "RAYLAB_OBJECT_COUNT"), "0");
 }
 
 // A scene of few objects whose meshes all have at most kSmallMeshMax triangles searches them
