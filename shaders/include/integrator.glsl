@@ -77,21 +77,12 @@ int neeLightCount() { return 0; }
 #endif
 
 // Density with which next-event estimation would have produced the direction from p that hit
-// the emitter at q (an emissive sphere's surface): found as the light whose surface q lies on.
-float emitterLightPdf(vec3 p, vec3 q) {
-    int best = -1;
-    float bestMiss = FLOAT_MAX;
-    for (int i = 0; i < params.lightCount; ++i) {
-        vec4 s = lights[i].centerRadius;
-        float miss = abs(length(q - s.xyz) - s.w) / s.w;
-        if (miss < bestMiss) {
-            bestMiss = miss;
-            best = i;
-        }
-    }
-    if (best < 0 || bestMiss > 1e-3f) return 0.0f;
-    vec4 s = lights[best].centerRadius;
-    return sphereConePdf(p, s.xyz, s.w) * boundedLightPmf(best);
+// sphere k: the light that sphere is (its record's info.z, 1 + its index; 0 for none), by its cone.
+float emitterLightPdf(vec3 p, uint k) {
+    uint light = sphereAt(k).info.z;
+    if (light == 0u) return 0.0f;
+    vec4 s = lights[light - 1u].centerRadius;
+    return sphereConePdf(p, s.xyz, s.w) * boundedLightPmf(int(light - 1u));
 }
 
 // The same for a ray from p (direction d, not unit) that hit a triangle: the light that triangle is
@@ -177,14 +168,14 @@ float surfaceHitWeight(Ray ray, Hit hit, PrevBounce prev, int lightCount) {
 #if RAYLAB_EMISSIVE_TRIANGLES
 #if RAYLAB_FEATURE_SPHERES
         float lightPdf = instances[hit.instance].info.x == INSTANCE_SPHERE
-                             ? emitterLightPdf(prev.position, hit.position)
+                             ? emitterLightPdf(prev.position, hit.primitive)
                              : triangleEmitterLightPdf(ray.dir, hit);
 #else
         // No spheres: no sphere lights, and no per-lane read of the hit's instance (bench/mesh_rays.md).
         float lightPdf = triangleEmitterLightPdf(ray.dir, hit);
 #endif
 #else
-        float lightPdf = emitterLightPdf(prev.position, hit.position);   // only spheres are lights
+        float lightPdf = emitterLightPdf(prev.position, hit.primitive);   // only spheres are lights
 #endif
         w = bsdfHitWeight(prev.pdf, lightPdf);
     }

@@ -8,7 +8,8 @@ RL_NAMESPACE_BEGIN
 
 struct GpuSphere {
     vec4 centerRadius;   // xyz centre, w radius
-    uvec4 info;          // x material index; y its instance (top-level order); zw unused
+    uvec4 info;          // x material index; y its instance (top-level order); z 1 + its index
+                         // among the sphere lights, 0 for none (the GPU scene's); w unused
 };
 
 struct GpuMaterial {

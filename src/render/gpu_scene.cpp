@@ -222,6 +222,7 @@ void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     std::swap(relativeTop_.triangles, meshes.triangles);
     std::swap(relativeTop_.vertices, meshes.vertices);
 
+    for (std::size_t k = 0; k < relativeTop_.spheres.size(); ++k) relativeTop_.spheres[k].info.z = lights.sphereLightIndex.at(k);
     sphereCount_ = int(relativeTop_.spheres.size());
     uploadBuffer(sphereBuffer_, relativeTop_.spheres);
     lightCount_ = int(lights.spheres.size());

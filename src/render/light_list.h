@@ -65,6 +65,9 @@ struct LightList {
     // Per triangle of SceneGeometry::triangles: 1 + its index in `triangles`, 0 if it is no light
     // (not emissive, or no area), plus TRIANGLE_FRONT_ONLY when it emits on the front alone.
     std::vector<std::uint32_t> triangleLightIndex;
+    // Per sphere of SceneGeometry::spheres: 1 + its index in `spheres`, 0 if it is no light; the
+    // GPU scene writes it into the sphere's record (GpuSphere info.z).
+    std::vector<std::uint32_t> sphereLightIndex;
 };
 
 // Whether the scene's lights (emissive spheres, emissive triangles with area, point and spot

@@ -104,6 +104,40 @@ TEST(LightList, TrianglesArePlacedByTheirTransformAndSpheresComeFirst) {
     int lit = 0;
     for (size_t i = 1; i < 3; ++i) lit += lights.triangleLightIndex[i] == 1u ? 1 : 0;
     EXPECT_EQ(lit, 1);
+    // Each sphere knows its light (1 + index; 0: none), which an emitter hit's MIS weight reads.
+    ASSERT_EQ(lights.sphereLightIndex.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+        const bool lamp = g.spheres[k].centerRadius.x == 0.0f;
+        EXPECT_EQ(lights.sphereLightIndex[k], lamp ? 1u : 0u) << k;
+    }
+}
+
+// Spheres in the top level's order, lights among them in that order: each knows its own, which
+// the GPU scene writes into its record (GpuSphere info.z) for an emitter hit's MIS weight.
+TEST(LightList, EachSphereKnowsItsLight) {
+    Scene scene = parseScene(R"({
+      "materials": { "lamp": { "emission": 1, "strength": 1 }, "matte": { "albedo": 0.5 } },
+      "objects": [
+        { "type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "matte" },
+        { "type": "sphere", "center": [3, 0, 0], "radius": 0.5, "material": "lamp" },
+        { "type": "sphere", "center": [6, 0, 0], "radius": 0.5, "material": "lamp" },
+        { "type": "sphere", "center": [9, 0, 0], "radius": 0.5, "material": "matte" }
+      ] })", "spheres.json");
+    const SceneGeometry g = buildSceneGeometry(scene);
+    std::vector<glm::vec3> radiance;
+    for (const Material& m : scene.materials) radiance.push_back(m.radiance());
+    const LightList lights = buildLightList(scene, g, radiance);
+    ASSERT_EQ(lights.spheres.size(), 2u);
+    ASSERT_EQ(lights.sphereLightIndex.size(), 4u);
+    for (std::size_t k = 0; k < g.spheres.size(); ++k) {
+        const std::uint32_t light = lights.sphereLightIndex[k];
+        if (radiance.at(g.spheres[k].info.x) == glm::vec3(0.0f)) {
+            EXPECT_EQ(light, 0u) << k;
+        } else {
+            ASSERT_GE(light, 1u) << k;
+            EXPECT_EQ(lights.spheres.at(light - 1).centerRadius, g.spheres[k].centerRadius) << k;
+        }
+    }
 }
 
 TEST(LightList, PowerSelectionOnlyWhenLightsDifferInPower) {
