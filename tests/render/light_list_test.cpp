@@ -25,6 +25,13 @@ std::vector<double> impliedProbabilities(const std::vector<glm::vec4>& table) {
     return p;
 }
 
+// Each material's radiance, as the GPU scene hands it to buildLightList.
+std::vector<glm::vec3> materialRadiance(const Scene& scene) {
+    std::vector<glm::vec3> radiance;
+    for (const Material& m : scene.materials) radiance.push_back(m.radiance());
+    return radiance;
+}
+
 } // namespace
 
 TEST(LightList, AliasTableReproducesTheWeights) {
@@ -56,8 +63,7 @@ TEST(LightList, AliasTableReproducesTheWeights) {
 TEST(LightList, CornellBoxLightIsTwoTrianglesWithTheirAreaAndPower) {
     const Scene scene = loadScene(test::scenePath("cornell_box.json"));
     const SceneGeometry g = buildSceneGeometry(scene);
-    std::vector<glm::vec3> radiance;
-    for (const Material& m : scene.materials) radiance.push_back(m.radiance());
+    const std::vector<glm::vec3> radiance = materialRadiance(scene);
     const LightList lights = buildLightList(scene, g, radiance);
     EXPECT_TRUE(lights.spheres.empty());
     ASSERT_EQ(lights.triangles.size(), 2u);
@@ -88,8 +94,7 @@ TEST(LightList, TrianglesArePlacedByTheirTransformAndSpheresComeFirst) {
           "transform": { "translation": [0, 0, 4], "scale": [2, 2, 2] } }
       ] })", "lights.json");
     const SceneGeometry g = buildSceneGeometry(scene);
-    std::vector<glm::vec3> radiance;
-    for (const Material& m : scene.materials) radiance.push_back(m.radiance());
+    const std::vector<glm::vec3> radiance = materialRadiance(scene);
     const LightList lights = buildLightList(scene, g, radiance);
     ASSERT_EQ(lights.spheres.size(), 1u);
     ASSERT_EQ(lights.triangles.size(), 1u) << "the degenerate triangle is no light";
@@ -124,8 +129,7 @@ TEST(LightList, EachSphereKnowsItsLight) {
         { "type": "sphere", "center": [9, 0, 0], "radius": 0.5, "material": "matte" }
       ] })", "spheres.json");
     const SceneGeometry g = buildSceneGeometry(scene);
-    std::vector<glm::vec3> radiance;
-    for (const Material& m : scene.materials) radiance.push_back(m.radiance());
+    const std::vector<glm::vec3> radiance = materialRadiance(scene);
     const LightList lights = buildLightList(scene, g, radiance);
     ASSERT_EQ(lights.spheres.size(), 2u);
     ASSERT_EQ(lights.sphereLightIndex.size(), 4u);
