@@ -1,9 +1,8 @@
 // With few objects the tracer loops over them instead of walking the top-level BVH (features.glsl
 // RAYLAB_TOP_LEVEL_LINEAR). Those loops read each object's world box and each sphere from one
 // uniform block, at constant offsets once the loops are unrolled (RAYLAB_OBJECT_COUNT): llvmpipe
-// reads such an entry with one load for all lanes, a storage buffer's lane by lane. The Cornell
-// box traces 1.5× the paths per second (bench/mesh_rays.md, "Few objects in a uniform block").
-// C++ and GLSL.
+// reads such an entry with one load for all lanes, a storage buffer's lane by lane
+// (bench/mesh_rays.md, "Few objects in a uniform block"). C++ and GLSL.
 #ifndef RAYLAB_FEW_OBJECTS_GLSL
 #define RAYLAB_FEW_OBJECTS_GLSL
 #include "compat.glsl"

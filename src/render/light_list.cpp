@@ -197,11 +197,12 @@ bool lightPowersDiffer(const Scene& scene) {
 LightList buildLightList(const Scene& scene, const SceneGeometry& g, const std::vector<glm::vec3>& radiance) {
     LightList list;
     list.sphereLightIndex.assign(g.spheres.size(), 0u);
-    for (const glsl::GpuSphere& s : g.spheres) {
+    for (std::size_t k = 0; k < g.spheres.size(); ++k) {
+        const glsl::GpuSphere& s = g.spheres[k];
         const glm::vec3 L = radiance.at(s.info.x);
         if (!emits(L)) continue;
         list.spheres.push_back({s.centerRadius, glm::vec4(L, 0.0f)});
-        list.sphereLightIndex[std::size_t(&s - g.spheres.data())] = std::uint32_t(list.spheres.size());
+        list.sphereLightIndex[k] = std::uint32_t(list.spheres.size());
         list.power.push_back(sphereLightPower(L, s.centerRadius.w));
     }
     list.triangleLightIndex.assign(g.triangles.size(), 0u);

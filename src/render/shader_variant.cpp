@@ -86,8 +86,8 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     d.emplace_back(tracerDefine("RAYLAB_GGX_SAMPLING"), std::to_string(int(f.ggxSampling)));
     d.emplace_back(tracerDefine("RAYLAB_ACCEL"), std::to_string(int(f.accel)));
     d.emplace_back(tracerDefine("RAYLAB_FLAT_STEPS"), f.usesFlatSteps() ? "1" : "0");
-    d.emplace_back(tracerDefine("RAYLAB_OBJECT_COUNT"), std::to_string(f.linearTopLevel ? f.objectCount : 0));
-    d.emplace_back(tracerDefine("RAYLAB_SPHERE_COUNT"), std::to_string(f.linearTopLevel ? f.sphereCount : 0));
+    d.emplace_back(tracerDefine("RAYLAB_OBJECT_COUNT"), std::to_string(f.objectCount));
+    d.emplace_back(tracerDefine("RAYLAB_SPHERE_COUNT"), std::to_string(f.sphereCount));
     return d;
 }
 
