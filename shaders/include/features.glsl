@@ -29,6 +29,8 @@
     RL_FEATURE(RAYLAB_TEXTURE_SPECULAR, specularTextures, textures, "specular-tex")              \
     RL_FEATURE(RAYLAB_TEXTURE_WRAP_MODES, textureWrapModes, textures, "wrap-modes")              \
     RL_FEATURE(RAYLAB_EMISSIVE_TRIANGLES, emissiveTriangles, always, "triangle-lights")          \
+    RL_FEATURE(RAYLAB_SPHERE_LIGHTS, sphereLights, always, "sphere-lights")                      \
+    RL_FEATURE(RAYLAB_SKY_LIGHT, skyLight, always, "sky-light")                                  \
     RL_FEATURE(RAYLAB_LIGHT_POWER_SELECTION, lightPowerSelection, always, "light-power")         \
     RL_FEATURE(RAYLAB_ANALYTIC_LIGHTS, analyticLights, always, "point-spot-sun")                 \
     RL_FEATURE(RAYLAB_ONE_SIDED_EMITTERS, oneSidedEmitters, always, "one-sided")                 \
@@ -53,6 +55,8 @@
 #define RAYLAB_TEXTURE_SPECULAR 1         // some material has a specular (f0) texture
 #define RAYLAB_TEXTURE_WRAP_MODES 1       // some texture clamps or mirrors instead of repeating (glTF)
 #define RAYLAB_EMISSIVE_TRIANGLES 1       // with NEE: some mesh emits, its triangles are lights
+#define RAYLAB_SPHERE_LIGHTS 1            // with NEE: some sphere emits, a light sampled by its cone
+#define RAYLAB_SKY_LIGHT 1                // with NEE: the sky may emit (a map, or a colour above 0), a light
 #define RAYLAB_LIGHT_POWER_SELECTION 1    // with NEE: lights differ in power, picked by power
 #define RAYLAB_ANALYTIC_LIGHTS 1          // the scene has point, spot or distant lights (scene `lights`)
 #define RAYLAB_ONE_SIDED_EMITTERS 1       // some mesh emits on its front side only (emission_sides front)

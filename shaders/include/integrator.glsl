@@ -71,7 +71,7 @@ BsdfParams materialBsdf(GpuMaterial m) {
 // (render.nee), RAYLAB_GENERAL_BSDF (some material has f0 > 0 or transmission > 0), RAYLAB_SKY_MAP
 // (sky.type map), RAYLAB_EMISSIVE_TRIANGLES (some mesh emits).
 #if RAYLAB_NEE
-int neeLightCount() { return params.nee ? boundedLightCount() + (params.skyIsLight ? 1 : 0) : 0; }
+int neeLightCount() { return params.nee ? boundedLightCount() + (skyIsLight() ? 1 : 0) : 0; }
 #else
 int neeLightCount() { return 0; }
 #endif
@@ -79,6 +79,9 @@ int neeLightCount() { return 0; }
 // Density with which next-event estimation would have produced the direction from p that hit
 // sphere k: the light that sphere is (its record's info.z, 1 + its index; 0 for none), by its cone.
 float emitterLightPdf(vec3 p, uint k) {
+#if !RAYLAB_SPHERE_LIGHTS
+    return 0.0f;
+#endif
     uint light = sphereAt(k).info.z;
     if (light == 0u) return 0.0f;
     vec4 s = lights[light - 1u].centerRadius;
@@ -98,7 +101,7 @@ float triangleEmitterLightPdf(vec3 d, Hit hit) {
     float len = length(d);
     float dist = hit.t * len;
     float pdf = triangleLightPdf(dist * dist, dot(hit.normal, d) / len, triangleLights[j].p0Area.w);
-    return pdf * boundedLightPmf(params.lightCount + j);
+    return pdf * boundedLightPmf(sphereLightCount() + j);
 #else
     return 0.0f;
 #endif
@@ -132,7 +135,7 @@ float bsdfHitWeight(float bsdfPdf, float lightPdf) {
 float skyHitWeight(vec3 dir, PrevBounce prev, int lightCount) {
     float w = 1.0f;
 #if RAYLAB_NEE
-    if (params.skyIsLight && lightCount > 0 && !prev.delta)
+    if (skyIsLight() && lightCount > 0 && !prev.delta)
         w = bsdfHitWeight(prev.pdf, skyLightPdf(dir) * skySelectionPmf());
 #endif
     return w;
@@ -259,9 +262,9 @@ LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
     if (k >= firstAnalyticLight()) return sampleAnalyticLight(analyticLights[k - firstAnalyticLight()], p, u);
 #endif
     LightSample ls = LightSample(vec3(0.0f), vec3(0.0f), 0.0f, 0.0f, vec3(0.0f));
-    if (k >= params.lightCount) {
+    if (k >= sphereLightCount()) {
 #if RAYLAB_EMISSIVE_TRIANGLES
-        GpuTriangleLight tl = triangleLights[k - params.lightCount];
+        GpuTriangleLight tl = triangleLights[k - sphereLightCount()];
         vec3 p0 = tl.p0Area.xyz;
         ls.point = sampleTrianglePoint(p0, tl.p1.xyz, tl.p2.xyz, u);
         vec3 d = ls.point - p;
@@ -278,7 +281,10 @@ LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
         }
         ls.misPdf = ls.pdf;
 #endif
-    } else if (k >= 0) {
+        return ls;
+    }
+#if RAYLAB_SPHERE_LIGHTS
+    if (k >= 0) {
         vec4 s = lights[k].centerRadius;
         ls.pdf = sphereConePdf(p, s.xyz, s.w);
         if (ls.pdf > 0.0f) {
@@ -286,7 +292,11 @@ LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
             ls.L = lights[k].radiance.rgb;
         }
         ls.misPdf = ls.pdf;
-    } else if (skyByMap()) {
+        return ls;
+    }
+#endif
+#if RAYLAB_SKY_LIGHT
+    if (skyByMap()) {
         vec2 uv;
         ls.wi = sampleEnvironment(u, ls.pdf, uv);
         ls.misPdf = skyLightPdf(ls.wi);   // equal but at texel edges, where it re-maps
@@ -297,6 +307,7 @@ LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
         ls.misPdf = ls.pdf;
         ls.L = skyLookup(sky, ls.wi);
     }
+#endif
     return ls;
 }
 
@@ -308,15 +319,17 @@ float shadowRayEnd(int k, Ray shadow, vec3 lightPoint) {
     if (k >= firstAnalyticLight() && int(analyticLights[k - firstAnalyticLight()].positionType.w) == ANALYTIC_LIGHT_DISTANT)
         return FLOAT_MAX;
 #endif
-    if (k >= params.lightCount) {
+    if (k >= sphereLightCount()) {
         float tMax = dot(lightPoint - shadow.origin, shadow.dir) * (1.0f - 1e-4f);
         return tMax > 0.0f ? tMax : -1.0f;
     }
+#if RAYLAB_SPHERE_LIGHTS
     if (k >= 0) {
         vec4 s = lights[k].centerRadius;
         float t = intersectSphere(shadow, s.xyz, s.w, 0.0f, FLOAT_MAX);
         return t > 0.0f ? t * (1.0f - 1e-4f) : -1.0f;
     }
+#endif
     return FLOAT_MAX;
 }
 

@@ -15,6 +15,19 @@
 #include "scene_data.glsl"
 #include "features.glsl"
 
+// Emissive spheres (bounded lights 0 … sphereLightCount() − 1) and the sky as a light, each
+// compiled in only where the scene has it (RAYLAB_SPHERE_LIGHTS, RAYLAB_SKY_LIGHT): llvmpipe runs
+// the code of every light kind at every light sample, taken or not.
+int sphereLightCount() {
+#if RAYLAB_SPHERE_LIGHTS
+    return params.lightCount;
+#else
+    return 0;
+#endif
+}
+
+bool skyIsLight() { return RAYLAB_SKY_LIGHT != 0 && params.skyIsLight; }
+
 int triangleLightCount() {
 #if RAYLAB_EMISSIVE_TRIANGLES
     return params.triangleLightCount;
@@ -30,13 +43,13 @@ int analyticLightCount() { return 0; }
 #endif
 
 // Index of the first point, spot or distant light among the bounded lights.
-int firstAnalyticLight() { return params.lightCount + triangleLightCount(); }
+int firstAnalyticLight() { return sphereLightCount() + triangleLightCount(); }
 
 int boundedLightCount() { return firstAnalyticLight() + analyticLightCount(); }
 
 #if RAYLAB_LIGHT_POWER_SELECTION
 float skySelectionPmf() {
-    if (!params.skyIsLight) return 0.0f;
+    if (!skyIsLight()) return 0.0f;
     return boundedLightCount() > 0 ? 0.5f : 1.0f;
 }
 
@@ -62,8 +75,8 @@ int selectLight(inout Sampler smp, uint dim, out float pmf) {
     return keep ? i : int(entry.y);
 }
 #else
-int uniformLightCount() { return boundedLightCount() + (params.skyIsLight ? 1 : 0); }
-float skySelectionPmf() { return params.skyIsLight ? 1.0f / float(uniformLightCount()) : 0.0f; }
+int uniformLightCount() { return boundedLightCount() + (skyIsLight() ? 1 : 0); }
+float skySelectionPmf() { return skyIsLight() ? 1.0f / float(uniformLightCount()) : 0.0f; }
 float boundedLightPmf(int i) { return 1.0f / float(uniformLightCount()); }
 
 int selectLight(inout Sampler smp, uint dim, out float pmf) {

@@ -157,6 +157,16 @@ bool meshHasFrontOnlyTriangle(const Scene& scene, const Mesh& mesh) {
     return anyTriangleMaterial(scene, mesh, [&mesh](const Material& m) { return emitsFrontOnly(mesh, m); });
 }
 
+bool sphereIsLight(const Scene& scene, const Sphere& sphere) {
+    return sphere.material >= 0 && std::size_t(sphere.material) < scene.materials.size() &&
+           emits(lightRadiance(scene.materials[std::size_t(sphere.material)]));
+}
+
+bool skyMayEmit(const Sky& sky) {
+    if (sky.type == Sky::Type::Map) return sky.strength > 0.0f;
+    return emits(sky.strength * (sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom)));
+}
+
 bool lightPowersDiffer(const Scene& scene) {
     double lo = HUGE_VAL, hi = 0.0;
     auto add = [&](double p) {

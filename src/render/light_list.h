@@ -46,6 +46,13 @@ bool meshHasEmissiveTriangle(const Scene& scene, const Mesh& mesh);
 bool emitsFrontOnly(const Mesh& mesh, const Material& material);
 bool meshHasFrontOnlyTriangle(const Scene& scene, const Mesh& mesh);
 
+// Whether the sphere is a light (its material's lightRadiance is above 0), as buildLightList has it.
+bool sphereIsLight(const Scene& scene, const Sphere& sphere);
+
+// Whether the sky may be a light for next-event estimation: a constant or gradient sky above 0,
+// or a map (whose texels the GPU scene reads: PathTracer asks its largest texel too).
+bool skyMayEmit(const Sky& sky);
+
 // The radiance a material's surface has as a light: its emission, or 0 when an emission texture
 // varies it (one radiance per light; such surfaces count through BSDF hits alone, unbiased).
 glm::vec3 lightRadiance(const Material& material);

@@ -1,6 +1,7 @@
 #include "render/path_tracer.h"
 
 #include "render/camera_relative.h"
+#include "render/light_list.h"
 #include "shaders/include/adaptive_sampling.glsl"
 #include "shaders/include/bindings.glsl"
 #include "shaders/include/camera.glsl"
@@ -181,9 +182,11 @@ void PathTracer::updateSettings(const Scene& scene) {
     const glm::vec3 lookAt = relativePoint(c.lookAt, origin_);
     const auto cam = glsl::cameraBasis(eye, lookAt, c.up, c.fovY, float(r.width) / float(r.height));
     const Sky& sky = scene.sky;
-    glm::vec3 skyMax = sky.type == Sky::Type::Constant ? sky.color : glm::max(sky.top, sky.bottom);
-    if (sky.type == Sky::Type::Map) skyMax = glm::vec3(gpuScene_.skyMapMax());
-    const bool skyIsLight = sky.strength * std::max({skyMax.r, skyMax.g, skyMax.b}) > 0.0f;
+    const bool skyIsLight = skyMayEmit(sky) && (sky.type != Sky::Type::Map || gpuScene_.skyMapMax() > 0.0f);
+    // The variant leaves out the light kinds the scene lacks (sceneFeatures): the scene must agree.
+    if (options_.specialise && r.nee &&
+        ((gpuScene_.lightCount() > 0 && !features_.sphereLights) || (skyIsLight && !features_.skyLight)))
+        throw std::logic_error("path tracer: the variant lacks a light the scene has");
     params_ = glsl::TracerParams{
         .sampleStart = 0,   // sampleStart and rpp: set per band by traceBand
         .rpp = 0,

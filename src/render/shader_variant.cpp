@@ -53,6 +53,9 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.flatSteps = flatLoopIterationsPerSample(scene, false) > kLoopIterationBudget / 2;
     f.emissiveTriangles = false;
     for (const Mesh& m : scene.meshes) f.emissiveTriangles |= f.nee && meshHasEmissiveTriangle(scene, m);
+    f.sphereLights = false;
+    for (const Sphere& sp : scene.spheres) f.sphereLights |= f.nee && sphereIsLight(scene, sp);
+    f.skyLight = f.nee && skyMayEmit(scene.sky);
     f.analyticLights = !scene.lights.empty();
     f.adaptive = adaptiveInEffect(scene.render);
     f.oneSidedEmitters = false;

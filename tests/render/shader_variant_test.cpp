@@ -54,8 +54,45 @@ TEST(ShaderVariant, FeaturesComeFromTheScene) {
     EXPECT_EQ(d[1].first, "RAYLAB_FEATURE_SPHERES");
     EXPECT_EQ(d[2].first, "RAYLAB_TOP_LEVEL_LINEAR");
     // 5 geometry features + NEE, BSDF, sky map + roughness, metallic, emission, specular textures,
-    // wrap modes + triangle lights, light power selection + point/spot/distant lights, one-sided emitters
-    EXPECT_EQ(on(featureDefines(allFeatures())).size(), 18u);
+    // wrap modes + triangle lights, sphere lights, the sky as a light, light power selection +
+    // point/spot/distant lights, one-sided emitters
+    EXPECT_EQ(on(featureDefines(allFeatures())).size(), 20u);
+}
+
+// Next-event estimation's sphere lights and the sky as a light are compiled in only where the
+// scene has them: the Cornell box (a triangle lamp, a black sky) has neither.
+TEST(ShaderVariant, SphereLightsAndTheSkyLightOnlyWhereTheSceneHasThem) {
+    const auto kinds = [](const Scene& s) {
+        const SceneFeatures f = sceneFeatures(s);
+        return std::string(f.sphereLights ? "spheres" : "-") + "/" + (f.skyLight ? "sky" : "-");
+    };
+    Scene box = loadScene(test::scenePath("cornell_box.json"));
+    EXPECT_EQ(kinds(box), "-/-");
+    box.sky.color = glm::vec3(0.0f, 0.0f, 0.1f);
+    EXPECT_EQ(kinds(box), "-/sky") << "a sky above 0 gives light";
+    box.sky.strength = 0.0f;
+    EXPECT_EQ(kinds(box), "-/-") << "strength 0: no light";
+    box.sky.type = Sky::Type::Gradient;
+    box.sky.strength = 1.0f;
+    box.sky.top = glm::vec3(0.0f);
+    box.sky.bottom = glm::vec3(0.2f);
+    EXPECT_EQ(kinds(box), "-/sky") << "a gradient bright below";
+    box.sky.type = Sky::Type::Map;
+    EXPECT_EQ(kinds(box), "-/sky") << "a map: its texels decide at run time";
+    Sphere grey;
+    grey.material = 0;   // no emission
+    ASSERT_FALSE(box.materials[0].name == "light");
+    box.spheres.push_back(grey);
+    EXPECT_EQ(kinds(box), "-/sky") << "a sphere that does not emit is no light";
+    Sphere lamp = grey;
+    lamp.material = int(std::find_if(box.materials.begin(), box.materials.end(),
+                                     [](const Material& m) { return m.name == "light"; }) - box.materials.begin());
+    ASSERT_LT(std::size_t(lamp.material), box.materials.size());
+    box.spheres.push_back(lamp);
+    EXPECT_EQ(kinds(box), "spheres/sky");
+    box.render.nee = false;
+    EXPECT_EQ(kinds(box), "-/-") << "without next-event estimation no light is sampled";
+    EXPECT_EQ(kinds(loadScene(test::scenePath("default.json"))), "spheres/sky");
 }
 
 // With few objects the variant fixes their number and the spheres' (the loops' trip counts); with
@@ -113,17 +150,22 @@ TEST(ShaderVariant, ScenesWithoutTheNewTextureKindsCompileTheSameDefinesAsBefore
     if (f.meshesInWorld) expected.emplace_back("RAYLAB_MESHES_IN_WORLD", "1");
     if (f.nee) expected.emplace_back("RAYLAB_NEE", "1");
     if (f.generalBsdf) expected.emplace_back("RAYLAB_GENERAL_BSDF", "1");
+    if (f.sphereLights) expected.emplace_back("RAYLAB_SPHERE_LIGHTS", "1");
+    if (f.skyLight) expected.emplace_back("RAYLAB_SKY_LIGHT", "1");
     if (f.adaptive) expected.emplace_back("RAYLAB_ADAPTIVE", "1");
     EXPECT_EQ(on(featureDefines(f)), expected);
     // Each new kind adds its own define and nothing else.
-    // The defines the edits add come before RAYLAB_ADAPTIVE, the last one (features.glsl).
+    // The defines the edits add come before the light kinds and RAYLAB_ADAPTIVE (features.glsl).
     const auto withOne = [&](auto edit, const char* define) {
         Scene s = bricks;
         edit(s);
         ShaderDefines d = on(featureDefines(sceneFeatures(s)));
         ShaderDefines more = expected;
         const auto adaptive = [&] {
-            return std::find(more.begin(), more.end(), std::pair<std::string, std::string>{"RAYLAB_ADAPTIVE", "1"});
+            return std::find_if(more.begin(), more.end(), [](const auto& define) {
+                return define.first == "RAYLAB_SPHERE_LIGHTS" || define.first == "RAYLAB_SKY_LIGHT" ||
+                       define.first == "RAYLAB_ADAPTIVE";
+            });
         };
         if (std::find(more.begin(), more.end(), std::pair<std::string, std::string>{"RAYLAB_GENERAL_BSDF", "1"}) ==
                 more.end() && sceneFeatures(s).generalBsdf)
