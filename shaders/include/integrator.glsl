@@ -69,7 +69,8 @@ BsdfParams materialBsdf(GpuMaterial m) {
 // triangles by power, and the sky. Each part is compiled in only when the host defines its feature,
 // because llvmpipe pays for the light-sampling block even where it is never taken: RAYLAB_NEE
 // (render.nee), RAYLAB_GENERAL_BSDF (some material has f0 > 0 or transmission > 0), RAYLAB_SKY_MAP
-// (sky.type map), RAYLAB_EMISSIVE_TRIANGLES (some mesh emits).
+// (sky.type map), RAYLAB_EMISSIVE_TRIANGLES (some mesh emits), RAYLAB_SPHERE_LIGHTS (some sphere
+// emits), RAYLAB_SKY_LIGHT (the sky may emit).
 #if RAYLAB_NEE
 int neeLightCount() { return params.nee ? boundedLightCount() + (skyIsLight() ? 1 : 0) : 0; }
 #else
