@@ -80,13 +80,14 @@ int neeLightCount() { return 0; }
 // Density with which next-event estimation would have produced the direction from p that hit
 // sphere k: the light that sphere is (its record's info.z, 1 + its index; 0 for none), by its cone.
 float emitterLightPdf(vec3 p, uint k) {
-#if !RAYLAB_SPHERE_LIGHTS
-    return 0.0f;
-#endif
+#if RAYLAB_SPHERE_LIGHTS
     uint light = sphereAt(k).info.z;
     if (light == 0u) return 0.0f;
     vec4 s = lights[light - 1u].centerRadius;
     return sphereConePdf(p, s.xyz, s.w) * boundedLightPmf(int(light - 1u));
+#else
+    return 0.0f;
+#endif
 }
 
 // The same for a ray from p (direction d, not unit) that hit a triangle: the light that triangle is
