@@ -73,11 +73,13 @@ void main() {
         return;
     }
     if (uMode == 5) {
-        // x: the light picked (-1 the sky), y: its probability, z: boundedLightPmf of it.
+        // x: the light picked (-1 the sky), y: its probability, z: boundedLightPmf of it, w: the number
+        // that picked it, rescaled within the pick.
         float pmf;
         Sampler pick = samplerCreate(uvec2(i, 1u), 0u, params.seed, 1u);
-        int k = selectLight(pick, 0u, pmf);
-        samples[i] = SampleRecord(vec4(float(k), pmf, k >= 0 ? boundedLightPmf(k) : 0.0, 0.0), vec4(0.0));
+        float u = sample1D(pick, 0u);
+        int k = selectLight(pick, u, pmf);
+        samples[i] = SampleRecord(vec4(float(k), pmf, k >= 0 ? boundedLightPmf(k) : 0.0, u), vec4(0.0));
         return;
     }
     BsdfParams m = BsdfParams(uAlbedo, uF0, uAlpha, uTransmission, uIor, uDiffuseSampling, uGgxSampling);

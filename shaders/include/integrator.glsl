@@ -343,8 +343,9 @@ bool sampleLd(Hit hit, ShadingPoint sp, SkyParams sky, vec3 beta, int bounce, in
               out vec3 Ld) {
     Ld = vec3(0.0f);
     float selectPmf;
-    int k = selectLight(smp, sampleDim(bounce, SAMPLE_BOUNCE_LIGHT_CHOICE), selectPmf);
-    LightSample ls = sampleLight(k, hit.position, sample2D(smp, sampleDim(bounce, SAMPLE_BOUNCE_LIGHT)), sky);
+    vec2 u = sample2D(smp, sampleDim(bounce, SAMPLE_BOUNCE_LIGHT));
+    int k = selectLight(smp, u.x, selectPmf);
+    LightSample ls = sampleLight(k, hit.position, u, sky);
     float lightPdf = ls.pdf * selectPmf;
     float misPdf = ls.misPdf * selectPmf;
     vec3 wiL = frameToLocal(sp.frame, ls.wi);

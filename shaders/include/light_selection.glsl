@@ -15,6 +15,10 @@
 #include "scene_data.glsl"
 #include "features.glsl"
 
+// A number rescaled into [0, 1) after a discrete choice took its leading part: the rounding of
+// the rescale can reach 1, which a [0, 1) sample never is.
+float remapWithin(float u) { return clamp(u, 0.0f, 0.99999994f); }
+
 // Emissive spheres (bounded lights 0 … sphereLightCount() − 1) and the sky as a light, each
 // compiled in only where the scene has it (RAYLAB_SPHERE_LIGHTS, RAYLAB_SKY_LIGHT): llvmpipe runs
 // the code of every light kind at every light sample, taken or not.
@@ -57,18 +61,23 @@ float skySelectionPmf() {
 float boundedLightPmf(int i) { return (1.0f - skySelectionPmf()) * lightAlias[i].z; }
 
 // A light: -1 for the sky, else the bounded light's index; pmf is the probability of the pick.
-// Dimension dim decides sky or not and the alias table's column, a coin the column or its alias;
-// one read of the table (an entry holds the pmf of its column and of its alias).
-int selectLight(inout Sampler smp, uint dim, out float pmf) {
-    float u = sample1D(smp, dim);
+// u, the first number of the light point's pair, decides sky or not and the alias table's column,
+// and comes back rescaled to [0, 1) within the part of [0, 1) it fell in, so the point on the light
+// takes it again (pbrt-v4's SampleDiscrete with uRemapped): the choice and the point are one
+// stratified 2D sample, and no dimension of its own is drawn for the choice. A coin picks the
+// column or its alias; one read of the table (an entry holds the pmf of its column and of its alias).
+int selectLight(inout Sampler smp, inout float u, out float pmf) {
     float v = sampleCoin(smp);
     float pSky = skySelectionPmf();
     if (u < pSky) {
         pmf = pSky;
+        u = remapWithin(u / pSky);
         return -1;
     }
     int n = boundedLightCount();
-    int i = min(int((u - pSky) / (1.0f - pSky) * float(n)), n - 1);
+    float w = (u - pSky) / (1.0f - pSky) * float(n);
+    int i = min(int(w), n - 1);
+    u = remapWithin(w - float(i));
     vec4 entry = lightAlias[i];
     bool keep = v < entry.x;
     pmf = (1.0f - pSky) * (keep ? entry.z : entry.w);
@@ -79,9 +88,12 @@ int uniformLightCount() { return boundedLightCount() + (skyIsLight() ? 1 : 0); }
 float skySelectionPmf() { return skyIsLight() ? 1.0f / float(uniformLightCount()) : 0.0f; }
 float boundedLightPmf(int i) { return 1.0f / float(uniformLightCount()); }
 
-int selectLight(inout Sampler smp, uint dim, out float pmf) {
+// The same choice uniformly: u picks the light and comes back rescaled within its share.
+int selectLight(inout Sampler smp, inout float u, out float pmf) {
     int n = uniformLightCount();
-    int k = min(int(sample1D(smp, dim) * float(n)), n - 1);
+    float w = u * float(n);
+    int k = min(int(w), n - 1);
+    u = remapWithin(w - float(k));
     pmf = 1.0f / float(n);
     return k < boundedLightCount() ? k : -1;
 }

@@ -16,9 +16,8 @@ const uint SAMPLE_DIM_LENS = 2u;             // 2: point on the thin lens; bounc
 const uint SAMPLE_DIM_BOUNCE = 4u;           // first dimension of bounce 0
 const uint SAMPLE_DIMS_PER_BOUNCE = 8u;
 const uint SAMPLE_BOUNCE_BSDF = 0u;          // 2: BSDF direction (bsdfSampleDim)
-const uint SAMPLE_BOUNCE_LOBE = 2u;          // 1: lobe choice
-const uint SAMPLE_BOUNCE_LIGHT_CHOICE = 3u;  // 1: which light next-event estimation samples
-const uint SAMPLE_BOUNCE_LIGHT = 4u;         // 2: point on that light
+const uint SAMPLE_BOUNCE_LOBE = 2u;          // 1: lobe choice; offset 3 is unused
+const uint SAMPLE_BOUNCE_LIGHT = 4u;         // 2: which light next-event estimation samples and the point on it
 const uint SAMPLE_BOUNCE_ROULETTE = 6u;      // 1: bounce 0's is Russian roulette's (below); offset 7 is unused
 
 RL_FN uint sampleDim(int bounce, uint offset) {

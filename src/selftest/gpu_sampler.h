@@ -39,8 +39,9 @@ public:
     // Directions towards a triangle light (world-space vertices) seen from the origin, by area.
     std::vector<GpuSample> triangleLight(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, unsigned count, unsigned seed) const;
     // Lights picked by light_selection.glsl from the alias table of a scene uploaded and bound by a
-    // GpuScene: wiPdf.x is the index (−1 the sky), .y its probability. The counts and whether the
-    // sky is a light are the parameters the tracer would set.
+    // GpuScene: wiPdf.x is the index (−1 the sky), .y its probability, .w the number that made the
+    // pick, rescaled within it. The counts and whether the sky is a light are the parameters the
+    // tracer would set.
     std::vector<GpuSample> lightSelection(int sphereLights, int triangleLights, bool skyIsLight, unsigned count,
                                           unsigned seed) const;
 

@@ -137,7 +137,11 @@ TEST_F(TriangleLightSamplingTest, TheShaderPicksLightsInProportionToTheirPower) 
         std::vector<double> observed(7, 0.0), expected(7, 0.0);
         expected[6] = n * pSky;
         for (size_t i = 0; i < 6; ++i) expected[i] = n * (1.0 - pSky) * power[i] / total;
-        int wrongPmf = 0;
+        // The number that made the pick comes back rescaled for the point on the light: uniform in
+        // [0, 1) and independent of the pick, so within each light it is a fresh uniform number.
+        constexpr size_t kBins = 8;
+        std::vector<double> rescaled(7 * kBins, 0.0);
+        int wrongPmf = 0, outside = 0;
         for (const auto& s : sampler.lightSelection(3, 3, sky, n, ++seed)) {
             const int k = int(s.wiPdf.x);
             ASSERT_GE(k, -1);
@@ -145,8 +149,19 @@ TEST_F(TriangleLightSamplingTest, TheShaderPicksLightsInProportionToTheirPower) 
             const size_t cell = k < 0 ? 6 : size_t(k);
             observed[cell] += 1.0;
             if (std::abs(s.wiPdf.y - expected[cell] / n) > 1e-6 * std::max(1.0, expected[cell] / n)) ++wrongPmf;
+            const float u = s.wiPdf.w;
+            if (!(u >= 0.0f && u < 1.0f)) {
+                ++outside;
+                continue;
+            }
+            rescaled[cell * kBins + size_t(u * float(kBins))] += 1.0;
         }
         EXPECT_EQ(wrongPmf, 0) << "the pmf the shader reports for its pick";
+        EXPECT_EQ(outside, 0) << "rescaled numbers outside [0, 1)";
+        std::vector<double> rescaledExpected(7 * kBins);
+        for (size_t i = 0; i < rescaledExpected.size(); ++i) rescaledExpected[i] = observed[i / kBins] / kBins;
+        const auto chiU = test::chiSquareTest(rescaled, rescaledExpected, 0.0);
+        EXPECT_GT(chiU.pValue, test::sidak(0.01, 2)) << "rescaled number: chi2 " << chiU.statistic << " dof " << chiU.dof;
         const auto chi = test::chiSquareTest(observed, expected, 0.0);
         EXPECT_FALSE(chi.sampleInZeroCell);
         EXPECT_GT(chi.pValue, test::sidak(0.01, 2)) << "chi2 " << chi.statistic << " dof " << chi.dof;
