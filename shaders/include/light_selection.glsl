@@ -15,9 +15,14 @@
 #include "scene_data.glsl"
 #include "features.glsl"
 
-// A number rescaled into [0, 1) after a discrete choice took its leading part: the rounding of
-// the rescale can reach 1, which a [0, 1) sample never is.
-float remapWithin(float u) { return clamp(u, 0.0f, 0.99999994f); }
+// Slot floor(u·n) of n, and u rescaled to [0, 1) within that slot for the next use (the clamp:
+// the rescale's rounding can reach 1, which a [0, 1) sample never is).
+int pickSlot(inout float u, int n) {
+    float w = u * float(n);
+    int i = min(int(w), n - 1);
+    u = clamp(w - float(i), 0.0f, 0.99999994f);
+    return i;
+}
 
 // Emissive spheres (bounded lights 0 … sphereLightCount() − 1) and the sky as a light, each
 // compiled in only where the scene has it (RAYLAB_SPHERE_LIGHTS, RAYLAB_SKY_LIGHT): llvmpipe runs
@@ -71,13 +76,11 @@ int selectLight(inout Sampler smp, inout float u, out float pmf) {
     float pSky = skySelectionPmf();
     if (u < pSky) {
         pmf = pSky;
-        u = remapWithin(u / pSky);
+        u = clamp(u / pSky, 0.0f, 0.99999994f);
         return -1;
     }
-    int n = boundedLightCount();
-    float w = (u - pSky) / (1.0f - pSky) * float(n);
-    int i = min(int(w), n - 1);
-    u = remapWithin(w - float(i));
+    u = (u - pSky) / (1.0f - pSky);
+    int i = pickSlot(u, boundedLightCount());
     vec4 entry = lightAlias[i];
     bool keep = v < entry.x;
     pmf = (1.0f - pSky) * (keep ? entry.z : entry.w);
@@ -91,9 +94,7 @@ float boundedLightPmf(int i) { return 1.0f / float(uniformLightCount()); }
 // The same choice uniformly: u picks the light and comes back rescaled within its share.
 int selectLight(inout Sampler smp, inout float u, out float pmf) {
     int n = uniformLightCount();
-    float w = u * float(n);
-    int k = min(int(w), n - 1);
-    u = remapWithin(w - float(k));
+    int k = pickSlot(u, n);
     pmf = 1.0f / float(n);
     return k < boundedLightCount() ? k : -1;
 }
