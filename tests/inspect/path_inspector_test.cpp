@@ -206,7 +206,7 @@ TEST_F(PathInspectorTest, RecordedPathMatchesACpuComputation) {
                 expectNear3(b.weight, albedo, 1e-6f, where + " f cos / pdf");
                 beta *= glm::dvec3(b.f) * double(b.cosTheta) / double(b.pdf);
                 if (int(k) + 1 >= scene.render.rrDepth) {
-                    const double q = std::min(std::max({beta.x, beta.y, beta.z}), 0.95);
+                    const double q = std::min(std::pow(std::max({beta.x, beta.y, beta.z}), 0.25), 0.95);
                     EXPECT_NEAR(b.rrProbability, q, 1e-5) << where;
                     ASSERT_GE(b.rrOutcome, 0) << where;
                     if (b.rrOutcome == 0) {

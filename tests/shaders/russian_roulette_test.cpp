@@ -27,10 +27,13 @@ struct Furnace {
     int maxBounces = 64, rrDepth = 3;
 };
 
-double furnacePath(const Furnace& f, const std::function<float(int)>& number, bool oneNumber) {
+// `survivals`, when given, counts the roulettes the path survived.
+double furnacePath(const Furnace& f, const std::function<float(int)>& number, bool oneNumber,
+                   int* survivals = nullptr) {
     vec3 beta(1.0f);
     float survival = 1.0f;
     double radiance = 0.0;
+    if (survivals) *survivals = 0;
     for (int bounce = 0;; ++bounce) {
         radiance += double(f.le) * beta.x;
         if (bounce >= f.maxBounces) break;
@@ -42,10 +45,28 @@ double furnacePath(const Furnace& f, const std::function<float(int)>& number, bo
             const bool survived = oneNumber ? rouletteSurvives(number(0), q, survival)
                                             : rouletteSurvives(number(bounce), q, perBounce);
             if (!survived) break;
+            if (survivals) ++*survivals;
             beta /= q;
         }
     }
     return radiance;
+}
+
+// Q_k, the probability that a furnace path survives its first k + 1 roulettes: every furnace path
+// that lives has the same beta, so the q's are one sequence.
+std::vector<double> furnaceSurvival(const Furnace& f, int roulettes) {
+    std::vector<double> Q;
+    vec3 beta(1.0f);
+    double product = 1.0;
+    for (int bounce = 0; int(Q.size()) < roulettes; ++bounce) {
+        beta *= f.albedo;
+        if (bounce + 1 < f.rrDepth) continue;
+        const float q = rouletteProbability(beta);
+        product *= double(q);
+        Q.push_back(product);
+        beta /= q;
+    }
+    return Q;
 }
 
 // The sobol number a furnace path of `pixel` and sample s reads at `bounce` (bounce 0's slot is
@@ -56,12 +77,22 @@ float sobolRouletteNumber(uvec2 pixel, uint s, uint seed, int bounce) {
 
 } // namespace
 
+TEST(RussianRoulette, SurvivalIsTheFourthRootOfTheLargestThroughputAtMost095) {
+    // The rule of rouletteProbability (bench/samplers.md, "The roulette's survival probability"):
+    // the largest component decides, its fourth root is q, and 0.95 caps it.
+    EXPECT_FLOAT_EQ(rouletteProbability(vec3(0.0625f, 0.01f, 0.0f)), 0.5f);
+    EXPECT_FLOAT_EQ(rouletteProbability(vec3(0.01f, 0.0081f, 0.3f)), float(std::pow(0.3, 0.25)));
+    EXPECT_FLOAT_EQ(rouletteProbability(vec3(0.2f, 0.9f, 0.5f)), 0.95f);   // 0.9^(1/4) = 0.974
+    EXPECT_FLOAT_EQ(rouletteProbability(vec3(3.0f, 0.0f, 0.0f)), 0.95f);
+    EXPECT_EQ(rouletteProbability(vec3(0.0f)), 0.0f);   // nothing left to carry: the path ends
+}
+
 TEST(RussianRoulette, OneNumberPerPathIsUnbiasedWithPathDependentProbabilities) {
     // Each bounce's albedo is drawn from the path's PCG stream in [0.2, 0.95], so q differs from
     // path to path and bounce to bounce; with Le = 1 the estimate's mean is Σ_k E[a]^k over bounces
     // 0 … 12 (the albedos independent, E[a] = 0.575). 2^18 paths, a 4.5σ bound (two-sided
     // p ≈ 7e-6). A fresh number per bounce against the product would end paths too early: the
-    // mean falls to 1.86 (seen failing so).
+    // mean fell to 1.86 (seen failing so, when q was max(β) itself).
     const int maxBounces = 12, rrDepth = 1;
     const uint n = 1u << 18;
     double sum = 0.0, sumSq = 0.0;
@@ -90,29 +121,27 @@ TEST(RussianRoulette, OneNumberPerPathIsUnbiasedWithPathDependentProbabilities) 
 }
 
 TEST(RussianRoulette, SobolPathLengthsAreStratifiedInEachPixel) {
-    // The closed furnace's survival probabilities (Q_k = 1/8, 1/16, 1/32 … from bounce 2): over
-    // 256 sobol samples of a pixel, the paths alive after each bounce are N·Q_k to within one,
-    // since one Owen-scrambled Sobol dimension puts one point in each interval of width 1/256.
-    // Coins from each bounce's own dimension (the layout's unused per-bounce slots) are
-    // independent across bounces and miss by several paths: the check can tell them apart.
+    // The closed furnace's survival probabilities Q_k (furnaceSurvival): over 256 sobol samples of
+    // a pixel, the paths alive after each of the first six roulettes are N·Q_k to within one, since
+    // one Owen-scrambled Sobol dimension puts one point in each interval of width 1/256. Coins from
+    // each bounce's own dimension (the layout's unused per-bounce slots) are independent across
+    // bounces and miss by several paths: the check can tell them apart.
     const Furnace f;
     const uint n = 256;
+    const int roulettes = 6;
+    const std::vector<double> Q = furnaceSurvival(f, roulettes);
     for (bool oneNumber : {true, false}) {
         double worst = 0.0;
         for (uint px = 0; px < 8; ++px) {
             std::vector<int> alive(size_t(f.maxBounces + 2), 0);
             for (uint s = 0; s < n; ++s) {
                 const auto number = [&](int bounce) { return sobolRouletteNumber(uvec2(px, 5u), s, 3u, bounce); };
-                // The path's length from its radiance: 0.875 for the three bounces before roulette,
-                // then 0.5 for each bounce after (beta is 1 after each survival).
-                const double L = furnacePath(f, number, oneNumber);
-                const int extra = int(std::lround((L - 0.875) / 0.5));
-                for (int k = 0; k < extra; ++k) ++alive[size_t(k)];
+                int survivals = 0;
+                furnacePath(f, number, oneNumber, &survivals);
+                for (int k = 0; k < survivals; ++k) ++alive[size_t(k)];
             }
-            for (int k = 0; k < 6; ++k) {
-                const double expected = n * 0.125 * std::pow(0.5, k);
-                worst = std::max(worst, std::abs(alive[size_t(k)] - expected));
-            }
+            for (int k = 0; k < roulettes; ++k)
+                worst = std::max(worst, std::abs(alive[size_t(k)] - n * Q[size_t(k)]));
         }
         if (oneNumber) {
             EXPECT_LT(worst, 1.0) << "one number per path";
