@@ -7,6 +7,7 @@
 #include "render/shader_variant.h"
 #include "scene/scene_loader.h"
 #include "script/expectation.h"
+#include "shaders/include/russian_roulette.glsl"
 #include "shaders/include/tone_map.glsl"
 
 #include <gtest/gtest.h>
@@ -376,8 +377,12 @@ TEST(LessonClaims, ClosedFurnaceSeriesMatchesItsScene) {
     const int k = int(std::ceil(std::log(0.01) / std::log(0.9))) - 1;   // smallest k with 0.9^(k+1) < 0.01
     EXPECT_TRUE(contains(l.teacherNotes, "k ≥ " + std::to_string(k)));
     EXPECT_TRUE(contains(l.teacherNotes, "that is " + fixed(0.2 / (1 - 0.75), 1)));
-    // Roulette: raylab's cap is pbrt-v3's; pbrt-v4 has none.
-    EXPECT_TRUE(contains(l.steps[3].text, "survival probability of pbrt-v3"));
+    // Roulette: the rule the lesson gives is the tracer's (russian_roulette.glsl), the fourth root
+    // of max(β) under pbrt-v3's cap; pbrt-v4 has no cap.
+    EXPECT_TRUE(contains(l.steps[3].text, "raylab takes q = min(max(β)^(1/4), 0.95)"));
+    EXPECT_FLOAT_EQ(glsl::rouletteProbability(glsl::vec3(0.0625f, 0.01f, 0.0f)), 0.5f);
+    EXPECT_FLOAT_EQ(glsl::rouletteProbability(glsl::vec3(0.99f)), 0.95f);
+    EXPECT_TRUE(contains(l.steps[3].text, "pbrt-v3 takes q = min(max(β), 0.95)"));
     EXPECT_FALSE(contains(l.steps[3].text, "as pbrt-v4 does"));
     EXPECT_FALSE(contains(l.steps[2].text, "caps albedo"));
 }
