@@ -15,12 +15,9 @@
 RL_NAMESPACE_BEGIN
 
 // q: the fourth root of the largest throughput component, at most 0.95 (pbrt-v3's cap), so Q_k
-// strictly falls. pbrt-v3 and pbrt-v4 take q = max(beta·etaScale) itself and Cycles its square
-// root: after a survival beta is about the bounce's albedo, so q = beta ends a path in a closed
-// white room at each bounce with 1 − albedo, and that roulette was 45 % of the Cornell box's
-// indirect noise. Of the powers 1, 1/2, 1/4 and 1/8 of beta, 1/4 reaches 2 % of the mean soonest on
-// the peer scenes, within 2 % of the soonest on the default scene (bench/samplers.md, "The
-// roulette's survival probability").
+// strictly falls. After a survival beta is about the bounce's albedo, so q = beta itself (pbrt's;
+// Cycles takes its square root) ends paths in a bright closed room at every bounce; the power is
+// chosen by time to error (bench/samplers.md, "The roulette's survival probability").
 RL_FN float rouletteProbability(vec3 beta) { return min(sqrt(sqrt(max(beta.r, max(beta.g, beta.b)))), 0.95f); }
 
 // One bounce's roulette with the path's number u: `survival` (Q, 1 at the path's start) takes

@@ -89,6 +89,8 @@ int main(int argc, char** argv) {
     convergence->add_option("--peer", conv.peer, "Cycles comparison: auto (when blender is installed), on, off")
         ->check(CLI::IsMember({"auto", "on", "off"}))->capture_default_str();
     convergence->add_option("--only", conv.only, "Run only the suite scene with this name");
+    convergence->add_flag("--main-curves-only", conv.mainCurvesOnly,
+                          "Leave the scenes' variants out: each scene's default curve alone (comparing shader trees)");
     convergence->add_option("--threads", conv.threads, "Cycles render threads")
         ->check(CLI::PositiveNumber)->capture_default_str();
     ScalingOptions scaling;

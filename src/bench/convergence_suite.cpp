@@ -121,6 +121,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
         std::string names;
         for (SuiteScene& e : suite.scenes) {
             names += (names.empty() ? "" : ", ") + e.name;
+            if (o.mainCurvesOnly) e.variants.clear();
             if (o.only.empty() || o.only == e.name) scenes.push_back(std::move(e));
         }
         if (scenes.empty()) {

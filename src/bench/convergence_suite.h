@@ -14,6 +14,7 @@ struct ConvergenceOptions {
     std::filesystem::path referenceDir = "bench/references";
     std::string peer = "auto";                                   // auto | on | off
     std::string only;                                            // run just this scene name
+    bool mainCurvesOnly = false;                                 // leave the scenes' variants out
     int threads = 2;                                             // Cycles threads (match llvmpipe's)
     std::string commandLine;                                     // recorded in the summary
     std::string glDescription;                                   // the GL renderer, recorded too

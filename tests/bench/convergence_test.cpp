@@ -594,11 +594,11 @@ struct SuiteRun {
     int raw = 0;
     std::string log, csv, md;
 };
-SuiteRun runSuite(const fs::path& dir, const std::string& glArgs = "") {
+SuiteRun runSuite(const fs::path& dir, const std::string& glArgs = "", const std::string& extraArgs = "") {
     const std::string cmd = std::string("cd '") + RAYLAB_SOURCE_DIR + "' && '" + RAYLAB_BENCH_EXE + "' " + glArgs +
                             "convergence --suite '" + (dir / "suite.json").string() + "' --out '" +
                             (dir / "out").string() + "' --references '" + (dir / "refs").string() +
-                            "' --peer off > '" + (dir / "log.txt").string() + "' 2>&1";
+                            "' --peer off " + extraArgs + " > '" + (dir / "log.txt").string() + "' 2>&1";
     SuiteRun r;
     r.raw = std::system(cmd.c_str());
     const auto read = [](const fs::path& f) {
@@ -610,6 +610,25 @@ SuiteRun runSuite(const fs::path& dir, const std::string& glArgs = "") {
     r.csv = read(dir / "out" / "quick" / "convergence.csv");
     r.md = read(dir / "out" / "quick" / "summary.md");
     return r;
+}
+
+TEST(BenchConvergenceCli, MainCurvesOnlyLeavesTheVariantsOut) {
+    // --main-curves-only: each scene's default curve, none of its variants (bench/samplers.md
+    // compares shader trees so).
+    const fs::path dir = scratch();
+    {
+        std::ofstream suite(dir / "suite.json");
+        suite << R"({"modes": {"quick": {"width": 16, "height": 9, "max_spp": 16, "seeds": 1,
+                     "reference_spp": 16, "reference_batches": 2, "peer_max_spp": 2}},
+                     "scenes": [{"name": "cf", "scene": "scenes/closed_furnace.json", "analytic": 1.0,
+                                 "variants": [{"name": "rpp2", "set": ["render.rpp=2"]}]}]})";
+    }
+    const SuiteRun run = runSuite(dir, "", "--main-curves-only");
+    ASSERT_TRUE(WIFEXITED(run.raw));
+    ASSERT_EQ(WEXITSTATUS(run.raw), 0) << run.log;
+    EXPECT_NE(run.csv.find("cf,raylab,1,16,"), std::string::npos) << run.csv;
+    EXPECT_EQ(run.csv.find("raylab:rpp2"), std::string::npos) << run.csv;
+    EXPECT_EQ(run.md.find("raylab:rpp2"), std::string::npos) << run.md;
 }
 
 TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
