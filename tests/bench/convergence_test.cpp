@@ -612,17 +612,21 @@ SuiteRun runSuite(const fs::path& dir, const std::string& glArgs = "", const std
     return r;
 }
 
+// dir/suite.json with one scene, the closed furnace against its analytic value, and one variant
+// (rpp 2), at 16×9 with `spp` samples and references and `seeds` seeds.
+void writeFurnaceSuite(const fs::path& dir, int spp, int seeds) {
+    std::ofstream(dir / "suite.json")
+        << R"({"modes": {"quick": {"width": 16, "height": 9, "max_spp": )" << spp << R"(, "seeds": )" << seeds
+        << R"(, "reference_spp": )" << spp << R"(, "reference_batches": 2, "peer_max_spp": 2}},
+              "scenes": [{"name": "cf", "scene": "scenes/closed_furnace.json", "analytic": 1.0,
+                          "variants": [{"name": "rpp2", "set": ["render.rpp=2"]}]}]})";
+}
+
 TEST(BenchConvergenceCli, MainCurvesOnlyLeavesTheVariantsOut) {
     // --main-curves-only: each scene's default curve, none of its variants (bench/samplers.md
     // compares shader trees so).
     const fs::path dir = scratch();
-    {
-        std::ofstream suite(dir / "suite.json");
-        suite << R"({"modes": {"quick": {"width": 16, "height": 9, "max_spp": 16, "seeds": 1,
-                     "reference_spp": 16, "reference_batches": 2, "peer_max_spp": 2}},
-                     "scenes": [{"name": "cf", "scene": "scenes/closed_furnace.json", "analytic": 1.0,
-                                 "variants": [{"name": "rpp2", "set": ["render.rpp=2"]}]}]})";
-    }
+    writeFurnaceSuite(dir, 16, 1);
     const SuiteRun run = runSuite(dir, "", "--main-curves-only");
     ASSERT_TRUE(WIFEXITED(run.raw));
     ASSERT_EQ(WEXITSTATUS(run.raw), 0) << run.log;
@@ -633,13 +637,7 @@ TEST(BenchConvergenceCli, MainCurvesOnlyLeavesTheVariantsOut) {
 
 TEST(BenchConvergenceCli, TinySuiteWritesCsvSummaryAndTheCommand) {
     const fs::path dir = scratch();
-    {
-        std::ofstream suite(dir / "suite.json");
-        suite << R"({"modes": {"quick": {"width": 16, "height": 9, "max_spp": 64, "seeds": 2,
-                     "reference_spp": 64, "reference_batches": 2, "peer_max_spp": 2}},
-                     "scenes": [{"name": "cf", "scene": "scenes/closed_furnace.json", "analytic": 1.0,
-                                 "variants": [{"name": "rpp2", "set": ["render.rpp=2"]}]}]})";
-    }
+    writeFurnaceSuite(dir, 64, 2);
     const SuiteRun run = runSuite(dir);
     ASSERT_TRUE(WIFEXITED(run.raw));
     ASSERT_EQ(WEXITSTATUS(run.raw), 0) << run.log;
