@@ -85,31 +85,65 @@ BlockNoise blockNoise(const AdaptiveBlocks& blocks, std::span<const float> meanR
     return noise;
 }
 
+namespace {
+
+// Each block's s/(n·√c), its deviation at least kAdaptiveDeviationFloor of the mean block's; a
+// sample traces at least its camera ray.
+std::vector<double> behindRatios(std::span<const double> deviation, std::span<const double> cost,
+                                 std::span<const std::uint64_t> samples) {
+    double meanDeviation = 0.0;
+    for (double s : deviation) meanDeviation += s;
+    meanDeviation /= double(deviation.size());
+    const double floor = kAdaptiveDeviationFloor * meanDeviation;
+    std::vector<double> ratio(samples.size());
+    for (std::size_t b = 0; b < samples.size(); ++b)
+        ratio[b] = std::max(deviation[b], floor) / (double(samples[b]) * std::sqrt(std::max(cost[b], 1.0)));
+    return ratio;
+}
+
+double meanOf(const std::vector<double>& v) {
+    double sum = 0.0;
+    for (double x : v) sum += x;
+    return sum / double(v.size());
+}
+
+} // namespace
+
 std::vector<std::uint8_t> activeBlocks(std::span<const double> deviation, std::span<const double> cost,
                                        std::span<const std::uint64_t> samples) {
     if (deviation.size() != samples.size() || cost.size() != samples.size())
         throw std::invalid_argument("activeBlocks: one deviation and cost per block");
     std::vector<std::uint8_t> active(samples.size(), 1);
     if (samples.empty() || *std::min_element(samples.begin(), samples.end()) < kAdaptiveWarmupSamples) return active;
-    double meanDeviation = 0.0;
-    for (double s : deviation) meanDeviation += s;
-    meanDeviation /= double(deviation.size());
-    const double floor = kAdaptiveDeviationFloor * meanDeviation;
-    std::vector<double> ratio(samples.size());
-    double meanRatio = 0.0;
-    for (std::size_t b = 0; b < samples.size(); ++b) {
-        // A sample traces at least its camera ray.
-        ratio[b] = std::max(deviation[b], floor) / (double(samples[b]) * std::sqrt(std::max(cost[b], 1.0)));
-        meanRatio += ratio[b];
-    }
-    meanRatio /= double(samples.size());
+    const std::vector<double> ratio = behindRatios(deviation, cost, samples);
     // Where the ratios are all alike (a furnace: no variance anywhere) every block takes the pass,
     // the mean's rounding aside.
-    const double threshold = meanRatio * (1.0 - 1e-9);
+    const double threshold = meanOf(ratio) * (1.0 - 1e-9);
     for (std::size_t b = 0; b < samples.size(); ++b) active[b] = ratio[b] >= threshold ? 1 : 0;
     if (std::find(active.begin(), active.end(), 1) == active.end())   // rounding: the largest ratio takes it
         active[std::size_t(std::max_element(ratio.begin(), ratio.end()) - ratio.begin())] = 1;
     return active;
+}
+
+std::vector<std::uint8_t> passRounds(const AdaptiveBlocks& blocks, std::span<const double> deviation,
+                                     std::span<const double> cost, std::span<const std::uint64_t> samples) {
+    if (samples.size() != std::size_t(blocks.count())) throw std::invalid_argument("passRounds: one count per block");
+    std::vector<std::uint8_t> rounds = activeBlocks(deviation, cost, samples);
+    if (samples.empty() || *std::min_element(samples.begin(), samples.end()) < kAdaptiveWarmupSamples) return rounds;
+    const std::vector<double> ratio = behindRatios(deviation, cost, samples);
+    const double meanRatio = meanOf(ratio);
+    if (!(meanRatio > 0.0)) return rounds;   // no variance anywhere: one round each
+    std::uint64_t paths = 0, pixels = 0;
+    for (std::size_t b = 0; b < samples.size(); ++b) {
+        if (rounds[b])
+            rounds[b] = std::uint8_t(std::clamp(std::floor(ratio[b] / meanRatio), 1.0, double(kAdaptiveMaxRounds)));
+        paths += std::uint64_t(rounds[b]) * std::uint64_t(blocks.pixelsIn(int(b)));
+        pixels += std::uint64_t(blocks.pixelsIn(int(b)));
+    }
+    if (paths > pixels)   // never more paths than an even pass
+        for (std::uint8_t& r : rounds)
+            if (r > 1) r = std::uint8_t(std::max<std::uint64_t>(1, std::uint64_t(r) * pixels / paths));
+    return rounds;
 }
 
 double adaptiveGain(std::span<const double> deviation, std::span<const double> cost) {
@@ -126,14 +160,14 @@ double adaptiveGain(std::span<const double> deviation, std::span<const double> c
     return (s2 / n) * (c / n) / ((sc / n) * (sc / n));
 }
 
-std::uint64_t passScale(const AdaptiveBlocks& blocks, std::span<const std::uint8_t> active) {
-    if (active.size() != std::size_t(blocks.count())) throw std::invalid_argument("passScale: one flag per block");
-    std::uint64_t activePixels = 0;
-    for (std::size_t b = 0; b < active.size(); ++b)
-        if (active[b]) activePixels += std::uint64_t(blocks.pixelsIn(int(b)));
-    if (activePixels == 0) return 1;
+std::uint64_t passScale(const AdaptiveBlocks& blocks, std::span<const std::uint8_t> rounds) {
+    if (rounds.size() != std::size_t(blocks.count())) throw std::invalid_argument("passScale: one count per block");
+    std::uint64_t paths = 0;
+    for (std::size_t b = 0; b < rounds.size(); ++b)
+        paths += std::uint64_t(rounds[b]) * std::uint64_t(blocks.pixelsIn(int(b)));
+    if (paths == 0) return 1;
     const std::uint64_t pixels = std::uint64_t(blocks.width) * std::uint64_t(blocks.height);
-    return std::clamp<std::uint64_t>(pixels / activePixels, 1, kAdaptiveMaxPassScale);
+    return std::clamp<std::uint64_t>(pixels / paths, 1, kAdaptiveMaxPassScale);
 }
 
 } // namespace raylab

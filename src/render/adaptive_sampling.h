@@ -70,6 +70,14 @@ BlockNoise blockNoise(const AdaptiveBlocks& blocks, std::span<const float> meanR
 std::vector<std::uint8_t> activeBlocks(std::span<const double> deviation, std::span<const double> cost,
                                        std::span<const std::uint64_t> samples);
 
+// How many rounds of the pass's samples each block takes (0: it sits the pass out): activeBlocks
+// decides who takes it, and a block whose s/(n·√c) is k times the mean takes k rounds (at most
+// kAdaptiveMaxRounds), so that one far behind (a lamp's edge) catches up in fewer passes; never
+// more paths in all than an even pass (bench/adaptive_sampling.md, "Rounds").
+constexpr std::uint64_t kAdaptiveMaxRounds = 8;
+std::vector<std::uint8_t> passRounds(const AdaptiveBlocks& blocks, std::span<const double> deviation,
+                                     std::span<const double> cost, std::span<const std::uint64_t> samples);
+
 // What the best spreading would gain over even spreading, per unit of time: the image's MSE with
 // n ∝ s/√c over the MSE with every block taking every pass, mean(s²)·mean(c) / mean(s·√c)² (at
 // least 1, by Cauchy–Schwarz; minimise Σ s²/n with Σ n·c fixed). From blockNoise's deviations and costs.
@@ -86,10 +94,10 @@ constexpr double kAdaptiveMinGain = 2.5;
 constexpr double kAdaptiveGateRecheckGrowth = 1.25;
 
 // A pass that only some blocks take would be a pass's fixed costs (its draws, the plan's read-back)
-// for less work: those blocks take the pass's samples this many times over, the image's pixels
-// over the active ones rounded down, at most kAdaptiveMaxPassScale, so that a pass traces nearly as
-// many samples as an even one and never more.
+// for less work: each round of it takes the pass's samples this many times over, the image's pixels
+// over the paths of one sample per round (`rounds`: passRounds, or 0/1 flags) rounded down, at most
+// kAdaptiveMaxPassScale, so that a pass traces nearly as many samples as an even one and never more.
 constexpr std::uint64_t kAdaptiveMaxPassScale = 8;
-std::uint64_t passScale(const AdaptiveBlocks& blocks, std::span<const std::uint8_t> active);
+std::uint64_t passScale(const AdaptiveBlocks& blocks, std::span<const std::uint8_t> rounds);
 
 } // namespace raylab

@@ -240,7 +240,8 @@ void PathTracer::reset() {
     if (accumTexture_) glClearTexImage(accumTexture_, 0, GL_RGBA, GL_FLOAT, zero);
     if (halfTexture_) glClearTexImage(halfTexture_, 0, GL_RGBA, GL_FLOAT, zero);
     blockSamples_.assign(std::size_t(blocks_.count()), 0);
-    passBlocks_.clear();
+    passRounds_.clear();
+    roundsTraced_ = 1;
     planned_ = false;
     gateClosedAt_ = 0;
     gainReads_ = 0;
@@ -302,7 +303,15 @@ void PathTracer::renderPass(int rpp) {
     if (rpp <= 0) rpp = defaultRpp_;
     if (adaptive_) {
         if (!planned_) planPass();
-        rpp *= int(passScale(blocks_, passBlocks_));
+        rpp *= int(passScale(blocks_, passRounds_));
+        const int rounds = int(*std::max_element(passRounds_.begin(), passRounds_.end()));
+        for (int k = 0; k < rounds; ++k) {
+            if (k > 0) uploadPlan(k);
+            traceBand(0, height_, k * rpp, rpp);
+        }
+        roundsTraced_ = rounds;
+        finishPass(rpp);
+        return;
     }
     traceBand(0, height_, 0, rpp);
     finishPass(rpp);
@@ -353,13 +362,18 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
         const glm::ivec2 viewport = fragmentStripSize(width_, height_, tiles);
         glViewport(0, 0, viewport.x, viewport.y);
-        if (band) {   // the full-screen triangle, cut to the band's rows
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(0, y, width_, rows);
-        }
         glBindVertexArray(vertexArray_);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        if (band) glDisable(GL_SCISSOR_TEST);
+        const std::vector<glm::ivec4> cut = band ? std::vector<glm::ivec4>{{0, y, width_, rows}} : planRects(tiles);
+        if (cut.empty()) {
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        } else {   // the full-screen triangle, cut to the band's rows or the plan's blocks
+            glEnable(GL_SCISSOR_TEST);
+            for (const glm::ivec4& r : cut) {
+                glScissor(r.x, r.y, r.z, r.w);
+                glDrawArrays(GL_TRIANGLES, 0, 3);
+            }
+            glDisable(GL_SCISSOR_TEST);
+        }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     } else {
         const auto groups = [](int n, int size) { return GLuint((n + size - 1) / size); };
@@ -389,37 +403,65 @@ void PathTracer::finishPass(int rpp) {
     }
     if (!planned_) return;   // no band of this pass was traced
     for (std::size_t b = 0; b < blockSamples_.size(); ++b)
-        if (passBlocks_[b]) blockSamples_[b] += std::uint64_t(rpp);
+        blockSamples_[b] += std::uint64_t(rpp) * std::uint64_t(std::min<int>(passRounds_[b], roundsTraced_));
+    roundsTraced_ = 1;
     samplesPerPixel_ = pathsTraced() / (std::uint64_t(width_) * std::uint64_t(height_));
     planned_ = false;
 }
 
 void PathTracer::planPass() {
-    const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
     if (*std::min_element(blockSamples_.begin(), blockSamples_.end()) < kAdaptiveWarmupSamples ||
         (gateClosedAt_ > 0 && double(samplesPerPixel_) < kAdaptiveGateRecheckGrowth * double(gateClosedAt_))) {
-        passBlocks_.assign(blockSamples_.size(), 1);
+        passRounds_.assign(blockSamples_.size(), 1);
     } else {
         const BlockNoise noise = adaptiveNoise();
         ++gainReads_;
         if (adaptiveGain(noise.deviation, noise.cost) < kAdaptiveMinGain) {
-            passBlocks_.assign(blockSamples_.size(), 1);
+            passRounds_.assign(blockSamples_.size(), 1);
             gateClosedAt_ = std::max<std::uint64_t>(samplesPerPixel_, 1);
         } else {
-            passBlocks_ = activeBlocks(noise.deviation, noise.cost, blockSamples_);
+            passRounds_ = passRounds(blocks_, noise.deviation, noise.cost, blockSamples_);
             gateClosedAt_ = 0;
         }
     }
+    uploadPlan(0);
+    planned_ = true;
+}
+
+std::vector<glm::ivec4> PathTracer::planRects(int tiles) const {
+    // A fragment that sits a pass out still runs the tracer's code masked (llvmpipe never
+    // branches), so a round that few blocks take is drawn as the runs of their fragment blocks.
+    if (!adaptive_ || passRounds_.empty()) return {};
+    std::vector<glm::ivec2> corners;
+    for (std::size_t b = 0; b < passRounds_.size(); ++b)
+        if (passRounds_[b] > planRound_)
+            corners.push_back(glsl::blockFragment(int(b), glm::ivec2(width_, height_), tiles));
+    if (corners.size() == passRounds_.size()) return {};
+    std::sort(corners.begin(), corners.end(),
+              [](glm::ivec2 a, glm::ivec2 b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+    std::vector<glm::ivec4> runs;
+    for (glm::ivec2 c : corners) {
+        if (!runs.empty() && runs.back().y == c.y && runs.back().x + runs.back().z == c.x)
+            runs.back().z += glsl::FRAGMENT_BLOCK;
+        else
+            runs.push_back({c.x, c.y, glsl::FRAGMENT_BLOCK, glsl::FRAGMENT_BLOCK});
+    }
+    if (runs.size() > kMaxPlanRects) return {};
+    return runs;
+}
+
+void PathTracer::uploadPlan(int round) {
+    planRound_ = round;
+    const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
     std::vector<GLuint> plan(pixels);
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x) {
             const std::size_t b = std::size_t(blocks_.blockOf(x, y));
             plan[std::size_t(y) * std::size_t(width_) + std::size_t(x)] =
-                passBlocks_[b] ? GLuint(std::min<std::uint64_t>(blockSamples_[b], glsl::ADAPTIVE_SKIP - 1u))
-                               : glsl::ADAPTIVE_SKIP;
+                passRounds_[b] > round ? GLuint(std::min<std::uint64_t>(blockSamples_[b], glsl::ADAPTIVE_SKIP - 1u))
+                                       : glsl::ADAPTIVE_SKIP;
         }
     glTextureSubImage2D(planTexture_, 0, 0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, plan.data());
-    planned_ = true;
 }
 
 BlockNoise PathTracer::adaptiveNoise() const {

@@ -74,7 +74,8 @@ public:
     // render.adaptive: what restoreAccumulation needs beside the image to go on as this render would.
     AdaptiveState adaptiveState() const;
     // Traces rpp samples per pixel (the scene's render.rpp when rpp <= 0) and waits for them; an
-    // adaptive render gives the blocks that take the pass passScale(...) times rpp (adaptive_sampling.h).
+    // adaptive render gives each block that takes the pass its passRounds(...) rounds of
+    // passScale(...) times rpp (adaptive_sampling.h).
     void renderPass(int rpp = 0);
     // Time slicing for interactive use (the viewer): one pass may be traced as horizontal bands and
     // sample chunks. traceBand traces samples [spp + sampleOffset, + rpp) of rows [y, y + rows) and
@@ -139,8 +140,14 @@ public:
 private:
     void allocateImage(int width, int height);
     void drawBand(int y, int rows, int sampleOffset, int rpp);   // one draw of traceBand
+    void uploadPlan(int round);   // render.adaptive: the plan image for the pass's round (its blocks with more rounds)
+    // render.adaptive, the fragment entry: the scissor rectangles of the planned round's blocks in
+    // the fragment layout, runs of them merged; none (one full draw) when every block takes it or
+    // when there would be more than kMaxPlanRects.
+    std::vector<glm::ivec4> planRects(int tiles) const;
+    static constexpr std::size_t kMaxPlanRects = 256;
     void allocateAdaptiveImages();   // render.adaptive's plan and half images, once it is in effect
-    void planPass();   // render.adaptive: which blocks take the pass (adaptive_sampling.h), uploaded
+    void planPass();   // render.adaptive: each block's rounds of the pass (adaptive_sampling.h), round 0 uploaded
 
     static ShaderProgram compileVariant(const ShaderDefines& features, const void* self);
 
@@ -156,8 +163,10 @@ private:
     bool adaptive_ = false;
     AdaptiveBlocks blocks_;
     std::vector<std::uint64_t> blockSamples_;   // render.adaptive: samples each block holds
-    std::vector<std::uint8_t> passBlocks_;      // the planned pass's blocks (1: takes it)
-    bool planned_ = false;                      // passBlocks_ is the current pass's plan
+    std::vector<std::uint8_t> passRounds_;      // the planned pass's rounds per block (passRounds; 0: sits it out)
+    int planRound_ = 0;                         // the round the plan image holds
+    int roundsTraced_ = 1;                      // rounds of the pass traced (renderPass all; the viewer's slices one)
+    bool planned_ = false;                      // passRounds_ is the current pass's plan
     std::uint64_t gateClosedAt_ = 0;            // spp when the gain was last below kAdaptiveMinGain, else 0
     std::uint64_t gainReads_ = 0;               // plans that read the blocks' noise back
     unsigned framebuffer_ = 0;

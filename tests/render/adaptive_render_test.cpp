@@ -175,29 +175,38 @@ TEST_F(AdaptiveRenderTest, TheEstimatedErrorOfTheMeanIsItsErrorAgainstAReference
     EXPECT_LT(estimated / measured, 1.33);
 }
 
-TEST_F(AdaptiveRenderTest, APassGivesItsBlocksTheirPassScaleOfSamples) {
-    // After the warm-up, a pass of rpp 8 that only some blocks take gives each of them
-    // passScale × 8 samples (adaptive_sampling.h), so the pass traces nearly as many paths as an
-    // even one and never more.
+TEST_F(AdaptiveRenderTest, APassGivesItsBlocksTheirRoundsTimesThePassScaleOfSamples) {
+    // After the warm-up, a pass of rpp 8 gives each block that takes it r rounds (1 to
+    // kAdaptiveMaxRounds, passRounds) of passScale × 8 samples (adaptive_sampling.h), so the
+    // pass traces nearly as many paths as an even one and never more.
     PathTracer tracer;
     tracer.setScene(cornell({"render.spp=64", "render.adaptive=true"}));
     tracer.renderPass(16);
+    bool moreRounds = false;
     for (int pass = 0; pass < 3; ++pass) {
         const std::vector<std::uint64_t> before = tracer.blockSamples();
         const std::uint64_t pathsBefore = tracer.pathsTraced();
         tracer.renderPass(8);
         const std::vector<std::uint64_t>& after = tracer.blockSamples();
-        std::vector<std::uint8_t> active(before.size());
-        for (std::size_t b = 0; b < before.size(); ++b) active[b] = after[b] > before[b] ? 1 : 0;
-        const std::uint64_t scale = passScale(tracer.adaptiveBlocks(), active);
-        EXPECT_GT(scale, 1u) << "pass " << pass << ": the background's blocks should sit it out";
+        std::uint64_t least = 0;
+        for (std::size_t b = 0; b < before.size(); ++b)
+            if (after[b] > before[b] && (least == 0 || after[b] - before[b] < least)) least = after[b] - before[b];
+        ASSERT_GT(least, 0u);
+        std::vector<std::uint8_t> rounds(before.size());
         for (std::size_t b = 0; b < before.size(); ++b) {
-            if (active[b]) {
-                EXPECT_EQ(after[b] - before[b], 8 * scale) << "block " << b;
-            }
+            const std::uint64_t added = after[b] - before[b];
+            ASSERT_EQ(added % least, 0u) << "pass " << pass << ", block " << b << ": " << added << " of " << least;
+            ASSERT_LE(added / least, kAdaptiveMaxRounds) << "pass " << pass << ", block " << b;
+            rounds[b] = std::uint8_t(added / least);
+            moreRounds = moreRounds || rounds[b] > 1;
         }
+        EXPECT_NE(std::find(rounds.begin(), rounds.end(), 0), rounds.end())
+            << "pass " << pass << ": the background's blocks should sit it out";
+        const std::uint64_t scale = passScale(tracer.adaptiveBlocks(), rounds);
+        EXPECT_EQ(least, 8 * scale) << "pass " << pass;
         EXPECT_LE(tracer.pathsTraced() - pathsBefore, std::uint64_t(8 * 32 * 18));
     }
+    EXPECT_TRUE(moreRounds) << "the lamp's blocks, far behind, should take more than one round";
 }
 
 TEST_F(AdaptiveRenderTest, OneSeedGivesOneImage) {

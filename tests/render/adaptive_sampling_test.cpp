@@ -224,3 +224,45 @@ TEST(AdaptiveSampling, APassThatFewBlocksTakeGivesThemMoreSamples) {
     EXPECT_EQ(passScale(AdaptiveBlocks{5, 5}, std::vector<std::uint8_t>{1, 0, 0, 0}), 1u);
     EXPECT_THROW(passScale(four, std::vector<std::uint8_t>(3, 1)), std::invalid_argument);
 }
+
+TEST(AdaptiveSampling, ABlockFarBehindTakesThePassInMoreRounds) {
+    // Sixteen 4 × 4 blocks of 16 × 16 pixels, cost 1, 64 samples each: block 0's deviation is k
+    // times the others', so its s/(n·√c) is 16k/(k + 15) times the mean.
+    const AdaptiveBlocks blocks{16, 16};
+    const std::vector<double> c(16, 1.0);
+    const std::vector<std::uint64_t> n(16, 64);
+    for (double k : {1.0, 2.0, 3.0, 8.0, 100.0}) {
+        std::vector<double> s(16, 1.0);
+        s[0] = k;
+        const std::vector<std::uint8_t> rounds = passRounds(blocks, s, c, n);
+        const double behind = 16.0 * k / (k + 15.0);
+        EXPECT_EQ(rounds[0], std::min<std::uint64_t>(std::uint64_t(std::floor(behind)), kAdaptiveMaxRounds)) << k;
+        for (std::size_t b = 1; b < 16; ++b) EXPECT_EQ(rounds[b], k == 1.0 ? 1 : 0) << k << ", block " << b;
+        // Whoever takes the pass is as activeBlocks says.
+        const std::vector<std::uint8_t> active = activeBlocks(s, c, n);
+        for (std::size_t b = 0; b < 16; ++b) EXPECT_EQ(rounds[b] > 0, active[b] > 0) << k << ", block " << b;
+    }
+    // The warm-up and blocks alike: one round each.
+    std::vector<std::uint64_t> warm(16, 64);
+    warm[5] = kAdaptiveWarmupSamples - 1;
+    std::vector<double> s(16, 1.0);
+    s[0] = 100.0;
+    EXPECT_EQ(passRounds(blocks, s, c, warm), std::vector<std::uint8_t>(16, 1));
+    EXPECT_EQ(passRounds(blocks, std::vector<double>(16, 0.0), c, n), std::vector<std::uint8_t>(16, 1));
+}
+
+TEST(AdaptiveSampling, APassInRoundsNeverTracesMoreThanAnEvenPass) {
+    // 5 × 5 pixels: blocks of 16, 4, 4 and 1 pixels. The full block far behind would take
+    // kAdaptiveMaxRounds × 16 > 25 paths; it is cut back to what an even pass traces.
+    const AdaptiveBlocks blocks{5, 5};
+    const std::vector<double> s = {10.0, 1.0, 1.0, 0.1};
+    const std::vector<std::uint8_t> rounds = passRounds(blocks, s, std::vector<double>(4, 1.0),
+                                                        std::vector<std::uint64_t>(4, 64));
+    std::uint64_t paths = 0;
+    for (int b = 0; b < 4; ++b) paths += rounds[std::size_t(b)] * std::uint64_t(blocks.pixelsIn(b));
+    EXPECT_LE(paths, 25u);
+    EXPECT_EQ(rounds, std::vector<std::uint8_t>({1, 0, 0, 0}));
+    // The pass scale counts a block's rounds: two rounds of one block of four are half the image.
+    EXPECT_EQ(passScale(AdaptiveBlocks{8, 8}, std::vector<std::uint8_t>{2, 0, 0, 0}), 2u);
+    EXPECT_EQ(passScale(AdaptiveBlocks{8, 8}, std::vector<std::uint8_t>{2, 1, 1, 0}), 1u);
+}

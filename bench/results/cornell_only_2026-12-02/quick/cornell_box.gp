@@ -1,0 +1,13 @@
+set terminal pngcairo size 900,380 font ',10' noenhanced
+set output '/tmp/cb_rounds/quick/cornell_box.png'
+set datafile separator ','
+set logscale xy
+set grid
+set key bottom left
+set multiplot layout 1,2 title 'cornell_box: RMSE against time and samples'
+set xlabel 'seconds'
+set ylabel 'RMSE'
+plot '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab' && strcol(3) eq 'mean' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab:bsdf' && strcol(3) eq 'mean' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab:bsdf', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab:nee' && strcol(3) eq 'mean' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab:nee', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab:mis' && strcol(3) eq 'mean' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab:mis', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab:even' && strcol(3) eq 'mean' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab:even', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'cycles' && strcol(3) eq '1' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'cycles', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'cycles:adaptive' && strcol(3) eq '1' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'cycles:adaptive'
+set xlabel 'samples per pixel'
+plot '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab' && strcol(3) eq 'mean' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab:bsdf' && strcol(3) eq 'mean' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab:bsdf', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab:nee' && strcol(3) eq 'mean' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab:nee', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab:mis' && strcol(3) eq 'mean' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab:mis', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'raylab:even' && strcol(3) eq 'mean' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab:even', '/tmp/cb_rounds/quick/convergence.csv' using (strcol(1) eq 'cornell_box' && strcol(2) eq 'cycles' && strcol(3) eq '1' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'cycles'
+unset multiplot
