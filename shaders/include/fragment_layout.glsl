@@ -27,15 +27,5 @@ RL_FN ivec2 fragmentPixel(ivec2 frag, ivec2 imageSize, int tiles) {
     return imageBlock * FRAGMENT_BLOCK + (frag - block * FRAGMENT_BLOCK);
 }
 
-// The fragment block (its lower-left fragment) that traces image block `block`, counted row by row
-// from the bottom as fragmentPixel counts them: its inverse, for draws cut to some blocks.
-RL_FN ivec2 blockFragment(int block, ivec2 imageSize, int tiles) {
-    int imageBlocksPerRow = (imageSize.x + FRAGMENT_BLOCK - 1) / FRAGMENT_BLOCK;
-    if (tiles == 0) return ivec2(block % imageBlocksPerRow, block / imageBlocksPerRow) * FRAGMENT_BLOCK;
-    int tile = block % tiles;
-    int inTile = block / tiles;
-    return ivec2(tile * TILE_BLOCKS + inTile % TILE_BLOCKS, inTile / TILE_BLOCKS) * FRAGMENT_BLOCK;
-}
-
 RL_NAMESPACE_END
 #endif

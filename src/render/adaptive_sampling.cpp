@@ -87,24 +87,37 @@ BlockNoise blockNoise(const AdaptiveBlocks& blocks, std::span<const float> meanR
 
 namespace {
 
+double meanOf(std::span<const double> v) {
+    double sum = 0.0;
+    for (double x : v) sum += x;
+    return sum / double(v.size());
+}
+
 // Each block's s/(n·√c), its deviation at least kAdaptiveDeviationFloor of the mean block's; a
 // sample traces at least its camera ray.
 std::vector<double> behindRatios(std::span<const double> deviation, std::span<const double> cost,
                                  std::span<const std::uint64_t> samples) {
-    double meanDeviation = 0.0;
-    for (double s : deviation) meanDeviation += s;
-    meanDeviation /= double(deviation.size());
-    const double floor = kAdaptiveDeviationFloor * meanDeviation;
+    const double floor = kAdaptiveDeviationFloor * meanOf(deviation);
     std::vector<double> ratio(samples.size());
     for (std::size_t b = 0; b < samples.size(); ++b)
         ratio[b] = std::max(deviation[b], floor) / (double(samples[b]) * std::sqrt(std::max(cost[b], 1.0)));
     return ratio;
 }
 
-double meanOf(const std::vector<double>& v) {
-    double sum = 0.0;
-    for (double x : v) sum += x;
-    return sum / double(v.size());
+// activeBlocks from the blocks' ratios, after the warm-up.
+std::vector<std::uint8_t> atOrAboveTheMean(const std::vector<double>& ratio, double meanRatio) {
+    // Where the ratios are all alike (a furnace: no variance anywhere) every block takes the pass,
+    // the mean's rounding aside.
+    const double threshold = meanRatio * (1.0 - 1e-9);
+    std::vector<std::uint8_t> active(ratio.size());
+    for (std::size_t b = 0; b < ratio.size(); ++b) active[b] = ratio[b] >= threshold ? 1 : 0;
+    if (std::find(active.begin(), active.end(), 1) == active.end())   // rounding: the largest ratio takes it
+        active[std::size_t(std::max_element(ratio.begin(), ratio.end()) - ratio.begin())] = 1;
+    return active;
+}
+
+bool warmingUp(std::span<const std::uint64_t> samples) {
+    return samples.empty() || *std::min_element(samples.begin(), samples.end()) < kAdaptiveWarmupSamples;
 }
 
 } // namespace
@@ -113,25 +126,20 @@ std::vector<std::uint8_t> activeBlocks(std::span<const double> deviation, std::s
                                        std::span<const std::uint64_t> samples) {
     if (deviation.size() != samples.size() || cost.size() != samples.size())
         throw std::invalid_argument("activeBlocks: one deviation and cost per block");
-    std::vector<std::uint8_t> active(samples.size(), 1);
-    if (samples.empty() || *std::min_element(samples.begin(), samples.end()) < kAdaptiveWarmupSamples) return active;
+    if (warmingUp(samples)) return std::vector<std::uint8_t>(samples.size(), 1);
     const std::vector<double> ratio = behindRatios(deviation, cost, samples);
-    // Where the ratios are all alike (a furnace: no variance anywhere) every block takes the pass,
-    // the mean's rounding aside.
-    const double threshold = meanOf(ratio) * (1.0 - 1e-9);
-    for (std::size_t b = 0; b < samples.size(); ++b) active[b] = ratio[b] >= threshold ? 1 : 0;
-    if (std::find(active.begin(), active.end(), 1) == active.end())   // rounding: the largest ratio takes it
-        active[std::size_t(std::max_element(ratio.begin(), ratio.end()) - ratio.begin())] = 1;
-    return active;
+    return atOrAboveTheMean(ratio, meanOf(ratio));
 }
 
 std::vector<std::uint8_t> passRounds(const AdaptiveBlocks& blocks, std::span<const double> deviation,
                                      std::span<const double> cost, std::span<const std::uint64_t> samples) {
-    if (samples.size() != std::size_t(blocks.count())) throw std::invalid_argument("passRounds: one count per block");
-    std::vector<std::uint8_t> rounds = activeBlocks(deviation, cost, samples);
-    if (samples.empty() || *std::min_element(samples.begin(), samples.end()) < kAdaptiveWarmupSamples) return rounds;
+    if (deviation.size() != samples.size() || cost.size() != samples.size() ||
+        samples.size() != std::size_t(blocks.count()))
+        throw std::invalid_argument("passRounds: one deviation, cost and count per block");
+    if (warmingUp(samples)) return std::vector<std::uint8_t>(samples.size(), 1);
     const std::vector<double> ratio = behindRatios(deviation, cost, samples);
     const double meanRatio = meanOf(ratio);
+    std::vector<std::uint8_t> rounds = atOrAboveTheMean(ratio, meanRatio);
     if (!(meanRatio > 0.0)) return rounds;   // no variance anywhere: one round each
     std::uint64_t paths = 0, pixels = 0;
     for (std::size_t b = 0; b < samples.size(); ++b) {

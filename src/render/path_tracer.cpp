@@ -241,7 +241,6 @@ void PathTracer::reset() {
     if (halfTexture_) glClearTexImage(halfTexture_, 0, GL_RGBA, GL_FLOAT, zero);
     blockSamples_.assign(std::size_t(blocks_.count()), 0);
     passRounds_.clear();
-    roundsTraced_ = 1;
     planned_ = false;
     gateClosedAt_ = 0;
     gainReads_ = 0;
@@ -309,8 +308,7 @@ void PathTracer::renderPass(int rpp) {
             if (k > 0) uploadPlan(k);
             traceBand(0, height_, k * rpp, rpp);
         }
-        roundsTraced_ = rounds;
-        finishPass(rpp);
+        countPass(rpp, rounds);
         return;
     }
     traceBand(0, height_, 0, rpp);
@@ -362,18 +360,13 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
         const glm::ivec2 viewport = fragmentStripSize(width_, height_, tiles);
         glViewport(0, 0, viewport.x, viewport.y);
-        glBindVertexArray(vertexArray_);
-        const std::vector<glm::ivec4> cut = band ? std::vector<glm::ivec4>{{0, y, width_, rows}} : planRects(tiles);
-        if (cut.empty()) {
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-        } else {   // the full-screen triangle, cut to the band's rows or the plan's blocks
+        if (band) {   // the full-screen triangle, cut to the band's rows
             glEnable(GL_SCISSOR_TEST);
-            for (const glm::ivec4& r : cut) {
-                glScissor(r.x, r.y, r.z, r.w);
-                glDrawArrays(GL_TRIANGLES, 0, 3);
-            }
-            glDisable(GL_SCISSOR_TEST);
+            glScissor(0, y, width_, rows);
         }
+        glBindVertexArray(vertexArray_);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (band) glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     } else {
         const auto groups = [](int n, int size) { return GLuint((n + size - 1) / size); };
@@ -395,7 +388,9 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     }
 }
 
-void PathTracer::finishPass(int rpp) {
+void PathTracer::finishPass(int rpp) { countPass(rpp, 1); }
+
+void PathTracer::countPass(int rpp, int rounds) {
     ++passes_;
     if (!adaptive_) {
         samplesPerPixel_ += std::uint64_t(rpp);
@@ -403,8 +398,7 @@ void PathTracer::finishPass(int rpp) {
     }
     if (!planned_) return;   // no band of this pass was traced
     for (std::size_t b = 0; b < blockSamples_.size(); ++b)
-        blockSamples_[b] += std::uint64_t(rpp) * std::uint64_t(std::min<int>(passRounds_[b], roundsTraced_));
-    roundsTraced_ = 1;
+        blockSamples_[b] += std::uint64_t(rpp) * std::uint64_t(std::min<int>(passRounds_[b], rounds));
     samplesPerPixel_ = pathsTraced() / (std::uint64_t(width_) * std::uint64_t(height_));
     planned_ = false;
 }
@@ -428,30 +422,7 @@ void PathTracer::planPass() {
     planned_ = true;
 }
 
-std::vector<glm::ivec4> PathTracer::planRects(int tiles) const {
-    // A fragment that sits a pass out still runs the tracer's code masked (llvmpipe never
-    // branches), so a round that few blocks take is drawn as the runs of their fragment blocks.
-    if (!adaptive_ || passRounds_.empty()) return {};
-    std::vector<glm::ivec2> corners;
-    for (std::size_t b = 0; b < passRounds_.size(); ++b)
-        if (passRounds_[b] > planRound_)
-            corners.push_back(glsl::blockFragment(int(b), glm::ivec2(width_, height_), tiles));
-    if (corners.size() == passRounds_.size()) return {};
-    std::sort(corners.begin(), corners.end(),
-              [](glm::ivec2 a, glm::ivec2 b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
-    std::vector<glm::ivec4> runs;
-    for (glm::ivec2 c : corners) {
-        if (!runs.empty() && runs.back().y == c.y && runs.back().x + runs.back().z == c.x)
-            runs.back().z += glsl::FRAGMENT_BLOCK;
-        else
-            runs.push_back({c.x, c.y, glsl::FRAGMENT_BLOCK, glsl::FRAGMENT_BLOCK});
-    }
-    if (runs.size() > kMaxPlanRects) return {};
-    return runs;
-}
-
 void PathTracer::uploadPlan(int round) {
-    planRound_ = round;
     const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
     std::vector<GLuint> plan(pixels);
     for (int y = 0; y < height_; ++y)

@@ -140,12 +140,10 @@ public:
 private:
     void allocateImage(int width, int height);
     void drawBand(int y, int rows, int sampleOffset, int rpp);   // one draw of traceBand
+    // finishPass for a pass whose blocks took min(their passRounds_, rounds) rounds of rpp samples
+    // (renderPass traces them all; the viewer's slices one).
+    void countPass(int rpp, int rounds);
     void uploadPlan(int round);   // render.adaptive: the plan image for the pass's round (its blocks with more rounds)
-    // render.adaptive, the fragment entry: the scissor rectangles of the planned round's blocks in
-    // the fragment layout, runs of them merged; none (one full draw) when every block takes it or
-    // when there would be more than kMaxPlanRects.
-    std::vector<glm::ivec4> planRects(int tiles) const;
-    static constexpr std::size_t kMaxPlanRects = 256;
     void allocateAdaptiveImages();   // render.adaptive's plan and half images, once it is in effect
     void planPass();   // render.adaptive: each block's rounds of the pass (adaptive_sampling.h), round 0 uploaded
 
@@ -164,8 +162,6 @@ private:
     AdaptiveBlocks blocks_;
     std::vector<std::uint64_t> blockSamples_;   // render.adaptive: samples each block holds
     std::vector<std::uint8_t> passRounds_;      // the planned pass's rounds per block (passRounds; 0: sits it out)
-    int planRound_ = 0;                         // the round the plan image holds
-    int roundsTraced_ = 1;                      // rounds of the pass traced (renderPass all; the viewer's slices one)
     bool planned_ = false;                      // passRounds_ is the current pass's plan
     std::uint64_t gateClosedAt_ = 0;            // spp when the gain was last below kAdaptiveMinGain, else 0
     std::uint64_t gainReads_ = 0;               // plans that read the blocks' noise back

@@ -249,6 +249,8 @@ TEST(AdaptiveSampling, ABlockFarBehindTakesThePassInMoreRounds) {
     s[0] = 100.0;
     EXPECT_EQ(passRounds(blocks, s, c, warm), std::vector<std::uint8_t>(16, 1));
     EXPECT_EQ(passRounds(blocks, std::vector<double>(16, 0.0), c, n), std::vector<std::uint8_t>(16, 1));
+    EXPECT_THROW(passRounds(blocks, s, c, std::vector<std::uint64_t>(15, 64)), std::invalid_argument);
+    EXPECT_THROW(passRounds(blocks, std::vector<double>(15, 1.0), c, n), std::invalid_argument);
 }
 
 TEST(AdaptiveSampling, APassInRoundsNeverTracesMoreThanAnEvenPass) {

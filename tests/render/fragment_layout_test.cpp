@@ -4,7 +4,6 @@
 #include "support/gl_test.h"
 #include "support/statistics.h"
 
-#include "render/adaptive_sampling.h"
 #include "render/path_tracer.h"
 #include "shaders/include/fragment_layout.glsl"
 
@@ -60,27 +59,6 @@ TEST(FragmentLayout, TheStripTracesEveryPixelOnce) {
                     if (p.x < w && p.y < h) ++seen[size_t(p.y * w + p.x)];
                 }
             EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), w * h) << "strip tiles " << tiles;
-        }
-}
-
-TEST(FragmentLayout, BlockFragmentIsWhereFragmentPixelPutsABlock) {
-    // The adaptive plan cuts its draws to blocks by blockFragment: each of its 4 × 4 fragments
-    // must trace that block's pixels, in AdaptiveBlocks' numbering.
-    for (const auto& [w, h] : {std::pair{96, 54}, {160, 90}, {7, 3}, {33, 65}, {255, 17}})
-        for (int tiles : {0, 1, 2, 3, 4}) {
-            SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h) + ", " + std::to_string(tiles) + " tiles");
-            const AdaptiveBlocks blocks{w, h};
-            for (int b = 0; b < blocks.count(); ++b) {
-                const glm::ivec2 corner = glsl::blockFragment(b, {w, h}, tiles);
-                ASSERT_EQ(corner.x % glsl::FRAGMENT_BLOCK, 0);
-                ASSERT_EQ(corner.y % glsl::FRAGMENT_BLOCK, 0);
-                for (int dy = 0; dy < glsl::FRAGMENT_BLOCK; ++dy)
-                    for (int dx = 0; dx < glsl::FRAGMENT_BLOCK; ++dx) {
-                        const glm::ivec2 p = glsl::fragmentPixel(corner + glm::ivec2(dx, dy), {w, h}, tiles);
-                        if (p.x < w && p.y < h) ASSERT_EQ(blocks.blockOf(p.x, p.y), b) << dx << ", " << dy;
-                        else ASSERT_TRUE(b / blocks.columns() == blocks.rows() - 1 || b % blocks.columns() == blocks.columns() - 1);
-                    }
-            }
         }
 }
 
