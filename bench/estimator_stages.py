@@ -30,6 +30,8 @@ COMPARISONS = [
     ("veach_mis.json", {}, "render.ggx_sampling", "d_cos", "vndf"),
     # veach_mis.json's four lamps have equal powers: the smallest made ten times as bright, so they differ.
     ("veach_mis.json", {"materials.lamp_xs.strength": 8000}, "render.light_selection", "uniform", "power"),
+    ("cornell_box.json", {}, "render.light_sampling", "area", "solid_angle"),
+    ("cornell_box.json", {"render.mis": False}, "render.light_sampling", "area", "solid_angle"),
 ]
 
 print(f"variance over {SEEDS} seeds at {SPP} spp, {SIZE['render.width']}x{SIZE['render.height']}")

@@ -24,7 +24,7 @@ layout(std430, binding = BINDING_BSDF_SAMPLES) writeonly buffer Samples { Sample
 
 uniform uint uCount;        // the seed and light counts come from the tracer's params block
 uniform int uMode;          // 0: cosine hemisphere, 1: bsdfSample, 2: sphere cone, 3: sky map,
-                            // 4: triangle light by area, 5: light selection
+                            // 4: triangle light, 5: light selection
 uniform vec3 uTriangle0;    // mode 4: the triangle, seen from the origin
 uniform vec3 uTriangle1;
 uniform vec3 uTriangle2;
@@ -63,13 +63,15 @@ void main() {
         return;
     }
     if (uMode == 4) {
-        // As the integrator does it: a point by area, the direction to it, its solid-angle pdf.
-        vec3 q = sampleTrianglePoint(uTriangle0, uTriangle1, uTriangle2, u);
-        float dist2 = dot(q, q);
-        vec3 w = q / sqrt(dist2);
+        // As the integrator does it (sampleTriangleLight): the direction, its solid-angle pdf, and
+        // the pdf that a BSDF sample meeting the same point would be weighed with (MIS).
         vec3 e = cross(uTriangle1 - uTriangle0, uTriangle2 - uTriangle0);
-        float pdf = triangleLightPdf(dist2, dot(normalize(e), w), 0.5 * length(e));
-        samples[i] = SampleRecord(vec4(w, pdf), vec4(0.0));
+        float area = 0.5 * length(e);
+        vec3 w, q;
+        float pdf = sampleTriangleLight(vec3(0.0), uTriangle0, uTriangle1, uTriangle2, area, u, w, q);
+        float hitPdf = triangleLightDirectionPdf(vec3(0.0), uTriangle0, uTriangle1, uTriangle2, area, dot(q, q),
+                                                 dot(normalize(e), w));
+        samples[i] = SampleRecord(vec4(w, pdf), vec4(hitPdf, q));
         return;
     }
     if (uMode == 5) {

@@ -1,5 +1,6 @@
 // The estimator's switchable stages, the thesis's story from naive to better (render.diffuse_sampling,
-// render.ggx_sampling, render.light_selection, render.accel; scene.h's enums take these numbers).
+// render.ggx_sampling, render.light_selection, render.light_sampling, render.accel; scene.h's enums
+// take these numbers).
 // The host sets each RAYLAB_* below per scene (render/shader_variant.cpp), so a variant holds only
 // its own stage's code; C++ sees the defaults, today's best estimator. Preprocessor only, for both
 // C++ and GLSL.
@@ -26,6 +27,15 @@
 // with an equal share (light_selection.glsl's branch without the table).
 #define RAYLAB_LIGHT_SELECTION_POWER 0
 #define RAYLAB_LIGHT_SELECTION_UNIFORM 1
+
+// How a light sample finds a point on an emissive triangle: uniform over the solid angle it
+// subtends (Arvo 1995) where that is well conditioned, or uniform over its area, whose density per
+// solid angle carries the 1/r² and cosine of the light (triangle_light.glsl).
+#define RAYLAB_LIGHT_SAMPLING_SOLID_ANGLE 0
+#define RAYLAB_LIGHT_SAMPLING_AREA 1
+#ifndef RAYLAB_LIGHT_SAMPLING
+#define RAYLAB_LIGHT_SAMPLING RAYLAB_LIGHT_SAMPLING_SOLID_ANGLE
+#endif
 
 // How rays find the nearest surface: the two-level BVH (bvh_traversal.glsl), a flat list of object
 // boxes each followed by all the object's primitives (the thesis's scheme, Fig. 5.2), or every

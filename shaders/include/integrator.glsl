@@ -91,8 +91,8 @@ float emitterLightPdf(vec3 p, uint k) {
 }
 
 // The same for a ray from p (direction d, not unit) that hit a triangle: the light that triangle is
-// (triangleLightIndex[], 1 + index; 0 for none) sampled by area, as a solid-angle density.
-float triangleEmitterLightPdf(vec3 d, Hit hit) {
+// (triangleLightIndex[], 1 + index; 0 for none) as sampleTriangleLight draws it, a solid-angle density.
+float triangleEmitterLightPdf(vec3 p, vec3 d, Hit hit) {
 #if RAYLAB_EMISSIVE_TRIANGLES
     uint light = triangleLightIndex[hit.primitive];
 #if RAYLAB_ONE_SIDED_EMITTERS
@@ -102,7 +102,9 @@ float triangleEmitterLightPdf(vec3 d, Hit hit) {
     int j = int(light) - 1;
     float len = length(d);
     float dist = hit.t * len;
-    float pdf = triangleLightPdf(dist * dist, dot(hit.normal, d) / len, triangleLights[j].p0Area.w);
+    GpuTriangleLight tl = triangleLights[j];
+    float pdf = triangleLightDirectionPdf(p, tl.p0Area.xyz, tl.p1.xyz, tl.p2.xyz, tl.p0Area.w, dist * dist,
+                                          dot(hit.normal, d) / len);
     return pdf * boundedLightPmf(sphereLightCount() + j);
 #else
     return 0.0f;
@@ -174,10 +176,10 @@ float surfaceHitWeight(Ray ray, Hit hit, PrevBounce prev, int lightCount) {
 #if RAYLAB_FEATURE_SPHERES
         float lightPdf = instances[hit.instance].info.x == INSTANCE_SPHERE
                              ? emitterLightPdf(prev.position, hit.primitive)
-                             : triangleEmitterLightPdf(ray.dir, hit);
+                             : triangleEmitterLightPdf(prev.position, ray.dir, hit);
 #else
         // No spheres: no sphere lights, and no per-lane read of the hit's instance (bench/mesh_rays.md).
-        float lightPdf = triangleEmitterLightPdf(ray.dir, hit);
+        float lightPdf = triangleEmitterLightPdf(prev.position, ray.dir, hit);
 #endif
 #else
         float lightPdf = emitterLightPdf(prev.position, hit.primitive);   // only spheres are lights
@@ -257,7 +259,7 @@ LightSample sampleAnalyticLight(GpuAnalyticLight l, vec3 p, vec2 u) {
 }
 #endif
 
-// Spheres by the cone they subtend, triangles by area, the sky map by its distribution and an
+// Spheres by the cone they subtend, triangles by solid angle or area (triangle_light.glsl), the sky map by its distribution and an
 // analytic sky uniformly; a pdf of 0 means no direction.
 LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
 #if RAYLAB_ANALYTIC_LIGHTS
@@ -268,13 +270,8 @@ LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
 #if RAYLAB_EMISSIVE_TRIANGLES
         GpuTriangleLight tl = triangleLights[k - sphereLightCount()];
         vec3 p0 = tl.p0Area.xyz;
-        ls.point = sampleTrianglePoint(p0, tl.p1.xyz, tl.p2.xyz, u);
-        vec3 d = ls.point - p;
-        float dist2 = dot(d, d);
-        if (dist2 > 0.0f) {
-            ls.wi = d / sqrt(dist2);
-            ls.pdf = triangleLightPdf(dist2, dot(normalize(cross(tl.p1.xyz - p0, tl.p2.xyz - p0)), ls.wi),
-                                      tl.p0Area.w);
+        ls.pdf = sampleTriangleLight(p, p0, tl.p1.xyz, tl.p2.xyz, tl.p0Area.w, u, ls.wi, ls.point);
+        if (ls.pdf > 0.0f) {
             ls.L = tl.radiance.rgb;
 #if RAYLAB_ONE_SIDED_EMITTERS
             // The front faces along (p1 − p0) × (p2 − p0); p behind it receives nothing.

@@ -49,6 +49,7 @@ SceneFeatures sceneFeatures(const Scene& scene) {
     f.lightPowerSelection = f.nee && lightPowersDiffer(scene) && scene.render.lightSelection == LightSelection::Power;
     f.diffuseSampling = scene.render.diffuseSampling;
     f.ggxSampling = scene.render.ggxSampling;
+    f.lightSampling = scene.render.lightSampling;
     f.accel = scene.render.accel;
     f.flatSteps = flatLoopIterationsPerSample(scene, false) > kLoopIterationBudget / 2;
     f.emissiveTriangles = false;
@@ -87,6 +88,7 @@ ShaderDefines featureDefines(const SceneFeatures& f) {
     d.emplace_back(tracerDefine("RAYLAB_SAMPLER"), std::to_string(int(f.sampler)));
     d.emplace_back(tracerDefine("RAYLAB_DIFFUSE_SAMPLING"), std::to_string(int(f.diffuseSampling)));
     d.emplace_back(tracerDefine("RAYLAB_GGX_SAMPLING"), std::to_string(int(f.ggxSampling)));
+    d.emplace_back(tracerDefine("RAYLAB_LIGHT_SAMPLING"), std::to_string(int(f.lightSampling)));
     d.emplace_back(tracerDefine("RAYLAB_ACCEL"), std::to_string(int(f.accel)));
     d.emplace_back(tracerDefine("RAYLAB_FLAT_STEPS"), f.usesFlatSteps() ? "1" : "0");
     d.emplace_back(tracerDefine("RAYLAB_OBJECT_COUNT"), std::to_string(f.objectCount));
@@ -111,6 +113,7 @@ std::string featureName(const SceneFeatures& f) {
     add(f.sampler == SamplerKind::ZSobol, "zsobol");
     add(f.diffuseSampling == DiffuseSampling::Uniform, "diffuse-uniform");
     add(f.ggxSampling == GgxSampling::DCos, "ggx-d-cos");
+    add(f.lightSampling == LightSampling::Area, "light-area");
     add(f.accel == Accel::Boxes, "accel-boxes");
     add(f.accel == Accel::None, "accel-none");
     add(f.usesFlatSteps(), "flat-steps");

@@ -23,6 +23,7 @@ struct SceneFeatures {
     SamplerKind sampler = SamplerKind(RAYLAB_SAMPLER);   // render.sampler: RAYLAB_SAMPLER
     DiffuseSampling diffuseSampling = DiffuseSampling(RAYLAB_DIFFUSE_SAMPLING);   // RAYLAB_DIFFUSE_SAMPLING
     GgxSampling ggxSampling = GgxSampling(RAYLAB_GGX_SAMPLING);                   // RAYLAB_GGX_SAMPLING
+    LightSampling lightSampling = LightSampling(RAYLAB_LIGHT_SAMPLING);           // RAYLAB_LIGHT_SAMPLING
     Accel accel = Accel(RAYLAB_ACCEL);                                            // RAYLAB_ACCEL
     bool flatSteps = RAYLAB_FLAT_STEPS;   // boxes/none with a large mesh: RAYLAB_FLAT_STEPS
     // With few objects their number and how many are spheres, else 0: RAYLAB_OBJECT_COUNT, _SPHERE_COUNT.

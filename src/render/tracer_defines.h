@@ -25,6 +25,7 @@ inline constexpr TracerDefine kTracerDefines[] = {
     {"RAYLAB_SAMPLER", "render/shader_variant.cpp"},
     {"RAYLAB_DIFFUSE_SAMPLING", "render/shader_variant.cpp"},
     {"RAYLAB_GGX_SAMPLING", "render/shader_variant.cpp"},
+    {"RAYLAB_LIGHT_SAMPLING", "render/shader_variant.cpp"},
     {"RAYLAB_ACCEL", "render/shader_variant.cpp"},
     {"RAYLAB_FLAT_STEPS", "render/shader_variant.cpp"},
     {"RAYLAB_OBJECT_COUNT", "render/shader_variant.cpp"},

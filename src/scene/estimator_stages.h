@@ -11,7 +11,8 @@
 namespace raylab {
 
 inline constexpr std::string_view kEstimatorStageKeys[] = {"render.diffuse_sampling", "render.ggx_sampling",
-                                                           "render.light_selection", "render.accel"};
+                                                           "render.light_selection", "render.light_sampling",
+                                                           "render.accel"};
 
 // Each stage of the scene as (name without "render.", value as the scene writes it):
 // {"diffuse_sampling", "cosine"}, ...

@@ -203,6 +203,15 @@ std::vector<ParamSpec> buildSceneTable() {
              {{"power", static_cast<int>(LightSelection::Power)},
               {"uniform", static_cast<int>(LightSelection::Uniform)}}),
         [](auto& s) -> auto& { return s.render.lightSelection; });
+    add(spec("render.light_sampling", T::Enum, kAny, kAny, "",
+             "With nee: how a light sample finds a point on an emissive triangle: solid_angle (uniform over the "
+             "solid angle it subtends, Arvo 1995; by area where that is below 1e-3 sr or nearly a hemisphere) or "
+             "area (uniform over its area: the density per solid angle carries 1/r^2 and the light's cosine, noisy "
+             "close to a large light; bench/estimator_stages.md).",
+             G::RecompileShader,
+             {{"solid_angle", static_cast<int>(LightSampling::SolidAngle)},
+              {"area", static_cast<int>(LightSampling::Area)}}),
+        [](auto& s) -> auto& { return s.render.lightSampling; });
     add(spec("render.accel", T::Enum, kAny, kAny, "",
              "How rays find surfaces: bvh (two-level bounding volume hierarchy; with at most 16 objects a "
              "loop over their boxes, and meshes of at most 16 triangles tested without their tree, which the "

@@ -51,6 +51,7 @@ enum class SamplerKind {
 enum class DiffuseSampling { Cosine = RAYLAB_DIFFUSE_COSINE, Uniform = RAYLAB_DIFFUSE_UNIFORM };
 enum class GgxSampling { Vndf = RAYLAB_GGX_VNDF, DCos = RAYLAB_GGX_D_COS };
 enum class LightSelection { Power = RAYLAB_LIGHT_SELECTION_POWER, Uniform = RAYLAB_LIGHT_SELECTION_UNIFORM };
+enum class LightSampling { SolidAngle = RAYLAB_LIGHT_SAMPLING_SOLID_ANGLE, Area = RAYLAB_LIGHT_SAMPLING_AREA };
 enum class Accel { Bvh = RAYLAB_ACCEL_BVH, Boxes = RAYLAB_ACCEL_BOXES, None = RAYLAB_ACCEL_NONE };
 
 struct RenderSettings {
@@ -73,6 +74,7 @@ struct RenderSettings {
     DiffuseSampling diffuseSampling = DiffuseSampling::Cosine;   // bench/estimator_stages.md
     GgxSampling ggxSampling = GgxSampling::Vndf;
     LightSelection lightSelection = LightSelection::Power;
+    LightSampling lightSampling = LightSampling::SolidAngle;   // bench/estimator_stages.md
     Accel accel = Accel::Bvh;
 };
 

@@ -36,7 +36,9 @@ public:
     // Directions from the sky map of a scene uploaded and bound by a GpuScene, with the rotation
     // and mean weight the tracer would set.
     std::vector<GpuSample> skyMap(float rotationRadians, float meanWeight, unsigned count, unsigned seed) const;
-    // Directions towards a triangle light (world-space vertices) seen from the origin, by area.
+    // Directions towards a triangle light (world-space vertices) seen from the origin, as the tracer
+    // samples them (triangle_light.glsl): wiPdf the direction and its pdf, weightLobe.x the pdf a
+    // BSDF sample meeting the same point gets, .yzw that point.
     std::vector<GpuSample> triangleLight(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, unsigned count, unsigned seed) const;
     // Lights picked by light_selection.glsl from the alias table of a scene uploaded and bound by a
     // GpuScene: wiPdf.x is the index (−1 the sky), .y its probability, .w the number that made the

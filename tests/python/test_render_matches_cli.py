@@ -25,7 +25,7 @@ class RenderMatchesCli(unittest.TestCase):
         self.assertTrue(np.array_equal(image, cli), f"{name}: max |difference| {np.abs(image - cli).max()}")
         self.assertEqual(image.meta["spp"], cli.meta["spp"])
         self.assertEqual(image.meta["settings_hash"], cli.meta["settings_hash"])
-        for stage in ("diffuse_sampling", "ggx_sampling", "light_selection", "accel"):
+        for stage in ("diffuse_sampling", "ggx_sampling", "light_selection", "light_sampling", "accel"):
             self.assertEqual(image.meta[stage], cli.meta[stage], stage)   # the EXR's raylab:<stage>
         return image
 
@@ -42,7 +42,7 @@ class RenderMatchesCli(unittest.TestCase):
         # Each stage through --set and the module alike, named in both metadata (the EXR's
         # raylab:* attributes and the module's dict); the defaults are named too.
         stages = {"render.diffuse_sampling": "uniform", "render.ggx_sampling": "d_cos",
-                  "render.light_selection": "uniform", "render.accel": "boxes"}
+                  "render.light_selection": "uniform", "render.light_sampling": "area", "render.accel": "boxes"}
         image = self.assert_same_as_cli("cornell_box.json", 2, 4, [], **stages)
         for key, value in stages.items():
             self.assertEqual(image.meta[key.split(".")[1]], value)

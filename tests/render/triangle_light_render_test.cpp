@@ -1,6 +1,7 @@
 // Emissive triangles as lights on the GPU (OSMesa): NEE-only, BSDF-only and MIS renders of the
-// Cornell box and of a two-sided, transformed triangle lamp agree per pixel; MIS beats BSDF-only
-// at equal samples; scenes without emissive triangles compile the same variant as before.
+// Cornell box and of a two-sided, transformed triangle lamp agree per pixel, and so do light
+// samples by area and by solid angle; MIS beats BSDF-only, and solid angle beats area near a large
+// lamp, at equal samples; scenes without emissive triangles compile the same variant as before.
 #include "render/light_list.h"
 #include "render/shader_variant.h"
 #include "render_helpers.h"
@@ -88,6 +89,38 @@ TEST_F(TriangleLightRenderTest, TwoSidedTransformedTriangleLampAgreesAcrossStrat
     // here, a lamp 20% dimmer.
     const BatchStats dimmer = renderBatches(lampScene({"render.nee=true", "materials.lamp.strength=3.2"}), batches);
     EXPECT_LT(test::fractionOfBlocksAgreeing(bsdf, dimmer, 16, 4), 0.75);
+}
+
+// render.light_sampling area against the default solid_angle, on the lamp that stands on the floor
+// (much of the floor sees it under a large solid angle): NEE-only of each, and MIS by area, agree
+// with NEE-only by solid angle per pixel (as above, ≥ 99.5 % of pixels at α = 0.01, Šidák).
+TEST_F(TriangleLightRenderTest, LightSamplingByAreaAndBySolidAngleAgree) {
+    constexpr int batches = 32;
+    const BatchStats solidAngle = renderBatches(lampScene({"render.mis=false"}), batches);
+    const BatchStats area = renderBatches(lampScene({"render.mis=false", "render.light_sampling=area"}), batches);
+    const BatchStats areaMis = renderBatches(lampScene({"render.light_sampling=area"}), batches);
+    EXPECT_GE(fractionAgreeing(area, solidAngle), 0.995);
+    EXPECT_GE(fractionAgreeing(areaMis, solidAngle), 0.995);
+    // The test can fail: a lamp 10% dimmer must be seen.
+    const BatchStats dimmer = renderBatches(lampScene({"render.mis=false", "materials.lamp.strength=3.6"}), batches);
+    EXPECT_LT(fractionAgreeing(area, dimmer), 0.9);
+}
+
+// Near a large lamp, a light sample by solid angle has the 1/r² and the light's cosine out of its
+// weight: at equal samples (16, NEE only, 64×48 of the standing lamp) its RMSE against a 1024-spp
+// reference (another seed) is below area sampling's. Measured 0.0202 against 0.0243 (−17 %); the
+// bound asks for 10 %.
+TEST_F(TriangleLightRenderTest, LightSamplingBySolidAngleHasLowerErrorNearALargeLamp) {
+    auto with = [](std::vector<std::string> more) {
+        more.insert(more.begin(), {"render.width=64", "render.height=48", "render.rpp=16", "render.mis=false"});
+        return lampScene(more);
+    };
+    const Image reference = test::render(with({"render.spp=1024", "render.rpp=64", "render.seed=99"}));
+    const double solidAngle = test::rmse(test::render(with({"render.spp=16"})), reference);
+    const double area = test::rmse(test::render(with({"render.spp=16", "render.light_sampling=area"})), reference);
+    std::printf("standing lamp 64x48, 16 spp NEE only, RMSE vs 1024 spp: by solid angle %.4f, by area %.4f\n",
+                solidAngle, area);
+    EXPECT_LT(solidAngle, 0.9 * area);
 }
 
 // ctest: slow

@@ -25,7 +25,7 @@ TEST(SceneParameters, TableCoversTheSectionsWithUniqueKeys) {
         "camera.position", "camera.look_at", "camera.up",        "camera.fov",      "camera.aperture",
         "camera.focus_distance", "render.show_mip_level", "render.stage",           "render.width",
         "render.height",   "render.rpp",     "render.spp",       "render.time",     "render.max_bounces",
-        "render.rr_depth", "render.seed",    "render.sampler", "render.diffuse_sampling", "render.ggx_sampling", "render.light_selection", "render.accel", "render.nee",       "render.mis",      "render.adaptive",      "render.exposure",  "render.tone_map", "sky.type",
+        "render.rr_depth", "render.seed",    "render.sampler", "render.diffuse_sampling", "render.ggx_sampling", "render.light_selection", "render.light_sampling", "render.accel", "render.nee",       "render.mis",      "render.adaptive",      "render.exposure",  "render.tone_map", "sky.type",
         "sky.color",       "sky.top",        "sky.bottom",       "sky.rotation",    "sky.strength",
         "ao.distance",     "ao.rays"};
     EXPECT_EQ(keys, expected);

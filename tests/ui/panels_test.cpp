@@ -91,7 +91,7 @@ TEST_F(PanelsTest, TheRenderPanelShowsTheEstimatorAndTheSamplePointsOfAPixel) {
     EXPECT_NE(text.find("adaptive: off, the sobol or independent sampler takes it"), std::string::npos) << text;
     EXPECT_EQ(text.find(", adaptive"), std::string::npos) << text;
     // The estimator's stages: a widget each, and those not at their default in the label.
-    for (const char* key : {"diffuse_sampling", "ggx_sampling", "light_selection", "accel"})
+    for (const char* key : {"diffuse_sampling", "ggx_sampling", "light_selection", "light_sampling", "accel"})
         EXPECT_NE(text.find(key), std::string::npos) << key << " has no widget: " << text;
     ASSERT_TRUE(viewer->document().set("render.diffuse_sampling", "\"uniform\""));
     ASSERT_TRUE(viewer->document().set("render.accel", "\"boxes\""));
