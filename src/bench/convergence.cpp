@@ -149,9 +149,13 @@ TimeToErrorGoal timeToErrorGoalAgainstFastest(const std::vector<Checkpoint>& ray
 }
 
 bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector<Checkpoint>& peer,
-                        std::span<const double> levels, double raylabMean, double peerMean) {
-    for (double l : levels)
-        if (timeToReach(raylab, l * raylabMean) >= 0.0 && timeToReach(peer, l * peerMean) < 0.0) return true;
+                        std::span<const double> levels, double raylabMean, double peerMean,
+                        double raylabStartup, double goal) {
+    for (double l : levels) {
+        const double tr = timeToReach(raylab, l * raylabMean);
+        if (tr < 0.0 || timeToReach(peer, l * peerMean) >= 0.0) continue;
+        if (peer.empty() || peer.back().seconds < goal * (tr + raylabStartup)) return true;
+    }
     return false;
 }
 

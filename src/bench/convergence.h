@@ -63,9 +63,11 @@ TimeToErrorGoal timeToErrorGoalAgainstFastest(const std::vector<Checkpoint>& ray
                                               double peerTarget, double goal, size_t* which = nullptr);
 
 // Whether a peer's curve should go on past its planned last point: at some goal level raylab's
-// curve reached, the peer's has not, so the goal would get only a bound there.
+// curve reached, the peer's has not, and the peer's longest run is still shorter than `goal` times
+// raylab's time there (start-up included), so the bound it gives does not decide the goal.
 bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector<Checkpoint>& peer,
-                        std::span<const double> levels, double raylabMean, double peerMean);
+                        std::span<const double> levels, double raylabMean, double peerMean,
+                        double raylabStartup, double goal);
 
 // Whether a curve has not reached some goal level (a fraction of its reference's mean `mean`):
 // raylab's curves of a peer scene then go on past max_spp (extend_spp), so that the goal there

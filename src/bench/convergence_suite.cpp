@@ -290,7 +290,8 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 Curve even{"cycles", 1, {}};
                 for (int spp = 1; spp <= mode.peerExtendSpp; spp *= 2) {
                     if (spp > mode.peerMaxSpp &&
-                        !peerCurveUndecided(raylabMean, even.points, kGoalLevels, imageMean(reference.mean), peerMean))
+                        !peerCurveUndecided(raylabMean, even.points, kGoalLevels, imageMean(reference.mean), peerMean,
+                                            startupSeconds, kGoalRatio))
                         break;
                     point(even, spp, -1.0);
                 }
@@ -299,7 +300,8 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     Curve adaptive{kCyclesThresholdCurve, 1, {}};
                     for (double threshold : mode.peerThresholds) {
                         if (!adaptive.points.empty() &&
-                            !peerCurveUndecided(raylabMean, adaptive.points, kGoalLevels, imageMean(reference.mean), peerMean))
+                            !peerCurveUndecided(raylabMean, adaptive.points, kGoalLevels, imageMean(reference.mean),
+                                                peerMean, startupSeconds, kGoalRatio))
                             break;
                         point(adaptive, kCyclesStartingMaxSamples, threshold);
                     }
@@ -487,7 +489,8 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                        std::to_string(mode.peerMaxSpp) + " spp" +
                        (mode.peerExtendSpp > mode.peerMaxSpp
                             ? " and on up to " + std::to_string(mode.peerExtendSpp) +
-                                  " where a goal level raylab reached is not yet reached"
+                                  " while a goal level raylab reached is not yet reached and its longest run is under " +
+                                  fmt("%g", kGoalRatio) + "× raylab's time there"
                             : std::string()) +
                        ", one Blender run per sample count, time = its render call" +
                        (mode.peerTimingRuns > 1 ? " (median of " + std::to_string(mode.peerTimingRuns) + " runs)"

@@ -204,19 +204,26 @@ TEST(BenchConvergence, TheCostPerSampleComesFromTheEvenCurveWhereThereIsOne) {
     EXPECT_EQ(tracerCostCurve(without), 0u);
 }
 
-TEST(BenchConvergence, PeerCurveGoesOnOnlyWhereRaylabReachedALevelThePeerHasNot) {
+TEST(BenchConvergence, PeerCurveGoesOnOnlyWhereRaylabReachedALevelThePeerHasNotAndNoBoundDecidesIt) {
     // RMSE = scale/sqrt(spp) against a mean of 1; levels 5 % and 2 %.
     const double levels[] = {0.05, 0.02};
     const auto raylab = sqrtCurve(1024, 1e-3, 0.5);   // 5 % at 100 spp, 2 % at 625 spp: both reached
-    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(64, 1e-3, 0.5), levels, 1.0, 1.0));     // peer: neither yet
-    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-3, 0.5), levels, 1.0, 1.0));    // peer: 5 % only
-    EXPECT_FALSE(peerCurveUndecided(raylab, sqrtCurve(1024, 1e-3, 0.5), levels, 1.0, 1.0));  // peer: both
+    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(64, 1e-3, 0.5), levels, 1.0, 1.0, 0.0, 3.0));     // peer: neither yet
+    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-3, 0.5), levels, 1.0, 1.0, 0.0, 3.0));    // peer: 5 % only
+    EXPECT_FALSE(peerCurveUndecided(raylab, sqrtCurve(1024, 1e-3, 0.5), levels, 1.0, 1.0, 0.0, 3.0));  // peer: both
     // raylab reached neither: more peer samples could not give a ratio.
-    EXPECT_FALSE(peerCurveUndecided(sqrtCurve(64, 1e-3, 0.5), sqrtCurve(64, 1e-3, 0.5), levels, 1.0, 1.0));
+    EXPECT_FALSE(peerCurveUndecided(sqrtCurve(64, 1e-3, 0.5), sqrtCurve(64, 1e-3, 0.5), levels, 1.0, 1.0, 0.0, 3.0));
     // Each renderer's level is of its own reference's mean: a peer mean twice as large halves
     // the peer's relative error, so its 64 spp already reach 5 %, not 2 %.
-    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(64, 1e-3, 0.5), levels, 1.0, 2.0));
-    EXPECT_FALSE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-3, 0.5), levels, 1.0, 2.0));
+    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(64, 1e-3, 0.5), levels, 1.0, 2.0, 0.0, 3.0));
+    EXPECT_FALSE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-3, 0.5), levels, 1.0, 2.0, 0.0, 3.0));
+    // A peer slower than the goal's ratio in its longest run already decides the goal by its
+    // bound: raylab reaches 2 % at 0.625 s, the peer's 256 spp (5 % only) took 2.56 s > 3 × 0.625.
+    EXPECT_FALSE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-2, 0.5), levels, 1.0, 1.0, 0.0, 3.0));
+    // raylab's start-up counts: with 0.5 s of it, 3 × 1.125 s is more than the peer's 2.56 s.
+    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-2, 0.5), levels, 1.0, 1.0, 0.5, 3.0));
+    // At a goal of 4 the same run is not enough either.
+    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-2, 0.5), levels, 1.0, 1.0, 0.0, 4.5));
 }
 
 TEST(BenchConvergence, RaylabCurveGoesOnWhileItMissesAGoalLevel) {
