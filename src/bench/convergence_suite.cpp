@@ -15,6 +15,7 @@
 #include <ctime>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <thread>
 
@@ -41,6 +42,8 @@ constexpr double kLevels[] = {0.10, 0.05, 0.02};
 // The time-to-error goal: at these levels, Cycles' run takes at least kGoalRatio × raylab's.
 constexpr double kGoalLevels[] = {0.05, 0.02};
 constexpr double kGoalRatio = 3.0;
+// A goal ratio no bound reaches: the peer's curve goes on until it reaches the level.
+constexpr double kNoBound = std::numeric_limits<double>::infinity();
 // Samples per pixel per pass, as a batch render would take them: a pass of several samples lets
 // a pixel whose path ended start its next one at once (path regeneration, path_tracer.glsl). The
 // checkpoints' passes are cut to land on 1, 2, 4 … spp. As many as one draw takes: fewer cost
@@ -288,10 +291,12 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     std::cerr << ")\n";
                 };
                 Curve even{"cycles", 1, {}};
-                for (int spp = 1; spp <= mode.peerExtendSpp; spp *= 2) {
+                for (int spp = 1; spp <= mode.peerDecideSpp; spp *= 2) {
+                    // Up to peer_extend_spp until it reaches the levels (a ratio, and the
+                    // sampling-only one beside it), then only until its bound decides the goal.
                     if (spp > mode.peerMaxSpp &&
                         !peerCurveUndecided(raylabMean, even.points, kGoalLevels, imageMean(reference.mean), peerMean,
-                                            startupSeconds, kGoalRatio))
+                                            startupSeconds, spp <= mode.peerExtendSpp ? kNoBound : kGoalRatio))
                         break;
                     point(even, spp, -1.0);
                 }
@@ -301,7 +306,7 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                     for (double threshold : mode.peerThresholds) {
                         if (!adaptive.points.empty() &&
                             !peerCurveUndecided(raylabMean, adaptive.points, kGoalLevels, imageMean(reference.mean),
-                                                peerMean, startupSeconds, kGoalRatio))
+                                                peerMean, startupSeconds, kNoBound))
                             break;
                         point(adaptive, kCyclesStartingMaxSamples, threshold);
                     }
@@ -489,8 +494,12 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                        std::to_string(mode.peerMaxSpp) + " spp" +
                        (mode.peerExtendSpp > mode.peerMaxSpp
                             ? " and on up to " + std::to_string(mode.peerExtendSpp) +
-                                  " while a goal level raylab reached is not yet reached and its longest run is under " +
-                                  fmt("%g", kGoalRatio) + "× raylab's time there"
+                                  " where a goal level raylab reached is not yet reached"
+                            : std::string()) +
+                       (mode.peerDecideSpp > mode.peerExtendSpp
+                            ? ", then up to " + std::to_string(mode.peerDecideSpp) +
+                                  " while its longest run is under " + fmt("%g", kGoalRatio) +
+                                  "× raylab's time at such a level (the bound then decides the goal)"
                             : std::string()) +
                        ", one Blender run per sample count, time = its render call" +
                        (mode.peerTimingRuns > 1 ? " (median of " + std::to_string(mode.peerTimingRuns) + " runs)"

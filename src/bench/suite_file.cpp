@@ -20,6 +20,7 @@ namespace {
 
 constexpr std::string_view kModeKeys[] = {"width", "height", "max_spp", "seeds", "extend_spp", "reference_spp",
                                           "reference_batches", "peer_max_spp", "peer_extend_spp",
+                                          "peer_decide_spp",
                                           "peer_reference_spp", "peer_timing_runs", "peer_thresholds"};
 constexpr std::string_view kSceneKeys[] = {"name", "scene", "analytic", "peer", "variants"};
 constexpr std::string_view kVariantKeys[] = {"name", "set"};
@@ -97,6 +98,7 @@ Suite build(const Json& doc, const std::string& modeName) {
     o.peerReferenceSpp = optionalInteger(m, p, "peer_reference_spp", o.referenceSpp, 1);
     o.peerTimingRuns = optionalInteger(m, p, "peer_timing_runs", 1, 1);
     o.peerExtendSpp = optionalInteger(m, p, "peer_extend_spp", o.peerMaxSpp, o.peerMaxSpp, "peer_max_spp");
+    o.peerDecideSpp = optionalInteger(m, p, "peer_decide_spp", o.peerExtendSpp, o.peerExtendSpp, "peer_extend_spp");
     o.extendSpp = optionalInteger(m, p, "extend_spp", o.maxSpp, o.maxSpp, "max_spp");
     if (m.contains("peer_thresholds")) {
         const Json& t = m.at("peer_thresholds");

@@ -26,6 +26,11 @@ struct SuiteMode {
     // raylab reached is not reached by Cycles (the goal would get a bound there, not a ratio).
     // "peer_extend_spp" (default: peer_max_spp, no extension).
     int peerExtendSpp = 64;
+    // Past peerExtendSpp the curve goes on doubling up to this only while its longest run is still
+    // under the goal's ratio times raylab's time at a level it has not reached: the bound it then
+    // gives decides the goal, without the samples a ratio would take. "peer_decide_spp" (default:
+    // peer_extend_spp).
+    int peerDecideSpp = 64;
     // raylab's curves of a peer scene (every seed, not the variants) are rendered again up to this
     // when their mean misses a goal level at maxSpp (curveMissesALevel), so that level is decided
     // where more samples can decide it. "extend_spp" (default: max_spp, no extension).

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <regex>
 #include <sstream>
@@ -222,8 +223,10 @@ TEST(BenchConvergence, PeerCurveGoesOnOnlyWhereRaylabReachedALevelThePeerHasNotA
     EXPECT_FALSE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-2, 0.5), levels, 1.0, 1.0, 0.0, 3.0));
     // raylab's start-up counts: with 0.5 s of it, 3 × 1.125 s is more than the peer's 2.56 s.
     EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-2, 0.5), levels, 1.0, 1.0, 0.5, 3.0));
-    // At a goal of 4 the same run is not enough either.
+    // At a goal of 4.5 the same run is not enough either, nor at a goal no bound reaches.
     EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-2, 0.5), levels, 1.0, 1.0, 0.0, 4.5));
+    EXPECT_TRUE(peerCurveUndecided(raylab, sqrtCurve(256, 1e-2, 0.5), levels, 1.0, 1.0, 0.0,
+                                   std::numeric_limits<double>::infinity()));
 }
 
 TEST(BenchConvergence, RaylabCurveGoesOnWhileItMissesAGoalLevel) {
@@ -719,6 +722,10 @@ TEST(BenchConvergenceCli, BadSuiteNamesTheFileAndTheKey) {
     // peer_extend_spp is where Cycles' curve may go on to: below peer_max_spp it is refused too.
     refused(R"("seeds": 1, "peer_max_spp": 8, "peer_extend_spp": 4)", "4, \"reference_spp\"",
             "modes.quick.peer_extend_spp: must be at least peer_max_spp (8), got 4");
+    // peer_decide_spp is where it may go on to while its bound does not decide the goal: below
+    // peer_extend_spp it is refused.
+    refused(R"("seeds": 1, "peer_max_spp": 8, "peer_extend_spp": 16, "peer_decide_spp": 8)", "8, \"reference_spp\"",
+            "modes.quick.peer_decide_spp: must be at least peer_extend_spp (16), got 8");
     // extend_spp is where raylab's curves may go on to: below max_spp it is refused.
     refused(R"("seeds": 1, "peer_max_spp": 1, "extend_spp": 2)", "2, \"reference_spp\"",
             "modes.quick.extend_spp: must be at least max_spp (4), got 2");
