@@ -151,10 +151,10 @@ TimeToErrorGoal timeToErrorGoalAgainstFastest(const std::vector<Checkpoint>& ray
 bool peerCurveUndecided(const std::vector<Checkpoint>& raylab, const std::vector<Checkpoint>& peer,
                         std::span<const double> levels, double raylabMean, double peerMean,
                         double raylabStartup, double goal) {
+    // Undecided as the goal table itself would say: raylab got there, the peer not, and no bound.
     for (double l : levels) {
-        const double tr = timeToReach(raylab, l * raylabMean);
-        if (tr < 0.0 || timeToReach(peer, l * peerMean) >= 0.0) continue;
-        if (peer.empty() || peer.back().seconds < goal * (tr + raylabStartup)) return true;
+        const TimeToErrorGoal g = timeToErrorGoal(raylab, raylabStartup, peer, l * raylabMean, l * peerMean, goal);
+        if (g.raylabSeconds > 0.0 && g.peerSeconds < 0.0 && g.verdict == TimeToErrorGoal::Verdict::Open) return true;
     }
     return false;
 }
