@@ -8,7 +8,19 @@
 #include "../include/fragment_layout.glsl"
 
 void main() {
-    ivec2 pixel = fragmentPixel(ivec2(gl_FragCoord.xy), params.imageSize, params.fragmentStripTiles);
+    ivec2 frag = ivec2(gl_FragCoord.xy);
+#if RAYLAB_ADAPTIVE
+    ivec2 pixel;
+    if (params.fragmentStripBlocks > 0) {   // the strip lists the blocks that take this draw
+        int slot = fragmentSlot(frag, params.fragmentStripTiles);
+        if (slot >= params.fragmentStripBlocks) return;
+        pixel = blockPixel(int(adaptiveBlocks[slot]), frag, params.imageSize);
+    } else {
+        pixel = fragmentPixel(frag, params.imageSize, params.fragmentStripTiles);
+    }
+#else
+    ivec2 pixel = fragmentPixel(frag, params.imageSize, params.fragmentStripTiles);
+#endif
     if (pixel.x >= params.imageSize.x || pixel.y >= params.imageSize.y) return;   // past the strip's last block
     tracePixelPass(pixel);
 }

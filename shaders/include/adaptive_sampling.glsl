@@ -30,6 +30,8 @@ RL_NAMESPACE_END
 layout(r32ui, binding = BINDING_SAMPLE_PLAN_IMAGE) readonly uniform uimage2D uSamplePlan;
 // Running means: of the half's samples (rgb) and of the rays traced per sample (a).
 layout(rgba32f, binding = BINDING_ADAPTIVE_HALF_IMAGE) uniform image2D uAdaptiveHalf;
+// The blocks the draw traces, slot by slot of its strip (params.fragmentStripBlocks of them).
+layout(std430, binding = BINDING_ADAPTIVE_BLOCKS) readonly buffer AdaptiveBlocks { uint adaptiveBlocks[]; };
 #endif
 
 #endif

@@ -36,6 +36,7 @@
 #define BINDING_TRIANGLE_LIGHTS 24
 #define BINDING_LIGHT_ALIAS 25         // alias table over every light, by power
 #define BINDING_TRIANGLE_LIGHT_INDEX 26
+#define BINDING_ADAPTIVE_BLOCKS 27     // render.adaptive: the blocks a draw traces, in strip order (fragment_layout.glsl)
 
 // Debug variants and the display pass.
 #define BINDING_DEBUG_MOMENTS 16       // per-pixel moments for the noise and NaN views

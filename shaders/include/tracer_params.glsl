@@ -50,8 +50,8 @@ layout(std140, binding = BINDING_TRACER_PARAMS_UBO) uniform TracerParams {
     uint sampleCount;          // render.spp: samples per pixel of the whole render (stratified strata)
     float aoDistance;          // ao.distance: the ambient-occlusion view's reach, world units
     int aoRays;                // ao.rays: its rays per camera sample
-    int fragmentStripTiles;    // fragment entry: tiles of the strip a small image is drawn in (fragment_layout.glsl); 0 none
-    int padding;               // std140: the block is whole vec4s
+    int fragmentStripTiles;    // fragment entry: tiles of the strip the draw fills (fragment_layout.glsl); 0 none
+    int fragmentStripBlocks;   // fragment entry, render.adaptive: blocks listed in adaptiveBlocks[] for this draw; 0 none
 #ifdef __cplusplus
 };
 
@@ -63,6 +63,8 @@ static_assert(offsetof(TracerParams, camOrigin) % 16 == 0 && offsetof(TracerPara
               offsetof(TracerParams, skyBottom) % 16 == 0, "std140: a vec3 starts on 16 bytes");
 static_assert(offsetof(TracerParams, rpp) == offsetof(TracerParams, sampleStart) + 4,
               "the per-band fields are uploaded as one range");
+static_assert(offsetof(TracerParams, fragmentStripBlocks) == offsetof(TracerParams, fragmentStripTiles) + 4,
+              "the strip's fields are uploaded as one range");
 static_assert(sizeof(TracerParams) % 16 == 0, "std140: a block is whole vec4s");
 RL_NAMESPACE_END
 #else

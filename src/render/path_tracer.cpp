@@ -60,6 +60,7 @@ PathTracer::~PathTracer() {
     glDeleteTextures(1, &accumTexture_);
     glDeleteTextures(1, &planTexture_);
     glDeleteTextures(1, &halfTexture_);
+    glDeleteBuffers(1, &roundBlocksBuffer_);
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &counterBuffer_);
@@ -82,9 +83,13 @@ int fragmentStripTiles(int width, int height, int threads) {
 glm::ivec2 fragmentStripSize(int width, int height, int tiles) {
     if (tiles == 0) return {width, height};
     const auto blocks = [](int n) { return (n + glsl::FRAGMENT_BLOCK - 1) / glsl::FRAGMENT_BLOCK; };
-    const int perTile = (blocks(width) * blocks(height) + tiles - 1) / tiles;
-    const int rows = (perTile + glsl::TILE_BLOCKS - 1) / glsl::TILE_BLOCKS;
-    return {tiles * glsl::RASTER_TILE, rows * glsl::FRAGMENT_BLOCK};
+    return glsl::fragmentStripExtent(blocks(width) * blocks(height), tiles);
+}
+
+int adaptiveStripTiles(int blocks, int stripTiles, int threads) {
+    int tiles = stripTiles > 0 ? stripTiles : std::max(1, threads);
+    while (glsl::fragmentStripExtent(blocks, tiles).y > kMaxAdaptiveStripHeight) tiles *= 2;
+    return tiles;
 }
 
 int rasterThreads() {
@@ -104,16 +109,18 @@ void PathTracer::allocateImage(int width, int height) {
     // render.adaptive's images follow the size; allocateAdaptiveImages makes them when needed.
     glDeleteTextures(1, &planTexture_);
     glDeleteTextures(1, &halfTexture_);
-    planTexture_ = halfTexture_ = 0;
+    glDeleteBuffers(1, &roundBlocksBuffer_);
+    planTexture_ = halfTexture_ = roundBlocksBuffer_ = 0;
     blocks_ = AdaptiveBlocks{width, height};
-    stripTiles_ = options_.entry == TracerEntry::Fragment && options_.balanceTiles
-                             ? fragmentStripTiles(width, height, rasterThreads())
-                             : 0;
+    const bool fragment = options_.entry == TracerEntry::Fragment;
+    stripTiles_ = fragment && options_.balanceTiles ? fragmentStripTiles(width, height, rasterThreads()) : 0;
+    adaptiveTiles_ = fragment && options_.balanceTiles ? adaptiveStripTiles(blocks_.count(), stripTiles_, rasterThreads()) : 0;
     // The fragment entry draws into a framebuffer with no attachments, sized here to hold the
-    // image or its strip.
+    // image, its strip, and an adaptive round's strip of every block.
     const glm::ivec2 strip = fragmentStripSize(width, height, stripTiles_);
-    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_WIDTH, std::max(width, strip.x));
-    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, std::max(height, strip.y));
+    const glm::ivec2 rounds = adaptiveTiles_ > 0 ? glsl::fragmentStripExtent(blocks_.count(), adaptiveTiles_) : glm::ivec2(0);
+    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_WIDTH, std::max({width, strip.x, rounds.x}));
+    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, std::max({height, strip.y, rounds.y}));
     width_ = width;
     height_ = height;
 }
@@ -124,6 +131,9 @@ void PathTracer::allocateAdaptiveImages() {
     glTextureStorage2D(planTexture_, 1, GL_R32UI, width_, height_);
     glCreateTextures(GL_TEXTURE_2D, 1, &halfTexture_);
     glTextureStorage2D(halfTexture_, 1, GL_RGBA32F, width_, height_);
+    glCreateBuffers(1, &roundBlocksBuffer_);
+    glNamedBufferStorage(roundBlocksBuffer_, GLsizeiptr(std::size_t(blocks_.count()) * sizeof(GLuint)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
 }
 
 namespace {
@@ -222,7 +232,7 @@ void PathTracer::updateSettings(const Scene& scene) {
         .aoDistance = scene.ao.distance,
         .aoRays = scene.ao.rays,
         .fragmentStripTiles = 0,   // set per draw by drawBand
-        .padding = 0,
+        .fragmentStripBlocks = 0,   // set per draw by drawBand
     };
     glNamedBufferSubData(paramsBuffer_, 0, sizeof(params_), &params_);
     reset();
@@ -334,11 +344,16 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     // A band (the viewer's, the inspector's row) is drawn as rows of the image, the whole image
     // of a small one as its strip.
     const bool band = y > 0 || rows < height_;
-    const int tiles = band ? 0 : stripTiles_;
-    if (params_.fragmentStripTiles != tiles) {
+    // A whole adaptive draw's strip lists only the blocks that take its round (uploadPlan).
+    const bool listed = adaptive_ && !band && adaptiveTiles_ > 0;
+    const int tiles = listed ? adaptiveTiles_ : band ? 0 : stripTiles_;
+    const int stripBlocks = listed ? roundBlocks_ : 0;
+    if (params_.fragmentStripTiles != tiles || params_.fragmentStripBlocks != stripBlocks) {
         params_.fragmentStripTiles = tiles;
+        params_.fragmentStripBlocks = stripBlocks;
         glNamedBufferSubData(paramsBuffer_, offsetof(glsl::TracerParams, fragmentStripTiles),
-                             sizeof(params_.fragmentStripTiles), &params_.fragmentStripTiles);
+                             sizeof(params_.fragmentStripTiles) + sizeof(params_.fragmentStripBlocks),
+                             &params_.fragmentStripTiles);
     }
 
     const GLuint zeros[3] = {0, 0, 0};
@@ -347,6 +362,7 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     if (adaptive_) {
         glBindImageTexture(BINDING_SAMPLE_PLAN_IMAGE, planTexture_, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
         glBindImageTexture(BINDING_ADAPTIVE_HALF_IMAGE, halfTexture_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_ADAPTIVE_BLOCKS, roundBlocksBuffer_);
     }
     gpuScene_.bind();
     glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_TRACER_PARAMS_UBO, paramsBuffer_);
@@ -358,7 +374,8 @@ void PathTracer::drawBand(int y, int rows, int sampleOffset, int rpp) {
     glUseProgram(program_->id());
     if (options_.entry == TracerEntry::Fragment) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-        const glm::ivec2 viewport = fragmentStripSize(width_, height_, tiles);
+        const glm::ivec2 viewport = listed ? glsl::fragmentStripExtent(stripBlocks, tiles)
+                                           : fragmentStripSize(width_, height_, tiles);
         glViewport(0, 0, viewport.x, viewport.y);
         if (band) {   // the full-screen triangle, cut to the band's rows
             glEnable(GL_SCISSOR_TEST);
@@ -433,6 +450,11 @@ void PathTracer::uploadPlan(int round) {
                                        : glsl::ADAPTIVE_SKIP;
         }
     glTextureSubImage2D(planTexture_, 0, 0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, plan.data());
+    std::vector<GLuint> taking;
+    for (std::size_t b = 0; b < passRounds_.size(); ++b)
+        if (passRounds_[b] > round) taking.push_back(GLuint(b));
+    roundBlocks_ = int(taking.size());
+    glNamedBufferSubData(roundBlocksBuffer_, 0, GLsizeiptr(taking.size() * sizeof(GLuint)), taking.data());
 }
 
 BlockNoise PathTracer::adaptiveNoise() const {

@@ -28,7 +28,7 @@ struct TracerOptions {
     ShaderDefines extraDefines;   // names from kTracerDefines (tracer_defines.h), e.g. RAYLAB_DEBUG_VIEWS
     bool specialise = true;       // compile for the scene's features (false: all features on)
     bool cameraRelative = true;   // upload positions relative to the camera (false: world, for tests)
-    bool balanceTiles = true;     // fragment only: draw a small image as a strip (fragment_layout.glsl)
+    bool balanceTiles = true;     // fragment only: draw a small image as a strip, an adaptive round as the strip of its blocks (fragment_layout.glsl)
 };
 
 // The strip (fragment_layout.glsl) in which the fragment entry draws a width × height image for
@@ -37,6 +37,11 @@ struct TracerOptions {
 int fragmentStripTiles(int width, int height, int threads);
 // The area drawn, in fragments (width, height): the strip's, or the image's for 0 tiles.
 glm::ivec2 fragmentStripSize(int width, int height, int tiles);
+// The tiles of the strip in which an adaptive render's rounds list the blocks that take them
+// (fragment_layout.glsl): the image's strip, else one tile per thread, doubled while the strip of
+// all `blocks` would be taller than kMaxAdaptiveStripHeight fragments.
+constexpr int kMaxAdaptiveStripHeight = 4096;
+int adaptiveStripTiles(int blocks, int stripTiles, int threads);
 // llvmpipe's thread count: LP_NUM_THREADS, else the CPUs.
 int rasterThreads();
 
@@ -158,6 +163,9 @@ private:
     unsigned accumTexture_ = 0;
     unsigned planTexture_ = 0;     // render.adaptive: R32UI, a pixel's samples so far or ADAPTIVE_SKIP
     unsigned halfTexture_ = 0;     // render.adaptive: RGBA32F, the half's running mean and rays per sample
+    unsigned roundBlocksBuffer_ = 0;   // render.adaptive, fragment entry: the round's blocks in strip order
+    int roundBlocks_ = 0;              // how many it lists
+    int adaptiveTiles_ = 0;            // adaptiveStripTiles of the image; 0 for the compute entry
     bool adaptive_ = false;
     AdaptiveBlocks blocks_;
     std::vector<std::uint64_t> blockSamples_;   // render.adaptive: samples each block holds

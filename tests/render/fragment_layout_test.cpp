@@ -4,11 +4,13 @@
 #include "support/gl_test.h"
 #include "support/statistics.h"
 
+#include "render/adaptive_sampling.h"
 #include "render/path_tracer.h"
 #include "shaders/include/fragment_layout.glsl"
 
 #include <algorithm>
 #include <cstdlib>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -62,6 +64,35 @@ TEST(FragmentLayout, TheStripTracesEveryPixelOnce) {
         }
 }
 
+TEST(FragmentLayout, AListedStripTracesItsBlocksOnceAndNoOtherPixel) {
+    // An adaptive round's strip lists the blocks that take it (adaptiveBlocks[]): its fragments
+    // cover exactly their pixels, each once, whatever the blocks and the tiles.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (const glm::ivec2 image : {glm::ivec2{96, 54}, glm::ivec2{37, 21}, glm::ivec2{640, 360}})
+        for (int tiles : {1, 2, 8}) {
+            const AdaptiveBlocks blocks{image.x, image.y};
+            std::vector<int> listed;
+            for (int b = 0; b < blocks.count(); ++b)
+                if (uniform(rng) < 0.3) listed.push_back(b);
+            const glm::ivec2 drawn = glsl::fragmentStripExtent(int(listed.size()), tiles);
+            std::vector<int> traced(size_t(image.x * image.y), 0);
+            for (int y = 0; y < drawn.y; ++y)
+                for (int x = 0; x < drawn.x; ++x) {
+                    const int slot = glsl::fragmentSlot({x, y}, tiles);
+                    if (slot >= int(listed.size())) continue;
+                    const glm::ivec2 p = glsl::blockPixel(listed[size_t(slot)], {x, y}, image);
+                    if (p.x < image.x && p.y < image.y) ++traced[size_t(p.y * image.x + p.x)];
+                }
+            for (int y = 0; y < image.y; ++y)
+                for (int x = 0; x < image.x; ++x) {
+                    const bool isListed = std::binary_search(listed.begin(), listed.end(), blocks.blockOf(x, y));
+                    ASSERT_EQ(traced[size_t(y * image.x + x)], isListed ? 1 : 0)
+                        << image.x << "x" << image.y << ", " << tiles << " tiles, pixel " << x << "," << y;
+                }
+        }
+}
+
 TEST(FragmentLayout, SmallImagesShareTilesEquallyAndLargeOnesKeepTheirPixels) {
     // 96×54 (the quick benchmark's size) as itself: a 64-wide tile and a 32-wide one, so two
     // threads take 4/3 of the ideal time; its strip brings that under 10 %.
@@ -101,4 +132,30 @@ TEST_F(FragmentLayoutRenderTest, TheStripRendersTheSameImageBitForBit) {
     ASSERT_EQ(a.rgba.size(), b.rgba.size());
     for (size_t i = 0; i < a.rgba.size(); ++i) ASSERT_EQ(a.rgba[i], b.rgba[i]) << i;
     EXPECT_GT(test::mean(test::channel(a, 0)), 0.01) << "the box is lit";
+}
+
+TEST_F(FragmentLayoutRenderTest, AnAdaptiveRoundsListedStripRendersTheSameImageBitForBit) {
+    // An adaptive pass's rounds draw only the blocks that take them (uploadPlan's list); drawn
+    // without the list, every fragment runs and the others skip by the plan. The same samples
+    // either way, so the same image, with blocks that sat passes out and blocks of several rounds.
+    const Scene scene = loadScene(test::scenePath("cornell_box.json"), {"render.width=48", "render.height=27",
+                                                                        "render.spp=96", "render.rpp=8",
+                                                                        "render.adaptive=true"});
+    TracerOptions plain;
+    plain.balanceTiles = false;
+    PathTracer listed, unlisted(plain);
+    listed.setScene(scene);
+    unlisted.setScene(scene);
+    for (int pass = 0; pass < 8; ++pass) {
+        listed.renderPass(8);
+        unlisted.renderPass(8);
+    }
+    ASSERT_TRUE(listed.adaptive());
+    const std::vector<std::uint64_t>& samples = listed.blockSamples();
+    ASSERT_EQ(samples, unlisted.blockSamples());
+    EXPECT_NE(*std::min_element(samples.begin(), samples.end()), *std::max_element(samples.begin(), samples.end()))
+        << "some blocks should have sat passes out";
+    const Image a = listed.readImage(), b = unlisted.readImage();
+    ASSERT_EQ(a.rgba.size(), b.rgba.size());
+    for (size_t i = 0; i < a.rgba.size(); ++i) ASSERT_EQ(a.rgba[i], b.rgba[i]) << i;
 }

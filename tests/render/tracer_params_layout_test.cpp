@@ -35,7 +35,7 @@ const std::map<std::string, Field> kCppFields = {
     RAYLAB_FIELD(skyRotation),      RAYLAB_FIELD(envMeanWeight), RAYLAB_FIELD(lightCount),
     RAYLAB_FIELD(triangleLightCount), RAYLAB_FIELD(nee),         RAYLAB_FIELD(mis),
     RAYLAB_FIELD(skyIsLight),       RAYLAB_FIELD(sampleCount),   RAYLAB_FIELD(aoDistance),
-    RAYLAB_FIELD(aoRays),           RAYLAB_FIELD(fragmentStripTiles), RAYLAB_FIELD(padding),
+    RAYLAB_FIELD(aoRays),           RAYLAB_FIELD(fragmentStripTiles), RAYLAB_FIELD(fragmentStripBlocks),
 };
 #undef RAYLAB_FIELD
 
