@@ -88,7 +88,9 @@ glm::ivec2 fragmentStripSize(int width, int height, int tiles) {
 
 int adaptiveStripTiles(int blocks, int stripTiles, int threads) {
     int tiles = stripTiles > 0 ? stripTiles : std::max(1, threads);
-    while (glsl::fragmentStripExtent(blocks, tiles).y > kMaxAdaptiveStripHeight) tiles *= 2;
+    while (glsl::fragmentStripExtent(blocks, tiles).y > kMaxAdaptiveStripHeight &&
+           2 * tiles * glsl::RASTER_TILE <= kMaxStripWidth)
+        tiles *= 2;
     return tiles;
 }
 

@@ -39,8 +39,10 @@ int fragmentStripTiles(int width, int height, int threads);
 glm::ivec2 fragmentStripSize(int width, int height, int tiles);
 // The tiles of the strip in which an adaptive render's rounds list the blocks that take them
 // (fragment_layout.glsl): the image's strip, else one tile per thread, doubled while the strip of
-// all `blocks` would be taller than kMaxAdaptiveStripHeight fragments.
+// all `blocks` would be taller than kMaxAdaptiveStripHeight fragments and not wider than
+// kMaxStripWidth (GL's framebuffer limit on llvmpipe; a 16384² image then needs 16384 rows).
 constexpr int kMaxAdaptiveStripHeight = 4096;
+constexpr int kMaxStripWidth = 16384;
 int adaptiveStripTiles(int blocks, int stripTiles, int threads);
 // llvmpipe's thread count: LP_NUM_THREADS, else the CPUs.
 int rasterThreads();

@@ -93,6 +93,23 @@ TEST(FragmentLayout, AListedStripTracesItsBlocksOnceAndNoOtherPixel) {
         }
 }
 
+TEST(FragmentLayout, AnAdaptiveRoundsStripFitsTheFramebufferForEveryImageSize) {
+    // The strip of every block of an image up to the largest render.width × height allowed.
+    const auto blocks = [](int w, int h) { return AdaptiveBlocks{w, h}.count(); };
+    EXPECT_EQ(adaptiveStripTiles(blocks(96, 54), 2, 2), 2) << "a small image keeps its strip";
+    EXPECT_EQ(adaptiveStripTiles(blocks(640, 360), 0, 2), 2);
+    for (const glm::ivec2 size : {glm::ivec2{640, 360}, glm::ivec2{1920, 1080}, glm::ivec2{3840, 2160},
+                                  glm::ivec2{16384, 16384}, glm::ivec2{16384, 1}, glm::ivec2{1, 16384}})
+        for (int threads : {1, 2, 16}) {
+            const int tiles = adaptiveStripTiles(blocks(size.x, size.y), 0, threads);
+            const glm::ivec2 strip = glsl::fragmentStripExtent(blocks(size.x, size.y), tiles);
+            EXPECT_LE(strip.x, kMaxStripWidth) << size.x << "x" << size.y << ", " << threads << " threads";
+            EXPECT_LE(strip.y, 16384) << size.x << "x" << size.y << ", " << threads << " threads";
+            EXPECT_TRUE(strip.y <= kMaxAdaptiveStripHeight || strip.x == kMaxStripWidth)
+                << size.x << "x" << size.y << ": taller than needed";
+        }
+}
+
 TEST(FragmentLayout, SmallImagesShareTilesEquallyAndLargeOnesKeepTheirPixels) {
     // 96×54 (the quick benchmark's size) as itself: a 64-wide tile and a 32-wide one, so two
     // threads take 4/3 of the ideal time; its strip brings that under 10 %.
