@@ -348,7 +348,9 @@ bool sampleLd(Hit hit, ShadingPoint sp, SkyParams sky, vec3 beta, int bounce, in
     vec3 wiL = frameToLocal(sp.frame, ls.wi);
     vec3 f = lightPdf > 0.0f ? bsdfEval(sp.bsdf, sp.wo, wiL) : vec3(0.0f);
     if (!sidesAgree(sp, wiL, ls.wi, hit.normal)) f = vec3(0.0f);
-    if (!(max(f.r, max(f.g, f.b)) > 0.0f)) {
+    // No shadow ray where nothing could arrive: f = 0, or a one-sided light seen from behind (L = 0).
+    vec3 fL = f * ls.L;
+    if (!(max(fL.r, max(fL.g, fL.b)) > 0.0f)) {
         RAYLAB_RECORD(recordLight(bounce, k, ls.wi, -1.0f, ls.L, f, abs(wiL.z), lightPdf, misPdf, 0.0f, 2));
         return false;
     }

@@ -91,7 +91,7 @@ void recordShadingFrame(int bounce, vec3 ns) {
     recordPut(bounce, PR_SHADING, vec4(ns, v.w));
 }
 
-// Next-event estimation at this bounce: status -1 none, 0 occluded, 1 visible, 2 f = 0. The
+// Next-event estimation at this bounce: status -1 none, 0 occluded, 1 visible, 2 f·L = 0. The
 // contribution is recomputed here from the terms (the inspector's test checks it against the
 // integrator's sum): f·|cosθ| · Le · w / pdf, w the power heuristic when MIS is on.
 void recordLight(int bounce, int light, vec3 dir, float dist, vec3 Le, vec3 fCos, float cosTheta, float lightPdf,

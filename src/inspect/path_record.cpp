@@ -29,7 +29,7 @@ std::string lightStatusName(LightStatus s) {
     switch (s) {
     case LightStatus::Occluded: return "occluded";
     case LightStatus::Visible: return "visible";
-    case LightStatus::Zero: return "f = 0";
+    case LightStatus::Zero: return "f = 0";   // also L = 0; the name stays, as saved files hold it
     default: return "-";
     }
 }

@@ -15,7 +15,7 @@ namespace raylab {
 // Must match shaders/include/bsdf_sample.glsl's LOBE_*.
 std::string lobeName(int lobe);
 
-enum class LightStatus { None = -1, Occluded = 0, Visible = 1, Zero = 2 };   // Zero: f = 0 or no direction
+enum class LightStatus { None = -1, Occluded = 0, Visible = 1, Zero = 2 };   // Zero: f·L = 0 (a light seen from behind) or no direction
 std::string lightStatusName(LightStatus s);
 
 struct BounceRecord {

@@ -198,6 +198,33 @@ TEST_F(AnalyticLightsTest, OneSidedEmitterEmitsFromItsFrontOnly) {
     EXPECT_GE(fractionAgreeing(mis, bsdf), 0.99);
 }
 
+// Next-event estimation traces no shadow ray towards a one-sided light seen from behind: nothing
+// could arrive (L = 0). One bounce over the plane, every camera ray on it: a path is the camera
+// ray, the shadow ray while the lamp faces the plane, and the bounce's ray. The camera looks down
+// beside the lamp.
+TEST_F(AnalyticLightsTest, AOneSidedLightSeenFromBehindCostsNoShadowRay) {
+    const auto raysPerPath = [](bool facingDown) {
+        const std::string indices = facingDown ? "[0, 1, 2, 0, 2, 3]" : "[0, 2, 1, 0, 3, 2]";
+        const Scene scene = parseScene(R"({
+  "camera": { "position": [3, 10, 0], "look_at": [3, 0, 0], "up": [0, 0, -1], "fov": 0.002 },
+  "render": { "width": 4, "height": 4, "spp": 4, "rpp": 4, "max_bounces": 1, "adaptive": false },
+  "sky": { "type": "constant", "color": 0 },
+  "materials": { "plane": { "albedo": 0.5 }, "lamp": { "albedo": 0, "emission": 1, "strength": 4 } },
+  "objects": [
+    { "type": "mesh", "material": "plane", "positions": [-100, 0, -100,  100, 0, -100,  100, 0, 100,  -100, 0, 100], "indices": [0, 2, 1, 0, 3, 2] },
+    { "type": "mesh", "material": "lamp", "emission_sides": "front",
+      "positions": [-0.5, 1, -0.5,  0.5, 1, -0.5,  0.5, 1, 0.5,  -0.5, 1, 0.5], "indices": )" + indices + R"( } ]
+})", "one_sided_rays.json");
+        PathTracer tracer;
+        tracer.setScene(scene);
+        tracer.renderPass(4);
+        EXPECT_EQ(tracer.pathsTraced(), 4u * 16u);
+        return double(tracer.raysTraced()) / double(tracer.pathsTraced());
+    };
+    EXPECT_EQ(raysPerPath(true), 3.0);
+    EXPECT_EQ(raysPerPath(false), 2.0);
+}
+
 TEST_F(AnalyticLightsTest, GltfDoubleSidedDecidesTheEmittingSidesUnderEmissionSidesGltf) {
     // Two emissive quads of one glTF file in z = 0, fronts towards +z: materials[0] is not
     // doubleSided (glTF's default), materials[1] is. Seen from behind, `emission_sides: "gltf"`
