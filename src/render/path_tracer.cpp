@@ -179,11 +179,12 @@ void PathTracer::updateSettings(const Scene& scene) {
     if (features_.linearTopLevel &&
         (features_.objectCount != gpuScene_.instanceCount() || features_.sphereCount != gpuScene_.sphereCount()))
         throw std::logic_error("path tracer: the variant's object counts are not the scene's");
-    // The variant's search, not the scene's key: the unspecialised tracer always walks the BVH.
-    const std::uint64_t flatIterations =
-        features_.accel == Accel::Bvh ? 0 : flatLoopIterationsPerSample(scene, features_.flatSteps);
-    flatSamplesPerDraw_ = flatIterations == 0 ? kSamplesPerDraw
-                        : int(std::clamp<std::uint64_t>(kLoopIterationBudget / 2 / flatIterations, 1, kSamplesPerDraw));
+    // The variant's search, not the scene's key: the unspecialised tracer always walks the BVH, and
+    // so does the counting variant (traversalBuffer_) for small meshes.
+    const std::uint64_t iterations = boundedLoopIterationsPerSample(scene, features_, traversalBuffer_ != 0);
+    variantSamplesPerDraw_ =
+        iterations == 0 ? kSamplesPerDraw
+                        : int(std::clamp<std::uint64_t>(kLoopIterationBudget / 2 / iterations, 1, kBoundedSamplesPerDraw));
 
     if (options_.cameraRelative && needsRebase(scene.camera, origin_)) {
         origin_ = glm::dvec3(scene.camera.position);
@@ -330,8 +331,11 @@ void PathTracer::renderPass(int rpp) {
 void PathTracer::traceBand(int y, int rows, int sampleOffset, int rpp) {
     if (!accumTexture_) throw std::logic_error("PathTracer::renderPass before setScene");
     if (adaptive_ && !planned_) planPass();
+    // As few draws as samplesPerDraw() allows (it may fall after a draw), of nearly equal size.
     for (int done = 0; done < rpp;) {
-        const int n = std::min(rpp - done, samplesPerDraw());
+        const int left = rpp - done;
+        const int draws = (left + samplesPerDraw() - 1) / samplesPerDraw();
+        const int n = (left + draws - 1) / draws;
         drawBand(y, rows, sampleOffset + done, n);
         done += n;
     }

@@ -117,12 +117,14 @@ public:
     // limiter), which would cut paths short without a word. So a draw traces at most this many
     // samples per pixel (a pass of more is several draws, the same samples in the same order), the
     // shader counts invocations that still ran out, and after such a draw later ones take half as
-    // many. A flat search (render.accel boxes, none) starts lower: at most as many samples as its
-    // loop iterations per sample (flatLoopIterationsPerSample, shader_variant.h) leave within half of
-    // kLoopIterationBudget.
+    // many. A variant whose loops have bounded trips (a flat search, few objects with small meshes)
+    // takes as many samples as its loop iterations per sample (boundedLoopIterationsPerSample,
+    // shader_variant.h) leave within half of kLoopIterationBudget, at most kBoundedSamplesPerDraw:
+    // fewer draws, as each ends with a wait for the threads (bench/adaptive_sampling.md).
     // loopLimitedInvocations() > 0 means the image lacks light; raylab-render reports it.
     static constexpr int kSamplesPerDraw = 16;
-    int samplesPerDraw() const { return std::min(samplesPerDraw_, flatSamplesPerDraw_); }
+    static constexpr int kBoundedSamplesPerDraw = 64;
+    int samplesPerDraw() const { return std::min(samplesPerDraw_, variantSamplesPerDraw_); }
     std::uint64_t loopLimitedInvocations() const { return loopLimited_; }
     // With RAYLAB_COUNT_TRAVERSAL in extraDefines: BVH boxes and triangles tested (else 0).
     std::uint64_t boxTests() const { return boxTests_; }
@@ -189,8 +191,8 @@ private:
     std::uint64_t nonFinite_ = 0;
     std::uint64_t rays_ = 0;
     std::uint64_t loopLimited_ = 0;
-    int samplesPerDraw_ = kSamplesPerDraw;       // halved after a draw the driver cut short
-    int flatSamplesPerDraw_ = kSamplesPerDraw;   // the bound of a flat search, set per scene
+    int samplesPerDraw_ = kBoundedSamplesPerDraw;   // halved after a draw the driver cut short
+    int variantSamplesPerDraw_ = kSamplesPerDraw;   // the bound of a variant's loops, set per scene
     unsigned traversalBuffer_ = 0;   // only when counting traversal
     std::uint64_t boxTests_ = 0;
     std::uint64_t triangleTests_ = 0;

@@ -66,8 +66,11 @@ SceneFeatures sceneFeatures(const Scene& scene) {
 
 SceneFeatures allFeatures() { return SceneFeatures{}; }
 
-std::uint64_t flatLoopIterationsPerSample(const Scene& scene, bool steps) {
-    if (scene.render.accel == Accel::Bvh) return 0;
+namespace {
+
+// A search that steps through every object and each mesh's triangles, per sample: a traced and a
+// shadow ray per bounce, or the AO view's rays.
+std::uint64_t searchIterationsPerSample(const Scene& scene, bool steps) {
     std::uint64_t perRay = scene.spheres.size();
     for (const Mesh& m : scene.meshes) {
         const std::uint64_t n = m.triangles.size();
@@ -76,6 +79,24 @@ std::uint64_t flatLoopIterationsPerSample(const Scene& scene, bool steps) {
     const std::uint64_t rays = std::max<std::uint64_t>(2 * (std::uint64_t(scene.render.maxBounces) + 1),
                                                        std::uint64_t(scene.ao.rays) + 1);
     return perRay * rays;
+}
+
+} // namespace
+
+std::uint64_t flatLoopIterationsPerSample(const Scene& scene, bool steps) {
+    return scene.render.accel == Accel::Bvh ? 0 : searchIterationsPerSample(scene, steps);
+}
+
+std::uint64_t boundedLoopIterationsPerSample(const Scene& scene, const SceneFeatures& f, bool countsTraversal) {
+    const bool flat = f.accel != Accel::Bvh;
+    const bool fewSmall = f.linearTopLevel && (!f.meshes || (f.smallMeshes && !countsTraversal));
+    if (!flat && !fewSmall) return 0;
+    const std::uint64_t search = searchIterationsPerSample(scene, flat && f.usesFlatSteps());
+    // Numbers drawn: the pixel's and the lens' pairs, then per bounce at most the BSDF direction,
+    // the lobe, the light and the roulette.
+    const std::uint64_t perNumber = f.sampler == SamplerKind::ZSobol ? 12 : f.sampler == SamplerKind::Stratified ? 2 : 0;
+    const std::uint64_t steps = std::uint64_t(scene.render.maxBounces) + 1;
+    return search + steps * (1 + scene.lights.size() + 4 * perNumber) + 2 * perNumber;
 }
 
 ShaderDefines featureDefines(const SceneFeatures& f) {

@@ -52,6 +52,15 @@ constexpr std::uint64_t kLoopIterationBudget = 65535;
 // rest one at a time. 0 for the BVH.
 std::uint64_t flatLoopIterationsPerSample(const Scene& scene, bool steps);
 
+// Loop iterations one sample can spend at most in the variant `features` of `scene` where every
+// loop's trip count has a bound: a flat search, or few objects whose meshes are all small (their
+// triangles tested without a BVH walk). The searches as flatLoopIterationsPerSample counts them,
+// plus the path loop's step per bounce, a step per distant light at an escape, and the samplers'
+// own loops (zsobol's digits; stratified's cycle walk, about two per number). 0 where a BVH walk
+// has no such bound, as in the traversal-counting variant (RAYLAB_COUNT_TRAVERSAL, the heat views),
+// which walks small meshes' BVHs too.
+std::uint64_t boundedLoopIterationsPerSample(const Scene& scene, const SceneFeatures& features, bool countsTraversal);
+
 SceneFeatures sceneFeatures(const Scene& scene);   // what this scene needs
 SceneFeatures allFeatures();                       // the unspecialised tracer
 // RAYLAB_FEATURES_SPECIALISED, every feature of the list as 0 or 1, RAYLAB_STAGE, RAYLAB_SAMPLER and

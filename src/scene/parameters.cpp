@@ -114,7 +114,7 @@ std::vector<ParamSpec> buildSceneTable() {
              "Image height (changing it reallocates the image).", G::ReloadScene),
         [](auto& s) -> auto& { return s.render.height; });
     add(spec("render.rpp", T::Int, atLeast(1), atMost(1024), "samples",
-             "Samples per pixel traced in one pass (drawn at most 16 at a time: llvmpipe's loop limit, README).", G::ResetAccumulation),
+             "Samples per pixel traced in one pass (drawn at most 16 at a time, up to 64 where the scene's loops are bounded: llvmpipe's loop limit, README).", G::ResetAccumulation),
         [](auto& s) -> auto& { return s.render.rpp; });
     add(spec("render.spp", T::Int, atLeast(1), kAny, "samples",
              "Target samples per pixel; the render stops when reached.", G::Redisplay),

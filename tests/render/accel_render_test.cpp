@@ -3,6 +3,7 @@
 // stats) count their work: more triangles than the BVH, every object's box for boxes. A flat
 // search of a large mesh stays within llvmpipe's loop budget, so its paths are not cut short.
 // Small meshes searched without their BVH render the BVH's image too.
+#include "render/shader_variant.h"
 #include "render_helpers.h"
 #include "support/gl_test.h"
 
@@ -162,6 +163,32 @@ TEST(FlatLoopIterations, CountsEveryObjectAndEachStepOfItsTriangles) {
     EXPECT_EQ(flatLoopIterationsPerSample(box, false), (6u * 3u + 2u * 11u) * 18u);
     EXPECT_FALSE(sceneFeatures(box).flatSteps);
     EXPECT_EQ(featureName(sceneFeatures(box)).find("flat-steps"), std::string::npos);
+}
+
+// The whole bound of a sample's loop iterations (boundedLoopIterationsPerSample), which sizes the
+// draws: the searches as above, the path loop's step per bounce, and the samplers' own loops. The
+// Cornell box has few objects whose meshes are small, so even under render.accel bvh its searches
+// are plain loops: (6 · 3 + 2 · 11) · 18, plus 9 steps. The terrain's BVH walk has no bound.
+TEST(BoundedLoopIterations, AddTheStepsAndTheSamplersLoopsToTheSearches) {
+    const auto bound = [](const Scene& s, bool counting = false) {
+        return boundedLoopIterationsPerSample(s, sceneFeatures(s), counting);
+    };
+    const std::uint64_t search = (6u * 3u + 2u * 11u) * 18u;
+    const Scene box = loadScene(test::scenePath("cornell_box.json"), {"render.sampler=sobol"});
+    EXPECT_EQ(bound(box), search + 9u);
+    EXPECT_EQ(bound(loadScene(test::scenePath("cornell_box.json"), {"render.sampler=independent"})), search + 9u);
+    EXPECT_EQ(bound(loadScene(test::scenePath("cornell_box.json"), {"render.sampler=zsobol"})),
+              search + 9u * (1u + 4u * 12u) + 2u * 12u);
+    EXPECT_EQ(bound(loadScene(test::scenePath("cornell_box.json"), {"render.sampler=stratified"})),
+              search + 9u * (1u + 4u * 2u) + 2u * 2u);
+    EXPECT_EQ(bound(box, true), 0u) << "the counting variant walks the small meshes' BVHs";
+    EXPECT_EQ(bound(loadScene(test::scenePath("cornell_box.json"), {"render.accel=none"}), true), search + 9u)
+        << "a flat search counts without a BVH";
+
+    Scene terrain = loadScene(test::scenePath("displaced_terrain.json"));
+    EXPECT_EQ(bound(terrain), 0u) << "a BVH walk";
+    terrain.render.accel = Accel::None;
+    EXPECT_EQ(bound(terrain), flatLoopIterationsPerSample(terrain, true) + 7u * (1u + terrain.lights.size()));
 }
 
 // A ray that leaves an object on a side it cannot meet it again from (accel/escape_sides.h) does
