@@ -179,9 +179,8 @@ void PathTracer::updateSettings(const Scene& scene) {
     if (features_.linearTopLevel &&
         (features_.objectCount != gpuScene_.instanceCount() || features_.sphereCount != gpuScene_.sphereCount()))
         throw std::logic_error("path tracer: the variant's object counts are not the scene's");
-    // The variant's search, not the scene's key: the unspecialised tracer always walks the BVH, and
-    // so does the counting variant (traversalBuffer_) for small meshes.
-    const std::uint64_t iterations = boundedLoopIterationsPerSample(scene, features_, traversalBuffer_ != 0);
+    // The variant's search, not the scene's key: the unspecialised tracer always walks the BVH.
+    const std::uint64_t iterations = boundedLoopIterationsPerSample(scene, features_, !options_.extraDefines.empty());
     variantSamplesPerDraw_ =
         iterations == 0 ? kSamplesPerDraw
                         : int(std::clamp<std::uint64_t>(kLoopIterationBudget / 2 / iterations, 1, kBoundedSamplesPerDraw));

@@ -87,9 +87,9 @@ std::uint64_t flatLoopIterationsPerSample(const Scene& scene, bool steps) {
     return scene.render.accel == Accel::Bvh ? 0 : searchIterationsPerSample(scene, steps);
 }
 
-std::uint64_t boundedLoopIterationsPerSample(const Scene& scene, const SceneFeatures& f, bool countsTraversal) {
+std::uint64_t boundedLoopIterationsPerSample(const Scene& scene, const SceneFeatures& f, bool extraDefines) {
     const bool flat = f.accel != Accel::Bvh;
-    const bool fewSmall = f.linearTopLevel && (!f.meshes || (f.smallMeshes && !countsTraversal));
+    const bool fewSmall = !extraDefines && f.linearTopLevel && (!f.meshes || f.smallMeshes);
     if (!flat && !fewSmall) return 0;
     const std::uint64_t search = searchIterationsPerSample(scene, flat && f.usesFlatSteps());
     // Numbers drawn: the pixel's and the lens' pairs, then per bounce at most the BSDF direction,

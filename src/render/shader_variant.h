@@ -57,9 +57,9 @@ std::uint64_t flatLoopIterationsPerSample(const Scene& scene, bool steps);
 // triangles tested without a BVH walk). The searches as flatLoopIterationsPerSample counts them,
 // plus the path loop's step per bounce, a step per distant light at an escape, and the samplers'
 // own loops (zsobol's digits; stratified's cycle walk, about two per number). 0 where a BVH walk
-// has no such bound, as in the traversal-counting variant (RAYLAB_COUNT_TRAVERSAL, the heat views),
-// which walks small meshes' BVHs too.
-std::uint64_t boundedLoopIterationsPerSample(const Scene& scene, const SceneFeatures& features, bool countsTraversal);
+// has no such bound. `extraDefines`: a variant of the debug views, the inspector or the traversal
+// counts (which walks small meshes' BVHs too); only a flat search's bound is taken for those.
+std::uint64_t boundedLoopIterationsPerSample(const Scene& scene, const SceneFeatures& features, bool extraDefines);
 
 SceneFeatures sceneFeatures(const Scene& scene);   // what this scene needs
 SceneFeatures allFeatures();                       // the unspecialised tracer

@@ -170,8 +170,8 @@ TEST(FlatLoopIterations, CountsEveryObjectAndEachStepOfItsTriangles) {
 // Cornell box has few objects whose meshes are small, so even under render.accel bvh its searches
 // are plain loops: (6 · 3 + 2 · 11) · 18, plus 9 steps. The terrain's BVH walk has no bound.
 TEST(BoundedLoopIterations, AddTheStepsAndTheSamplersLoopsToTheSearches) {
-    const auto bound = [](const Scene& s, bool counting = false) {
-        return boundedLoopIterationsPerSample(s, sceneFeatures(s), counting);
+    const auto bound = [](const Scene& s, bool extraDefines = false) {
+        return boundedLoopIterationsPerSample(s, sceneFeatures(s), extraDefines);
     };
     const std::uint64_t search = (6u * 3u + 2u * 11u) * 18u;
     const Scene box = loadScene(test::scenePath("cornell_box.json"), {"render.sampler=sobol"});
@@ -181,7 +181,7 @@ TEST(BoundedLoopIterations, AddTheStepsAndTheSamplersLoopsToTheSearches) {
               search + 9u * (1u + 4u * 12u) + 2u * 12u);
     EXPECT_EQ(bound(loadScene(test::scenePath("cornell_box.json"), {"render.sampler=stratified"})),
               search + 9u * (1u + 4u * 2u) + 2u * 2u);
-    EXPECT_EQ(bound(box, true), 0u) << "the counting variant walks the small meshes' BVHs";
+    EXPECT_EQ(bound(box, true), 0u) << "the debug views' and counts' variants: only a flat search's bound";
     EXPECT_EQ(bound(loadScene(test::scenePath("cornell_box.json"), {"render.accel=none"}), true), search + 9u)
         << "a flat search counts without a BVH";
 
