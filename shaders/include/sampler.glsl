@@ -227,13 +227,14 @@ RL_FN uint zsobolDigitHash(uvec2 higherDigits, uint salt) {
 // the order of pixels is random at every level of the quadtree but each level stays a Sobol block.
 // Index bits from 24 up move a sample only below float precision, so only digits below bit 24 are
 // made.
+const uint ZSOBOL_INDEX_BITS = 24u;   // the digits made; a loop step per base-4 digit (PathTracer sizes its draws by it)
 RL_FN uint zsobolIndex(uvec2 pixel, uint index, uint log2Samples, uint salt) {
     uint m = mortonEncode(pixel);
     uint s = index & ((1u << log2Samples) - 1u);
     uvec2 mortonIndex = log2Samples == 0u ? uvec2(m, 0u) : uvec2((m << log2Samples) | s, m >> (32u - log2Samples));
     uint odd = log2Samples & 1u;   // an odd power of two ends in a single base-2 digit
     uint result = 0u;
-    for (uint shift = odd; shift < 24u; shift += 2u) {
+    for (uint shift = odd; shift < ZSOBOL_INDEX_BITS; shift += 2u) {
         uint digit = shiftRight64(mortonIndex, shift).x & 3u;
         uint p = zsobolDigitHash(shiftRight64(mortonIndex, shift + 2u), salt) % 24u;
         result |= ((zsobolPermutation(p) >> (2u * digit)) & 3u) << shift;

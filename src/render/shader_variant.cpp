@@ -4,6 +4,7 @@
 #include "render/gpu_scene.h"
 #include "render/light_list.h"
 #include "render/tracer_defines.h"
+#include "shaders/include/sampler.glsl"
 
 #include <algorithm>
 #include <string>
@@ -94,7 +95,9 @@ std::uint64_t boundedLoopIterationsPerSample(const Scene& scene, const SceneFeat
     const std::uint64_t search = searchIterationsPerSample(scene, flat && f.usesFlatSteps());
     // Numbers drawn: the pixel's and the lens' pairs, then per bounce at most the BSDF direction,
     // the lobe, the light and the roulette.
-    const std::uint64_t perNumber = f.sampler == SamplerKind::ZSobol ? 12 : f.sampler == SamplerKind::Stratified ? 2 : 0;
+    const std::uint64_t perNumber = f.sampler == SamplerKind::ZSobol   ? glsl::ZSOBOL_INDEX_BITS / 2
+                                  : f.sampler == SamplerKind::Stratified ? 2
+                                                                         : 0;
     const std::uint64_t steps = std::uint64_t(scene.render.maxBounces) + 1;
     return search + steps * (1 + scene.lights.size() + 4 * perNumber) + 2 * perNumber;
 }
