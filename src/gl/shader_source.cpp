@@ -2,11 +2,13 @@
 
 #include "io/resource_directory.h"
 
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 namespace raylab {
 namespace fs = std::filesystem;
@@ -59,6 +61,17 @@ struct Assembler {
         throw ShaderError(from.string() + ":" + std::to_string(line) + ": error: cannot find included file " + quoted);
     }
 
+    // The first word of a preprocessor line ("include", "ifdef", …), or "" for any other line.
+    static std::string_view directive(std::string_view line) {
+        size_t i = line.find_first_not_of(" \t");
+        if (i == std::string_view::npos || line[i] != '#') return {};
+        i = line.find_first_not_of(" \t", i + 1);
+        if (i == std::string_view::npos) return {};
+        size_t end = i;
+        while (end < line.size() && std::isalpha(static_cast<unsigned char>(line[end]))) ++end;
+        return line.substr(i, end - i);
+    }
+
     // Emits one file. For the entry file, defines are placed after its #version line.
     void emit(const fs::path& file, const ShaderDefines* defines) {
         const int index = fileIndex(file);
@@ -67,14 +80,40 @@ struct Assembler {
         static const std::regex includeRe(R"(^\s*#\s*include\s*"([^"]+)\"\s*(//.*)?$)");
         static const std::regex macroIncludeRe(R"(^\s*#\s*include\s+([A-Za-z_][A-Za-z0-9_]*)\s*(//.*)?$)");
         static const std::regex versionRe(R"(^\s*#\s*version\b.*)");
+        static const std::regex cplusplusRe(R"(^\s*#\s*ifdef\s+__cplusplus\b.*)");
         std::string line;
         int lineNo = 0;
         bool versionSeen = defines == nullptr;
+        // Depth of the #if blocks open inside the C++ half of an `#ifdef __cplusplus` (0: outside
+        // one). GLSL never defines __cplusplus, so that half reaches the compiler as blank lines:
+        // Mesa looks a source up in its shader cache before preprocessing only when the text has
+        // no "#include", which the shared headers' C++ halves have (<glm/glm.hpp>).
+        int cplusplusDepth = 0;
         if (defines == nullptr) out << "#line 1 " << index << "\n";
         while (std::getline(in, line)) {
             ++lineNo;
             if (!line.empty() && line.back() == '\r') line.pop_back();
+            const std::string_view word = directive(line);
+            if (cplusplusDepth > 0) {
+                if (word == "if" || word == "ifdef" || word == "ifndef") ++cplusplusDepth;
+                else if (word == "endif" || ((word == "else" || word == "elif") && cplusplusDepth == 1)) --cplusplusDepth;
+                if (cplusplusDepth > 0) {
+                    out << "\n";
+                    continue;
+                }
+                out << line << "\n";   // the #else, #elif or #endif that ends the C++ half
+                continue;
+            }
+            if (word.empty()) {   // most lines: no directive, nothing to match
+                out << line << "\n";
+                continue;
+            }
             std::smatch m;
+            if (word == "ifdef" && std::regex_match(line, cplusplusRe)) {
+                cplusplusDepth = 1;
+                out << line << "\n";
+                continue;
+            }
             if (!versionSeen && std::regex_match(line, versionRe)) {
                 out << line << "\n";
                 // GLSL has no strings: a file define is only switched on; `#include NAME` takes its path.

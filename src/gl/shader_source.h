@@ -5,6 +5,7 @@
 // a file define: GLSL sees it as 1, and `#include NAME` includes that file (an include of a define
 // the host did not set includes nothing, as it stands in that define's #ifdef). Numeric #line directives (GLSL rejects
 // file names there) point back to a table of files, so compiler messages can name file:line.
+// The C++ half of a shared header (the lines an `#ifdef __cplusplus` keeps) arrives blank.
 #include <filesystem>
 #include <stdexcept>
 #include <string>

@@ -59,6 +59,29 @@ TEST(ShaderSource, AFileDefineIsOneToGlslAndIncludesItsFileAtItsOwnLines) {
     fs::remove_all(dir);
 }
 
+TEST(ShaderSource, TheCplusplusHalfOfASharedHeaderArrivesBlankAtItsOwnLines) {
+    // Mesa looks a source up in its shader cache before preprocessing it only when the text holds
+    // no "#include": the C++ half's <glm/glm.hpp> must not reach it.
+    const fs::path dir = scratchDir("cplusplus");
+    write(dir / "shared.glsl", "#ifdef __cplusplus\n#include <glm/glm.hpp>\n#if 1\nint cpp;\n#endif\n#define X 2\n"
+                               "#else\n#define X 1\n#endif\nfloat shared() { return X; }\n");
+    write(dir / "main.comp", "#version 450 core\n#include \"shared.glsl\"\nvoid main() {}\n");
+    const ShaderSource s = assembleShader(dir / "main.comp");
+    EXPECT_EQ(s.text.find("#include"), std::string::npos) << s.text;
+    EXPECT_EQ(s.text.find("cpp"), std::string::npos) << s.text;
+    EXPECT_NE(s.text.find("#line 1 1\n#ifdef __cplusplus\n\n\n\n\n\n#else\n#define X 1\n#endif\nfloat shared()"),
+              std::string::npos) << s.text;
+    fs::remove_all(dir);
+}
+
+TEST(ShaderSource, TheShippedTracerReachesTheCompilerWithoutAnInclude) {
+    const fs::path dir = shaderDirectory();
+    for (const char* entry : {"entry/trace.frag", "entry/trace.comp", "entry/display.frag"}) {
+        const ShaderSource s = assembleShader(dir / entry, featureDefines(allFeatures()), {dir / "include"});
+        EXPECT_EQ(s.text.find("#include"), std::string::npos) << entry;
+    }
+}
+
 TEST(ShaderSource, MissingIncludeAndCycleAreLocated) {
     const fs::path dir = scratchDir("missing");
     write(dir / "main.comp", "#version 450 core\n\n#include \"nope.glsl\"\n");
