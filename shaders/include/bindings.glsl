@@ -17,6 +17,10 @@
 #define BINDING_TRIANGLE_TEXELS 8
 #define BINDING_TEXTURE_TEXELS 9      // texture unit: every texture's texels, RGBA32UI (scene_textures.glsl)
 #define BINDING_MATERIAL_TEXELS 10    // texture unit: the materials' records, RGBA32UI (scene_data.glsl)
+// Texture units: texture-buffer views of the light buffers (scene_data.glsl).
+#define BINDING_TRIANGLE_LIGHT_TEXELS 11        // the emissive triangles' records, RGBA32UI
+#define BINDING_LIGHT_ALIAS_TEXELS 12           // the alias table over every light, RGBA32UI
+#define BINDING_TRIANGLE_LIGHT_INDEX_TEXELS 13  // each triangle's light index, R32UI
 
 // The tracer's storage buffers (shaders/include/scene_data.glsl, scene_geometry.glsl,
 // scene_textures.glsl; filled by src/render/gpu_scene.cpp and path_tracer.cpp).
@@ -33,9 +37,6 @@
 #define BINDING_VERTICES 12
 #define BINDING_TRAVERSAL_COUNTERS 13  // RAYLAB_COUNT_TRAVERSAL: boxes and triangles tested
 #define BINDING_TEXTURE_INFO 15
-#define BINDING_TRIANGLE_LIGHTS 24
-#define BINDING_LIGHT_ALIAS 25         // alias table over every light, by power
-#define BINDING_TRIANGLE_LIGHT_INDEX 26
 #define BINDING_ADAPTIVE_BLOCKS 27     // render.adaptive: the blocks a draw traces, in strip order (fragment_layout.glsl)
 
 // Debug variants and the display pass.

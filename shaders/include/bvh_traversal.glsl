@@ -163,8 +163,8 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
 #if RAYLAB_TOP_LEVEL_LINEAR
     // Few objects: plain loops beat the top-level traversal's stack and box tests (measured in
     // bench/geometry.md). Their trip counts are the scene's (RAYLAB_OBJECT_COUNT), and they read
-    // the spheres and boxes from a uniform block by the loop counter (few_objects.glsl): one load
-    // for all lanes.
+    // the spheres and boxes by the loop counter from the invocation's copy of the few-objects
+    // block (scene_geometry.glsl): one value for all lanes.
 #if RAYLAB_FEATURE_SPHERES
 #if RAYLAB_OBJECT_COUNT > 0
     const uint sphereTotal = uint(RAYLAB_SPHERE_COUNT);
@@ -172,7 +172,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
     uint sphereTotal = sphereCount();
 #endif
     for (uint k = 0u; k < sphereTotal; ++k) {
-        GpuSphere s = fewSpheres[k];   // not left out when leaving: that branch costs more than the test (bench/mesh_rays.md)
+        GpuSphere s = fewSphere(k);   // not left out when leaving: that branch costs more than the test (bench/mesh_rays.md)
         float t = intersectSphere(ray, xyzOf(s.centerRadius), s.centerRadius.w, 0.0f, rec.t);
         if (t > 0.0f) {
             rec = TraceRecord(t, s.info.y, k, 0.0f, 0.0f);
@@ -199,7 +199,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
     uint pending = 0u;   // bit i: instance i's box is met (FEW_OBJECTS_MAX <= 32)
     for (uint i = 0u; i < count; ++i) {
         if (!fewObjectIsMesh(i) || i == leaving) continue;
-        if (intersectBox(ray.origin, invDir, fewObjectMin[i].xyz, fewObjectMax[i].xyz, rec.t) >= 0.0f) pending |= 1u << i;
+        if (intersectBox(ray.origin, invDir, fewObjectMin(i).xyz, fewObjectMax(i).xyz, rec.t) >= 0.0f) pending |= 1u << i;
     }
     uint instance = 0u;
     uint next = 0u;   // the lane's next triangle, and the end of its object's
@@ -208,9 +208,18 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
         if (next == end) {
             instance = uint(findLSB(pending));
             pending &= pending - 1u;
+#if RAYLAB_OBJECT_COUNT > 0
+            // The lanes' objects differ: a select per object from the copy, where the instance
+            // record would be a texel gather.
+            uvec2 range = uvec2(0u);
+            for (uint i = 0u; i < count; ++i) range = instance == i ? fewObjectTriangles(i) : range;
+            next = range.x;
+            end = range.x + range.y;
+#else
             GpuInstance inst = instanceAt(instance);   // only the triangle range is read
             next = instanceFirstTriangle(inst);
             end = next + instanceTriangleCount(inst);
+#endif
         }
         if (next < end) {
             GpuTriangle tri = triangleAt(next);
@@ -227,7 +236,7 @@ RL_FN bool traceScene(Ray ray, float tMax, bool anyHit, uint leaving, RL_OUT(Tra
     for (uint i = 0u; i < count; ++i) {
         if (!fewObjectIsMesh(i) || i == leaving) continue;
         RL_COUNT_BOX();
-        if (intersectBox(ray.origin, invDir, fewObjectMin[i].xyz, fewObjectMax[i].xyz, rec.t) < 0.0f) continue;
+        if (intersectBox(ray.origin, invDir, fewObjectMin(i).xyz, fewObjectMax(i).xyz, rec.t) < 0.0f) continue;
 #if RAYLAB_SMALL_MESHES && !RAYLAB_COUNT_TRAVERSAL
         // A few triangles: tested straight after the world box, without the mesh BVH's root read,
         // box test and walk (bench/mesh_rays.md). The heat views count the BVH's own tests.

@@ -1,8 +1,9 @@
 // With few objects the tracer loops over them instead of walking the top-level BVH (features.glsl
-// RAYLAB_TOP_LEVEL_LINEAR). Those loops read each object's world box and each sphere from one
-// uniform block, at constant offsets once the loops are unrolled (RAYLAB_OBJECT_COUNT): llvmpipe
-// reads such an entry with one load for all lanes, a storage buffer's lane by lane
-// (bench/mesh_rays.md, "Few objects in a uniform block"). C++ and GLSL.
+// RAYLAB_TOP_LEVEL_LINEAR). Those loops read each object's world box, triangle range and each
+// sphere from one uniform block, which every invocation copies once into private arrays that the
+// unrolled loops (RAYLAB_OBJECT_COUNT) read at constant indices (scene_geometry.glsl fewObjects;
+// bench/mesh_rays.md, "Few objects in a uniform block" and "Uniform blocks copied once an
+// invocation"). C++ and GLSL.
 #ifndef RAYLAB_FEW_OBJECTS_GLSL
 #define RAYLAB_FEW_OBJECTS_GLSL
 #include "compat.glsl"
@@ -20,6 +21,7 @@ struct FewObjectsBlock {
     vec4 boxMin[FEW_OBJECTS_MAX];         // the object's world box; w 1 for a mesh, 0 for a sphere
     vec4 boxMax[FEW_OBJECTS_MAX];
     GpuSphere spheres[FEW_OBJECTS_MAX];   // the spheres, as the sphere buffer holds them
+    uvec4 triangles[FEW_OBJECTS_MAX];     // a mesh's triangles: x the first, y how many; 0 for a sphere
 };
 #endif
 

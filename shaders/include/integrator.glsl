@@ -91,10 +91,10 @@ float emitterLightPdf(vec3 p, uint k) {
 }
 
 // The same for a ray from p (direction d, not unit) that hit a triangle: the light that triangle is
-// (triangleLightIndex[], 1 + index; 0 for none) as sampleTriangleLight draws it, a solid-angle density.
+// (triangleLightIndexAt, 1 + index; 0 for none) as sampleTriangleLight draws it, a solid-angle density.
 float triangleEmitterLightPdf(vec3 p, vec3 d, Hit hit) {
 #if RAYLAB_EMISSIVE_TRIANGLES
-    uint light = triangleLightIndex[hit.primitive];
+    uint light = triangleLightIndexAt(hit.primitive);
 #if RAYLAB_ONE_SIDED_EMITTERS
     light &= ~TRIANGLE_FRONT_ONLY;
 #endif
@@ -102,7 +102,7 @@ float triangleEmitterLightPdf(vec3 p, vec3 d, Hit hit) {
     int j = int(light) - 1;
     float len = length(d);
     float dist = hit.t * len;
-    GpuTriangleLight tl = triangleLights[j];
+    GpuTriangleLight tl = triangleLightAt(j);
     float pdf = triangleLightDirectionPdf(p, tl.p0Area.xyz, tl.p1.xyz, tl.p2.xyz, tl.p0Area.w, dist * dist,
                                           dot(hit.normal, d) / len);
     return pdf * boundedLightPmf(sphereLightCount() + j);
@@ -116,7 +116,7 @@ float triangleEmitterLightPdf(vec3 p, vec3 d, Hit hit) {
 bool emitterBackFace(vec3 rayDir, Hit hit) {
 #if RAYLAB_ONE_SIDED_EMITTERS
     return (RAYLAB_FEATURE_SPHERES == 0 || instances[hit.instance].info.x == INSTANCE_MESH) &&
-           (triangleLightIndex[hit.primitive] & TRIANGLE_FRONT_ONLY) != 0u && dot(rayDir, hit.normal) >= 0.0f;
+           (triangleLightIndexAt(hit.primitive) & TRIANGLE_FRONT_ONLY) != 0u && dot(rayDir, hit.normal) >= 0.0f;
 #else
     return false;
 #endif
@@ -268,7 +268,7 @@ LightSample sampleLight(int k, vec3 p, vec2 u, SkyParams sky) {
     LightSample ls = LightSample(vec3(0.0f), vec3(0.0f), 0.0f, 0.0f, vec3(0.0f));
     if (k >= sphereLightCount()) {
 #if RAYLAB_EMISSIVE_TRIANGLES
-        GpuTriangleLight tl = triangleLights[k - sphereLightCount()];
+        GpuTriangleLight tl = triangleLightAt(k - sphereLightCount());
         vec3 p0 = tl.p0Area.xyz;
         ls.pdf = sampleTriangleLight(p, p0, tl.p1.xyz, tl.p2.xyz, tl.p0Area.w, u, ls.wi, ls.point);
         if (ls.pdf > 0.0f) {

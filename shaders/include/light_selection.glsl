@@ -63,7 +63,7 @@ float skySelectionPmf() {
 }
 
 // Probability with which bounded light i is picked (alias table pmf × not picking the sky).
-float boundedLightPmf(int i) { return (1.0f - skySelectionPmf()) * lightAlias[i].z; }
+float boundedLightPmf(int i) { return (1.0f - skySelectionPmf()) * lightAliasAt(i).z; }
 
 // A light: -1 for the sky, else the bounded light's index; pmf is the probability of the pick.
 // u, the first number of the light point's pair, decides sky or not and the alias table's column,
@@ -81,7 +81,7 @@ int selectLight(inout Sampler smp, inout float u, out float pmf) {
     }
     u = (u - pSky) / (1.0f - pSky);
     int i = pickSlot(u, boundedLightCount());
-    vec4 entry = lightAlias[i];
+    vec4 entry = lightAliasAt(i);
     bool keep = v < entry.x;
     pmf = (1.0f - pSky) * (keep ? entry.z : entry.w);
     return keep ? i : int(entry.y);

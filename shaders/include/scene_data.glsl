@@ -39,14 +39,24 @@ layout(binding = BINDING_SKY_MAP_TEXTURE) uniform sampler2D uSkyMap;   // sky.ma
 layout(std430, binding = BINDING_ENV_MARGINAL) readonly buffer EnvMarginalBuffer { float envMarginalCdf[]; };
 layout(std430, binding = BINDING_ENV_CONDITIONAL) readonly buffer EnvConditionalBuffer { float envConditionalCdf[]; };
 #endif
+// The light buffers are read through texture-buffer views: the reads' indices differ between
+// lanes, and llvmpipe gathers a texel for eight lanes where a storage-buffer record is eight lane
+// loops per component (bench/mesh_rays.md, "The light records through texel views").
 #if RAYLAB_EMISSIVE_TRIANGLES
-// Emissive triangles in world space (render/light_list.h).
-layout(std430, binding = BINDING_TRIANGLE_LIGHTS) readonly buffer TriangleLightBuffer { GpuTriangleLight triangleLights[]; };
+// Emissive triangles in world space (render/light_list.h), GpuTriangleLight records of 4 texels.
+layout(binding = BINDING_TRIANGLE_LIGHT_TEXELS) uniform usamplerBuffer triangleLightTexels;
+const int TRIANGLE_LIGHT_TEXELS = 4;
+GpuTriangleLight triangleLightAt(int j) {
+    int b = TRIANGLE_LIGHT_TEXELS * j;
+    return GpuTriangleLight(uintBitsToFloat(texelFetch(triangleLightTexels, b)), uintBitsToFloat(texelFetch(triangleLightTexels, b + 1)),
+                            uintBitsToFloat(texelFetch(triangleLightTexels, b + 2)), uintBitsToFloat(texelFetch(triangleLightTexels, b + 3)));
+}
 #endif
 #if RAYLAB_EMISSIVE_TRIANGLES || RAYLAB_ONE_SIDED_EMITTERS
-// Per triangle (global index): 1 + its index in triangleLights[], 0 when it is no light; with
-// TRIANGLE_FRONT_ONLY set when it emits on the front alone.
-layout(std430, binding = BINDING_TRIANGLE_LIGHT_INDEX) readonly buffer TriangleLightIndexBuffer { uint triangleLightIndex[]; };
+// Per triangle (global index): 1 + its index among the triangle lights, 0 when it is no light;
+// with TRIANGLE_FRONT_ONLY set when it emits on the front alone.
+layout(binding = BINDING_TRIANGLE_LIGHT_INDEX_TEXELS) uniform usamplerBuffer triangleLightIndexTexels;
+uint triangleLightIndexAt(uint triangle) { return texelFetch(triangleLightIndexTexels, int(triangle)).r; }
 #endif
 #if RAYLAB_ANALYTIC_LIGHTS
 // Point, spot and distant lights (render/light_list.h), in a uniform block: no storage block is free.
@@ -58,7 +68,8 @@ layout(std140, binding = BINDING_ANALYTIC_LIGHTS_UBO) uniform AnalyticLightBlock
 #if RAYLAB_LIGHT_POWER_SELECTION
 // The alias table that picks any light (spheres first, then triangles) by power: (q, alias, pmf,
 // pmf of alias) per light (render/light_list.h).
-layout(std430, binding = BINDING_LIGHT_ALIAS) readonly buffer LightAliasBuffer { vec4 lightAlias[]; };
+layout(binding = BINDING_LIGHT_ALIAS_TEXELS) uniform usamplerBuffer lightAliasTexels;
+vec4 lightAliasAt(int i) { return uintBitsToFloat(texelFetch(lightAliasTexels, i)); }
 #endif
 
 // Every other parameter of the tracer, one uniform block.

@@ -49,11 +49,51 @@ uint sphereCount() { return uint(spheres.length()); }
 #if RAYLAB_TOP_LEVEL_LINEAR
 // Few objects' boxes and spheres (few_objects.glsl), read by the loops over them.
 layout(std140, binding = BINDING_FEW_OBJECTS_UBO) uniform FewObjectsBlock {
-    vec4 fewObjectMin[FEW_OBJECTS_MAX];   // w: 1 for a mesh
-    vec4 fewObjectMax[FEW_OBJECTS_MAX];
-    GpuSphere fewSpheres[FEW_OBJECTS_MAX];
+    vec4 fewObjectMinBlock[FEW_OBJECTS_MAX];   // w: 1 for a mesh
+    vec4 fewObjectMaxBlock[FEW_OBJECTS_MAX];
+    GpuSphere fewSpheresBlock[FEW_OBJECTS_MAX];
+    uvec4 fewObjectTrianglesBlock[FEW_OBJECTS_MAX];   // x first triangle, y count
 };
-bool fewObjectIsMesh(uint i) { return fewObjectMin[i].w != 0.0f; }
+#if RAYLAB_OBJECT_COUNT > 0
+// The loops read the invocation's copy of the block, made before main runs (a global's
+// initialiser), element by element so that the copies are values: llvmpipe (Mesa 22.3) reads a
+// uniform block lane by lane with a bounds check per lane, even at a constant offset, where a
+// private array read at a constant index is a register or a stack slot (bench/mesh_rays.md, "Uniform
+// blocks copied once an invocation").
+struct FewObjects {
+    vec4 boxMin[RAYLAB_OBJECT_COUNT];
+    vec4 boxMax[RAYLAB_OBJECT_COUNT];
+    uvec2 triangles[RAYLAB_OBJECT_COUNT];
+#if RAYLAB_SPHERE_COUNT > 0
+    GpuSphere spheres[RAYLAB_SPHERE_COUNT];
+#endif
+};
+FewObjects loadFewObjects() {
+    FewObjects f;
+    for (int i = 0; i < RAYLAB_OBJECT_COUNT; ++i) {
+        f.boxMin[i] = fewObjectMinBlock[i];
+        f.boxMax[i] = fewObjectMaxBlock[i];
+        f.triangles[i] = fewObjectTrianglesBlock[i].xy;
+    }
+#if RAYLAB_SPHERE_COUNT > 0
+    for (int k = 0; k < RAYLAB_SPHERE_COUNT; ++k) f.spheres[k] = GpuSphere(fewSpheresBlock[k].centerRadius, fewSpheresBlock[k].info);
+#endif
+    return f;
+}
+FewObjects fewObjects = loadFewObjects();
+vec4 fewObjectMin(uint i) { return fewObjects.boxMin[i]; }   // w: 1 for a mesh
+vec4 fewObjectMax(uint i) { return fewObjects.boxMax[i]; }
+uvec2 fewObjectTriangles(uint i) { return fewObjects.triangles[i]; }   // first, count
+#if RAYLAB_SPHERE_COUNT > 0
+GpuSphere fewSphere(uint k) { return fewObjects.spheres[k]; }
+#endif
+#else
+// Counts read at run time: the loops read the block itself.
+vec4 fewObjectMin(uint i) { return fewObjectMinBlock[i]; }
+vec4 fewObjectMax(uint i) { return fewObjectMaxBlock[i]; }
+GpuSphere fewSphere(uint k) { return fewSpheresBlock[k]; }
+#endif
+bool fewObjectIsMesh(uint i) { return fewObjectMin(i).w != 0.0f; }
 #endif
 
 #if RAYLAB_COUNT_TRAVERSAL

@@ -48,7 +48,7 @@ struct GpuTriangleLight {
     vec4 radiance;   // rgb emitted radiance, a 1 = only the (p1 − p0) × (p2 − p0) side emits
 };
 
-// Flag in the per-triangle light index (scene_data.glsl triangleLightIndex): the triangle emits
+// Flag in the per-triangle light index (scene_data.glsl triangleLightIndexAt): the triangle emits
 // on its front (e01 × e02) side only.
 const uint TRIANGLE_FRONT_ONLY = 0x80000000u;
 

@@ -12,6 +12,8 @@ glsl::FewObjectsBlock fewObjectsBlock(const SceneGeometry& top) {
         const float mesh = inst.info.x == glsl::INSTANCE_MESH ? 1.0f : 0.0f;
         block.boxMin[i] = glm::vec4(glm::vec3(inst.worldMin), mesh);
         block.boxMax[i] = glm::vec4(glm::vec3(inst.worldMax), 0.0f);
+        if (mesh != 0.0f)
+            block.triangles[i] = glm::uvec4(glsl::instanceFirstTriangle(inst), glsl::instanceTriangleCount(inst), 0u, 0u);
     }
     std::copy_n(top.spheres.begin(), std::min(top.spheres.size(), max), block.spheres);
     return block;

@@ -37,7 +37,8 @@ static_assert(sizeof(glsl::GpuBvhNode) == 16 * glsl::BVH_NODE_TEXELS && sizeof(g
 static_assert(sizeof(glsl::GpuAnalyticLight) == 48 && offsetof(glsl::AnalyticLightBlock, lights) == 16);
 // std140 offsets of FewObjectsBlock: arrays of vec4s and of a struct of two.
 static_assert(sizeof(glsl::GpuSphere) == 32 && offsetof(glsl::FewObjectsBlock, boxMax) == 16 * glsl::FEW_OBJECTS_MAX &&
-              offsetof(glsl::FewObjectsBlock, spheres) == 32 * glsl::FEW_OBJECTS_MAX);
+              offsetof(glsl::FewObjectsBlock, spheres) == 32 * glsl::FEW_OBJECTS_MAX &&
+              offsetof(glsl::FewObjectsBlock, triangles) == 64 * glsl::FEW_OBJECTS_MAX);
 
 // geometryBuffers_ in order: top nodes, mesh nodes, instances, triangles, vertices.
 constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, BINDING_INSTANCES,
@@ -47,18 +48,19 @@ constexpr GLuint kGeometryBindings[5] = {BINDING_TOP_NODES, BINDING_MESH_NODES, 
 constexpr GLuint kGeometryTexelBindings[4] = {BINDING_TOP_NODE_TEXELS, BINDING_MESH_NODE_TEXELS,
                                               BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS};
 
-// An RGBA32UI texture-buffer view of a buffer of 16-byte records; `what` starts the error when the
-// GL's texture buffers are too small for it. A view sees the buffer's data store as of its
-// attachment, so every upload of the buffer attaches again.
-void attachTexels(GLuint texture, GLuint buffer, const char* what) {
+// A texture-buffer view of a buffer, RGBA32UI (16-byte texels) or R32UI (4-byte ones); `what`
+// starts the error when the GL's texture buffers are too small for it. A view sees the buffer's
+// data store as of its attachment, so every upload of the buffer attaches again.
+void attachTexels(GLuint texture, GLuint buffer, const char* what, GLenum format = GL_RGBA32UI) {
     GLint64 bytes = 0;
     glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &bytes);
+    const GLint64 texels = bytes / (format == GL_R32UI ? 4 : 16);
     GLint maxTexels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-    if (bytes / 16 > GLint64(maxTexels))
-        throw std::runtime_error(std::string(what) + " " + std::to_string(bytes / 16) +
+    if (texels > GLint64(maxTexels))
+        throw std::runtime_error(std::string(what) + " " + std::to_string(texels) +
                                  " texels in one texture buffer; this GL allows " + std::to_string(maxTexels));
-    glTextureBuffer(texture, GL_RGBA32UI, buffer);
+    glTextureBuffer(texture, format, buffer);
 }
 
 template <typename T>
@@ -88,6 +90,7 @@ GpuScene::GpuScene() {
     glCreateBuffers(1, &triangleLightBuffer_);
     glCreateBuffers(1, &lightAliasBuffer_);
     glCreateBuffers(1, &triangleLightIndexBuffer_);
+    glCreateTextures(GL_TEXTURE_BUFFER, 3, lightTexels_);
     glCreateBuffers(1, &analyticLightBuffer_);
     glCreateBuffers(1, &fewObjectsBuffer_);
 }
@@ -109,6 +112,7 @@ GpuScene::~GpuScene() {
     glDeleteBuffers(1, &triangleLightBuffer_);
     glDeleteBuffers(1, &lightAliasBuffer_);
     glDeleteBuffers(1, &triangleLightIndexBuffer_);
+    glDeleteTextures(3, lightTexels_);
 }
 
 SceneGeometry& GpuScene::gpuMeshes() {
@@ -235,6 +239,9 @@ void GpuScene::uploadTopLevel(const Scene& scene, const glm::dvec3& origin) {
     uploadBuffer(lightBuffer_, std::move(lights.spheres));
     uploadBuffer(triangleLightBuffer_, std::move(lights.triangles));
     uploadBuffer(lightAliasBuffer_, std::move(lights.aliasTable));
+    attachTexels(lightTexels_[0], triangleLightBuffer_, "the scene's emissive triangles need");
+    attachTexels(lightTexels_[1], lightAliasBuffer_, "the scene's lights need");
+    attachTexels(lightTexels_[2], triangleLightIndexBuffer_, "the scene's triangles need", GL_R32UI);
     analyticLightCount_ = int(lights.analytic.size());
     glsl::AnalyticLightBlock block{};
     block.info.x = analyticLightCount_;
@@ -282,9 +289,9 @@ void GpuScene::bind() const {
     glBindTextureUnit(BINDING_TEXTURE_TEXELS, textureTexels_);
     glBindTextureUnit(BINDING_MATERIAL_TEXELS, materialTexels_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TEXTURE_INFO, textureBuffers_[1]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHTS, triangleLightBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_LIGHT_ALIAS, lightAliasBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_TRIANGLE_LIGHT_INDEX, triangleLightIndexBuffer_);
+    glBindTextureUnit(BINDING_TRIANGLE_LIGHT_TEXELS, lightTexels_[0]);
+    glBindTextureUnit(BINDING_LIGHT_ALIAS_TEXELS, lightTexels_[1]);
+    glBindTextureUnit(BINDING_TRIANGLE_LIGHT_INDEX_TEXELS, lightTexels_[2]);
     glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_ANALYTIC_LIGHTS_UBO, analyticLightBuffer_);
     glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FEW_OBJECTS_UBO, fewObjectsBuffer_);
 }

@@ -83,6 +83,7 @@ private:
     int triangleLightCount_ = 0;
     std::vector<double> lightPower_;
     unsigned triangleLightIndexBuffer_ = 0;   // per triangle 1 + its light index, 0 none
+    unsigned lightTexels_[3] = {};   // texture-buffer views: triangle lights, alias table, light index (scene_data.glsl)
     unsigned analyticLightBuffer_ = 0;        // uniform block of point, spot and distant lights
     unsigned fewObjectsBuffer_ = 0;           // uniform block of the few-objects loops (render/few_objects.h)
     int analyticLightCount_ = 0;

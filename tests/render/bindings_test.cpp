@@ -20,8 +20,7 @@ constexpr std::array kTracerStorageBuffers = {
     BINDING_SPHERE_LIGHTS,    BINDING_ENV_MARGINAL,     BINDING_ENV_CONDITIONAL,
     BINDING_TOP_NODES,        BINDING_MESH_NODES,       BINDING_INSTANCES,
     BINDING_TRIANGLES,        BINDING_VERTICES,         BINDING_TRAVERSAL_COUNTERS,
-    BINDING_TEXTURE_INFO,     BINDING_TRIANGLE_LIGHTS,
-    BINDING_LIGHT_ALIAS,      BINDING_TRIANGLE_LIGHT_INDEX, BINDING_DEBUG_MOMENTS,
+    BINDING_TEXTURE_INFO,     BINDING_DEBUG_MOMENTS,
     BINDING_DEBUG_HEAT_MAX,   BINDING_INSPECT_BOUNCES,  BINDING_INSPECT_PATHS,
 };
 
@@ -36,15 +35,14 @@ constexpr bool pairwiseDistinct(const std::array<int, N>& points) {
 static_assert(pairwiseDistinct(kTracerStorageBuffers), "two tracer storage buffers share a binding point");
 // The self-test's sampler runs with the scene's buffers bound, so its output has a point of its own.
 static_assert(pairwiseDistinct(std::array{BINDING_SPHERES, BINDING_MATERIALS, BINDING_COUNTERS, BINDING_SPHERE_LIGHTS,
-                                          BINDING_ENV_MARGINAL, BINDING_ENV_CONDITIONAL, BINDING_LIGHT_ALIAS,
-                                          BINDING_TRIANGLE_LIGHTS, BINDING_TRIANGLE_LIGHT_INDEX,
-                                          BINDING_BSDF_SAMPLES}));
+                                          BINDING_ENV_MARGINAL, BINDING_ENV_CONDITIONAL, BINDING_BSDF_SAMPLES}));
 static_assert(BINDING_TEST_INPUT != BINDING_TEST_OUTPUT);
-// The tracer's texture units: the sky map, the texel views of the geometry, the textures and the
-// materials (the accumulation texture is the display pass's, a program of its own).
+// The tracer's texture units: the sky map, the texel views of the geometry, the textures, the
+// materials and the lights (the accumulation texture is the display pass's, a program of its own).
 static_assert(pairwiseDistinct(std::array{BINDING_SKY_MAP_TEXTURE, BINDING_TOP_NODE_TEXELS, BINDING_MESH_NODE_TEXELS,
                                           BINDING_INSTANCE_TEXELS, BINDING_TRIANGLE_TEXELS, BINDING_TEXTURE_TEXELS,
-                                          BINDING_MATERIAL_TEXELS}),
+                                          BINDING_MATERIAL_TEXELS, BINDING_TRIANGLE_LIGHT_TEXELS,
+                                          BINDING_LIGHT_ALIAS_TEXELS, BINDING_TRIANGLE_LIGHT_INDEX_TEXELS}),
               "two tracer texture units coincide");
 
 // `binding = 3` in a layout, or a glBind* call whose point is a number.

@@ -1,9 +1,13 @@
 // The few-objects uniform block (render/few_objects.h): each instance's world box in the top
-// level's order with a mesh flag, the spheres as the sphere buffer holds them, zeros after.
+// level's order with a mesh flag and a mesh's triangle range, the spheres as the sphere buffer
+// holds them, zeros after.
 #include "render/few_objects.h"
 #include "render_helpers.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
 
 using namespace raylab;
 
@@ -18,9 +22,15 @@ void expectBlockOf(const SceneGeometry& g) {
             EXPECT_EQ(glm::vec3(block.boxMin[i]), glm::vec3(inst.worldMin)) << i;
             EXPECT_EQ(glm::vec3(block.boxMax[i]), glm::vec3(inst.worldMax)) << i;
             EXPECT_EQ(block.boxMin[i].w, inst.info.x == glsl::INSTANCE_MESH ? 1.0f : 0.0f) << i;
+            // The range the pending-triangle loop takes up (bvh_traversal.glsl); none for a sphere.
+            const glm::uvec4 range = inst.info.x == glsl::INSTANCE_MESH
+                                         ? glm::uvec4(glsl::instanceFirstTriangle(inst), glsl::instanceTriangleCount(inst), 0u, 0u)
+                                         : glm::uvec4(0u);
+            EXPECT_EQ(block.triangles[i], range) << i;
         } else {
             EXPECT_EQ(block.boxMin[i], glm::vec4(0.0f)) << i;
             EXPECT_EQ(block.boxMax[i], glm::vec4(0.0f)) << i;
+            EXPECT_EQ(block.triangles[i], glm::uvec4(0u)) << i;
         }
         if (i < g.spheres.size()) {
             EXPECT_EQ(block.spheres[i].centerRadius, g.spheres[i].centerRadius) << i;
@@ -33,10 +43,16 @@ void expectBlockOf(const SceneGeometry& g) {
 
 } // namespace
 
-TEST(FewObjects, TheBlockHoldsEachObjectsBoxAndEachSphereInTopLevelOrder) {
+TEST(FewObjects, TheBlockHoldsEachObjectsBoxTrianglesAndEachSphereInTopLevelOrder) {
     const SceneGeometry box = buildSceneGeometry(loadScene(test::scenePath("cornell_box.json")));
     ASSERT_EQ(box.instances.size(), 8u);
     expectBlockOf(box);
+    // The ranges tile the box's 32 triangles: every triangle in exactly one object's range.
+    const glsl::FewObjectsBlock ranges = fewObjectsBlock(box);
+    std::vector<int> owners(box.triangles.size(), 0);
+    for (std::size_t i = 0; i < box.instances.size(); ++i)
+        for (unsigned t = ranges.triangles[i].x; t < ranges.triangles[i].x + ranges.triangles[i].y; ++t) ++owners.at(t);
+    EXPECT_EQ(std::count(owners.begin(), owners.end(), 1), std::ptrdiff_t(box.triangles.size()));
     // Spheres and meshes mixed: the top level's order interleaves them, and each sphere's back-link
     // names its instance, whose box is flagged as no mesh.
     const SceneGeometry bricks = buildSceneGeometry(loadScene(test::scenePath("textured_bricks.json")));
