@@ -45,9 +45,8 @@ layout(std430, binding = BINDING_ENV_CONDITIONAL) readonly buffer EnvConditional
 #if RAYLAB_EMISSIVE_TRIANGLES
 // Emissive triangles in world space (render/light_list.h), GpuTriangleLight records of 4 texels.
 layout(binding = BINDING_TRIANGLE_LIGHT_TEXELS) uniform usamplerBuffer triangleLightTexels;
-const int TRIANGLE_LIGHT_TEXELS = 4;
 GpuTriangleLight triangleLightAt(int j) {
-    int b = TRIANGLE_LIGHT_TEXELS * j;
+    int b = int(TRIANGLE_LIGHT_TEXELS) * j;
     return GpuTriangleLight(uintBitsToFloat(texelFetch(triangleLightTexels, b)), uintBitsToFloat(texelFetch(triangleLightTexels, b + 1)),
                             uintBitsToFloat(texelFetch(triangleLightTexels, b + 2)), uintBitsToFloat(texelFetch(triangleLightTexels, b + 3)));
 }

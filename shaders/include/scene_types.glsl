@@ -47,6 +47,7 @@ struct GpuTriangleLight {
     vec4 p2;         // xyz third vertex, w unused
     vec4 radiance;   // rgb emitted radiance, a 1 = only the (p1 − p0) × (p2 − p0) side emits
 };
+const uint TRIANGLE_LIGHT_TEXELS = 4u;   // RGBA32UI texels a triangle light's record spans
 
 // Flag in the per-triangle light index (scene_data.glsl triangleLightIndexAt): the triangle emits
 // on its front (e01 × e02) side only.

@@ -28,6 +28,7 @@ static_assert(sizeof(glsl::GpuMaterial) == 96);
 static_assert(offsetof(glsl::GpuMaterial, f0Ior) == 32 && offsetof(glsl::GpuMaterial, albedoTexture) == 48);
 static_assert(offsetof(glsl::GpuMaterial, emissionTexture) == 64 && offsetof(glsl::GpuMaterial, normalScale) == 72);
 static_assert(offsetof(glsl::GpuMaterial, occlusionTexture) == 80);
+static_assert(sizeof(glsl::GpuTriangleLight) == 16 * glsl::TRIANGLE_LIGHT_TEXELS);
 static_assert(sizeof(glsl::GpuMaterial) == 16 * glsl::MATERIAL_TEXELS && offsetof(glsl::GpuMaterial, emission) == 16);
 // The geometry records are vec4s only, so their std430 layout is their C++ layout.
 static_assert(sizeof(glsl::GpuBvhNode) == 32 && sizeof(glsl::GpuInstance) == 144 && sizeof(glsl::GpuTriangle) == 64);
