@@ -47,8 +47,10 @@ layout(std430, binding = BINDING_ENV_CONDITIONAL) readonly buffer EnvConditional
 layout(binding = BINDING_TRIANGLE_LIGHT_TEXELS) uniform usamplerBuffer triangleLightTexels;
 GpuTriangleLight triangleLightAt(int j) {
     int b = int(TRIANGLE_LIGHT_TEXELS) * j;
-    return GpuTriangleLight(uintBitsToFloat(texelFetch(triangleLightTexels, b)), uintBitsToFloat(texelFetch(triangleLightTexels, b + 1)),
-                            uintBitsToFloat(texelFetch(triangleLightTexels, b + 2)), uintBitsToFloat(texelFetch(triangleLightTexels, b + 3)));
+    return GpuTriangleLight(uintBitsToFloat(texelFetch(triangleLightTexels, b)),
+                            uintBitsToFloat(texelFetch(triangleLightTexels, b + 1)),
+                            uintBitsToFloat(texelFetch(triangleLightTexels, b + 2)),
+                            uintBitsToFloat(texelFetch(triangleLightTexels, b + 3)));
 }
 #endif
 #if RAYLAB_EMISSIVE_TRIANGLES || RAYLAB_ONE_SIDED_EMITTERS

@@ -58,8 +58,8 @@ layout(std140, binding = BINDING_FEW_OBJECTS_UBO) uniform FewObjectsBlock {
 // The loops read the invocation's copy of the block, made before main runs (a global's
 // initialiser), element by element so that the copies are values: llvmpipe (Mesa 22.3) reads a
 // uniform block lane by lane with a bounds check per lane, even at a constant offset, where a
-// private array read at a constant index is a register or a stack slot (bench/mesh_rays.md, "Uniform
-// blocks copied once an invocation").
+// private array read at a constant index is a register or a stack slot (bench/mesh_rays.md,
+// "Uniform blocks copied once an invocation").
 struct FewObjects {
     vec4 boxMin[RAYLAB_OBJECT_COUNT];
     vec4 boxMax[RAYLAB_OBJECT_COUNT];
@@ -76,7 +76,8 @@ FewObjects loadFewObjects() {
         f.triangles[i] = fewObjectTrianglesBlock[i].xy;
     }
 #if RAYLAB_SPHERE_COUNT > 0
-    for (int k = 0; k < RAYLAB_SPHERE_COUNT; ++k) f.spheres[k] = GpuSphere(fewSpheresBlock[k].centerRadius, fewSpheresBlock[k].info);
+    for (int k = 0; k < RAYLAB_SPHERE_COUNT; ++k)
+        f.spheres[k] = GpuSphere(fewSpheresBlock[k].centerRadius, fewSpheresBlock[k].info);
 #endif
     return f;
 }

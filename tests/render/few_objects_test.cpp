@@ -23,9 +23,10 @@ void expectBlockOf(const SceneGeometry& g) {
             EXPECT_EQ(glm::vec3(block.boxMax[i]), glm::vec3(inst.worldMax)) << i;
             EXPECT_EQ(block.boxMin[i].w, inst.info.x == glsl::INSTANCE_MESH ? 1.0f : 0.0f) << i;
             // The range the pending-triangle loop takes up (bvh_traversal.glsl); none for a sphere.
-            const glm::uvec4 range = inst.info.x == glsl::INSTANCE_MESH
-                                         ? glm::uvec4(glsl::instanceFirstTriangle(inst), glsl::instanceTriangleCount(inst), 0u, 0u)
-                                         : glm::uvec4(0u);
+            const glm::uvec4 range =
+                inst.info.x == glsl::INSTANCE_MESH
+                    ? glm::uvec4(glsl::instanceFirstTriangle(inst), glsl::instanceTriangleCount(inst), 0u, 0u)
+                    : glm::uvec4(0u);
             EXPECT_EQ(block.triangles[i], range) << i;
         } else {
             EXPECT_EQ(block.boxMin[i], glm::vec4(0.0f)) << i;
@@ -51,7 +52,8 @@ TEST(FewObjects, TheBlockHoldsEachObjectsBoxTrianglesAndEachSphereInTopLevelOrde
     const glsl::FewObjectsBlock ranges = fewObjectsBlock(box);
     std::vector<int> owners(box.triangles.size(), 0);
     for (std::size_t i = 0; i < box.instances.size(); ++i)
-        for (unsigned t = ranges.triangles[i].x; t < ranges.triangles[i].x + ranges.triangles[i].y; ++t) ++owners.at(t);
+        for (unsigned t = ranges.triangles[i].x; t < ranges.triangles[i].x + ranges.triangles[i].y; ++t)
+            ++owners.at(t);
     EXPECT_EQ(std::count(owners.begin(), owners.end(), 1), std::ptrdiff_t(box.triangles.size()));
     // Spheres and meshes mixed: the top level's order interleaves them, and each sphere's back-link
     // names its instance, whose box is flagged as no mesh.
