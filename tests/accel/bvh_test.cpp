@@ -322,6 +322,40 @@ TEST_F(BvhGpuTest, GpuTraversalMatchesBruteForceNearestAndShadow) {
     EXPECT_EQ(primitiveMismatch, 0);
 }
 
+// A ray along +z from the origin past the edge p1 p2, whose edge function is -2^-24 exactly and 0
+// in float: the recomputation in double (triangle.glsl) gives it its sign, so the triangle misses
+// with p0 across that edge from the ray and is hit with p0 on the ray's side, on the device as on
+// the host; a ray 1e-3 further out misses either way.
+TEST_F(BvhGpuTest, EdgeFunctionsThatRoundToZeroGetTheirExactSignOnTheDeviceAsOnTheHost) {
+    const float e = std::ldexp(1.0f, -12);
+    const glm::vec3 p1(1.0f + e, 1.0f + 2.0f * e, 1.0f), p2(-1.0f, -1.0f - e, 1.0f);
+    struct Case {
+        glm::vec3 p0;
+        glm::vec3 origin;
+        bool hit;
+    };
+    for (const Case& c : {Case{{1.0f, -1.0f, 1.0f}, {0.0f, 0.0f, 0.0f}, false},   // outside by 2^-24
+                          Case{{-1.0f, 1.0f, 1.0f}, {0.0f, 0.0f, 0.0f}, true},    // inside by 2^-24
+                          Case{{1.0f, -1.0f, 1.0f}, {-1e-3f, 1e-3f, 0.0f}, false},
+                          Case{{-1.0f, 1.0f, 1.0f}, {1e-3f, -1e-3f, 0.0f}, false}}) {
+        const glsl::Ray ray(c.origin, glm::vec3(0.0f, 0.0f, 1.0f));
+        glsl::TriangleHit h{};
+        EXPECT_EQ(glsl::intersectTriangle(ray, c.p0, p1, p2, glsl::FLOAT_MAX, h), c.hit) << "host, p0.x " << c.p0.x;
+        Scene scene;
+        scene.materials.push_back(Material{});
+        Mesh mesh;
+        mesh.positions = {c.p0, p1, p2};
+        mesh.triangles.emplace_back(0, 1, 2);
+        scene.meshes.push_back(mesh);
+        GpuScene gpu;
+        gpu.upload(scene);
+        const std::vector<test::GpuTraceResult> r =
+            test::gpuTrace(gpu, {test::TestRay{glm::vec4(ray.origin, 0.0f), glm::vec4(ray.dir, glsl::FLOAT_MAX)}});
+        EXPECT_EQ(r.at(0).t >= 0.0f, c.hit) << "device, p0.x " << c.p0.x;
+        EXPECT_EQ(r.at(0).occluded, c.hit) << "device, p0.x " << c.p0.x;
+    }
+}
+
 // The linear top level (few objects) loops over the spheres and boxes of its uniform block
 // (few_objects.glsl) and names each hit's instance through the sphere's back-link: the same
 // records as the brute force, with and without meshes in the shader, for as many objects as the
