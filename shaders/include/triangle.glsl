@@ -88,6 +88,9 @@ RL_FN bool intersectTriangle(TriangleRay ray, vec3 p0, vec3 p1, vec3 p2, float t
     if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
     float det = e0 + e1 + e2;
     if (!(det < 0.0f) && !(det > 0.0f)) return false;   // 0, or NaN from a NaN ray
+    // z in world units, for the error of the sheared x and y (|sx|, |sy| <= 1): the scaled z would
+    // make the bound below grow as the direction shortens and reject real hits.
+    float maxZ = max(max(abs(a.z), abs(b.z)), abs(c.z));
     // Scaled distance compared against tMax·det: no division before we know it is a hit.
     a.z *= sz;
     b.z *= sz;
@@ -102,8 +105,8 @@ RL_FN bool intersectTriangle(TriangleRay ray, vec3 p0, vec3 p1, vec3 p2, float t
     float deltaZ = gammaBound(3.0f) * maxZt;
     float maxXt = max(max(abs(a.x), abs(b.x)), abs(c.x));
     float maxYt = max(max(abs(a.y), abs(b.y)), abs(c.y));
-    float deltaX = gammaBound(5.0f) * (maxXt + maxZt);
-    float deltaY = gammaBound(5.0f) * (maxYt + maxZt);
+    float deltaX = gammaBound(5.0f) * (maxXt + maxZ);
+    float deltaY = gammaBound(5.0f) * (maxYt + maxZ);
     float deltaE = 2.0f * (gammaBound(2.0f) * maxXt * maxYt + deltaY * maxXt + deltaX * maxYt);
     float maxE = max(max(abs(e0), abs(e1)), abs(e2));
     float deltaT = 3.0f * (gammaBound(3.0f) * maxE * maxZt + deltaE * maxZt + deltaZ * maxE) * abs(invDet);

@@ -285,6 +285,42 @@ TEST(IntersectionStress, NoRayEscapesAClosedMeshThroughEdgesOrVertices) {
     EXPECT_EQ(escaped, 0) << "of " << n << " rays";
 }
 
+TEST(IntersectionStress, WhetherATriangleIsHitDoesNotDependOnTheDirectionsLength) {
+    // Scaling a direction by a power of two is exact, so the same ray must hit the same triangle
+    // with t scaled by exactly the inverse. Triangles of sizes 1e-4..1e2 at 1..1e4 sizes from the
+    // origin, aimed at well inside (every barycentric >= 0.1) from 10 sizes away at cosθ >= 0.1.
+    Sampler s{rngCreate(uvec2(6, 7), 0u, 6u)};
+    int changed = 0, tNotScaled = 0, hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const float size = s.logUniform(1e-4f, 1e2f);
+        const vec3 position = s.unitVector() * (size * s.logUniform(1.0f, 1e4f));
+        const vec3 p0 = position + size * s.unitVector();
+        const vec3 p1 = position + size * s.unitVector();
+        const vec3 p2 = position + size * s.unitVector();
+        vec2 b = 0.1f + 0.8f * s.next2();
+        if (b.x + b.y > 0.9f) b = 0.5f * b;
+        const vec3 target = (1.0f - b.x - b.y) * p0 + b.x * p1 + b.y * p2;
+        const vec3 normal = normalize(cross(p1 - p0, p2 - p0));
+        vec3 back = sampleCosineHemisphere(s.next2());
+        back = normalize(vec3(back.x, back.y, std::max(back.z, 0.1f)));
+        const vec3 from = target + 10.0f * size * frameToWorld(frameFromNormal(normal), back);
+        const vec3 dir = target - from;
+        TriangleHit unit{};
+        const bool hit = intersectTriangle(Ray(from, dir), p0, p1, p2, FLOAT_MAX, unit);
+        hits += hit;
+        for (int k = -20; k <= 20; k += 4) {
+            const float scale = std::ldexp(1.0f, k);
+            TriangleHit h{};
+            const bool scaledHit = intersectTriangle(Ray(from, scale * dir), p0, p1, p2, FLOAT_MAX, h);
+            changed += scaledHit != hit;
+            tNotScaled += hit && scaledHit && h.t != unit.t / scale;
+        }
+    }
+    EXPECT_EQ(changed, 0) << "hits that come and go with the direction's length";
+    EXPECT_EQ(tNotScaled, 0);
+    EXPECT_EQ(hits, 20000) << "every triangle is aimed at well inside its edges";
+}
+
 TEST(IntersectionStress, HugeCoordinatesDegenerateTrianglesAndZeroDirectionComponents) {
     Sampler s{rngCreate(uvec2(5, 5), 0u, 5u)};
     int missing = 0, nonFinite = 0, degenerateHits = 0;
