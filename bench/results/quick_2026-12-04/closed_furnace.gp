@@ -1,0 +1,13 @@
+set terminal pngcairo size 900,380 font ',10' noenhanced
+set output 'bench/results/quick_2026-12-04/closed_furnace.png'
+set datafile separator ','
+set logscale xy
+set grid
+set key bottom left
+set multiplot layout 1,2 title 'closed_furnace: RMSE against time and samples'
+set xlabel 'seconds'
+set ylabel 'RMSE'
+plot 'bench/results/quick_2026-12-04/convergence.csv' using (strcol(1) eq 'closed_furnace' && strcol(2) eq 'raylab' && strcol(3) eq 'mean' && $7 > 0 ? $5 : 1/0):7 with linespoints title 'raylab'
+set xlabel 'samples per pixel'
+plot 'bench/results/quick_2026-12-04/convergence.csv' using (strcol(1) eq 'closed_furnace' && strcol(2) eq 'raylab' && strcol(3) eq 'mean' && $7 > 0 ? $4 : 1/0):7 with linespoints title 'raylab'
+unset multiplot
