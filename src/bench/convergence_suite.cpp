@@ -185,12 +185,13 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
                 PathTracer first;
                 first.setScene(scene);
                 first.renderPass(1);
-                firstStartupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - firstBegin).count();
+                firstStartupSeconds =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - firstBegin).count();
             }
             const auto startupBegin = std::chrono::steady_clock::now();
             PathTracer tracer;
             tracer.setScene(scene);
-            tracer.renderPass(1);   // the first pass pays for llvmpipe's JIT
+            tracer.renderPass(1);   // llvmpipe links the shaders at their first draw
             startupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - startupBegin).count();
             std::cerr << "   raylab start-up: " << fmt("%.3f", startupSeconds) << " s (the run's first: "
                       << fmt("%.3f", firstStartupSeconds) << " s)\n";
@@ -539,7 +540,8 @@ int runConvergenceSuite(const ConvergenceOptions& o) {
     if (!ratios.str().empty()) md << "\n## raylab and Cycles\n\n" << ratios.str();
     if (!goals.str().empty())
         md << "\n### Time-to-error goal\n\nraylab's time to the error level, its start-up (scene load, shaders "
-              "from Mesa's disk cache, which each scene's untimed first start fills) included, against Cycles' render call, its scene build included; the goal is "
+              "from Mesa's disk cache, which each scene's untimed first start fills) included, against "
+              "Cycles' render call, its scene build included; the goal is "
            << fmt("%.0f", kGoalRatio)
            << "× or more. Where one renderer does not reach the level, its time lies past its last point "
               "and the ratio is a bound; sampling only: Cycles' run less its fitted fixed cost against "
